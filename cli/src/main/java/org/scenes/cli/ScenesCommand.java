@@ -1,0 +1,86 @@
+package org.scenes.cli;
+
+import java.io.PrintWriter;
+import org.scenes.plugin.PluginException;
+import org.scenes.scene.SceneFileException;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.IVersionProvider;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Spec;
+
+/** The top-level {@code scenes} command; subcommands do the work. */
+@Command(name = "scenes", mixinStandardHelpOptions = true, versionProvider = ScenesCommand.Version.class,
+        description = "Learn to play RoboCup 2D soccer by watching another agent: record, convert, validate, play.",
+        subcommands = {CommandLine.HelpCommand.class, PluginsCommand.class})
+final class ScenesCommand implements Runnable {
+    @Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Mixin
+    GlobalOptions global;
+
+    @Override
+    public void run() {
+        spec.commandLine().usage(spec.commandLine().getOut());
+    }
+
+    /** A fully wired command line, as {@code main} runs it and tests drive it. */
+    static CommandLine commandLine() {
+        CommandLine commandLine = new CommandLine(new ScenesCommand());
+        commandLine.setExecutionExceptionHandler(ScenesCommand::handleError);
+        commandLine.setExitCodeExceptionMapper(e -> ExitCodes.FAILURE);
+        commandLine.setParameterExceptionHandler(ScenesCommand::handleUsageError);
+        return commandLine;
+    }
+
+    private static int handleUsageError(CommandLine.ParameterException e, String[] args) {
+        PrintWriter err = e.getCommandLine().getErr();
+        err.println("scenes: " + e.getMessage());
+        CommandLine.UnmatchedArgumentException.printSuggestions(e, err);
+        err.println("Try '" + e.getCommandLine().getCommandSpec().qualifiedName() + " --help' for usage.");
+        return ExitCodes.USAGE;
+    }
+
+    private static int handleError(Exception e, CommandLine commandLine, CommandLine.ParseResult parseResult) {
+        PrintWriter err = commandLine.getErr();
+        boolean verbose = parseResult.hasMatchedOption("--verbose")
+                || (parseResult.subcommand() != null && anyVerbose(parseResult));
+        err.println("scenes: " + message(e));
+        if (verbose) {
+            e.printStackTrace(err);
+        }
+        err.flush();
+        if (e instanceof UsageException || e instanceof PluginException || e instanceof IllegalArgumentException) {
+            return ExitCodes.USAGE;
+        }
+        return ExitCodes.FAILURE;
+    }
+
+    private static boolean anyVerbose(CommandLine.ParseResult result) {
+        for (CommandLine.ParseResult r = result; r != null; r = r.subcommand()) {
+            if (r.hasMatchedOption("--verbose")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static String message(Throwable e) {
+        if (e instanceof SceneFileException || e instanceof UsageException || e instanceof PluginException) {
+            return e.getMessage();
+        }
+        String message = e.getMessage();
+        return message == null ? e.getClass().getSimpleName() : message;
+    }
+
+    /** Version from the jar manifest, so it never drifts from the build. */
+    static final class Version implements IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            String version = ScenesCommand.class.getPackage().getImplementationVersion();
+            return new String[] {"scenes " + (version == null ? "(development build)" : version),
+                    "Java " + System.getProperty("java.version") + " (" + System.getProperty("java.vendor") + ")"};
+        }
+    }
+}

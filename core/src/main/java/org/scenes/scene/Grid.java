@@ -1,0 +1,120 @@
+package org.scenes.scene;
+
+import java.util.Arrays;
+
+/**
+ * The discretisation of the view into columns (angle slices) and rows (distance rings).
+ * Columns split {@code [minAngle, maxAngle]} evenly, left (negative direction) to right;
+ * directions outside the range fall into the outermost column, so an object seen behind
+ * the player still counts as "extreme left" or "extreme right". Rows are separated by the
+ * ascending distance {@code bounds}: a distance equal to a bound belongs to the nearer row.
+ */
+public final class Grid {
+    /** 5 x 3 over the normal 90 degree view, rows split at 1 m (kickable) and 5 m. */
+    public static final Grid DEFAULT = new Grid(5, -45, 45, new double[] {1, 5});
+
+    private final int columns;
+    private final double minAngle;
+    private final double maxAngle;
+    private final double[] bounds;
+    private final double columnWidth;
+
+    public Grid(int columns, double minAngle, double maxAngle, double[] bounds) {
+        if (columns < 1) {
+            throw new IllegalArgumentException("a grid needs at least one column, not " + columns);
+        }
+        if (!(maxAngle > minAngle)) {
+            throw new IllegalArgumentException("angle range [" + minAngle + ", " + maxAngle + "] is empty");
+        }
+        for (int i = 0; i < bounds.length; i++) {
+            if (!(bounds[i] > 0) || (i > 0 && !(bounds[i] > bounds[i - 1]))) {
+                throw new IllegalArgumentException("distance bounds must be positive and ascending: "
+                        + Arrays.toString(bounds));
+            }
+        }
+        this.columns = columns;
+        this.minAngle = minAngle;
+        this.maxAngle = maxAngle;
+        this.bounds = bounds.clone();
+        this.columnWidth = (maxAngle - minAngle) / columns;
+    }
+
+    /** A grid with {@code columns} columns and {@code bounds.length + 1} rows over the default angle range. */
+    public static Grid of(int columns, double... bounds) {
+        return new Grid(columns, DEFAULT.minAngle, DEFAULT.maxAngle, bounds);
+    }
+
+    public int columns() {
+        return columns;
+    }
+
+    public int rows() {
+        return bounds.length + 1;
+    }
+
+    public double minAngle() {
+        return minAngle;
+    }
+
+    public double maxAngle() {
+        return maxAngle;
+    }
+
+    public double[] bounds() {
+        return bounds.clone();
+    }
+
+    public int column(double direction) {
+        if (Double.isNaN(direction)) {
+            return columns / 2;
+        }
+        int column = (int) Math.floor((direction - minAngle) / columnWidth);
+        return Math.max(0, Math.min(columns - 1, column));
+    }
+
+    /** Row of a distance; an object whose distance the server did not send is taken as far. */
+    public int row(double distance) {
+        if (Double.isNaN(distance)) {
+            return bounds.length;
+        }
+        int row = 0;
+        while (row < bounds.length && distance > bounds[row]) {
+            row++;
+        }
+        return row;
+    }
+
+    public Cell cell(double distance, double direction) {
+        return new Cell(column(direction), row(distance));
+    }
+
+    /** "5x3 [-45,45] bounds 1,5": the form shown in reports and errors. */
+    public String describe() {
+        StringBuilder text = new StringBuilder().append(columns).append('x').append(rows())
+                .append(" [").append(format(minAngle)).append(',').append(format(maxAngle)).append("] bounds ");
+        for (int i = 0; i < bounds.length; i++) {
+            text.append(i == 0 ? "" : ",").append(format(bounds[i]));
+        }
+        return text.toString();
+    }
+
+    private static String format(double value) {
+        return value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
+    }
+
+    @Override
+    public boolean equals(Object other) {
+        return other instanceof Grid grid && grid.columns == columns && grid.minAngle == minAngle
+                && grid.maxAngle == maxAngle && Arrays.equals(grid.bounds, bounds);
+    }
+
+    @Override
+    public int hashCode() {
+        return 31 * (31 * Integer.hashCode(columns) + Double.hashCode(minAngle + 7 * maxAngle)) + Arrays.hashCode(bounds);
+    }
+
+    @Override
+    public String toString() {
+        return "Grid " + describe();
+    }
+}

@@ -1,0 +1,20 @@
+package org.scenes.scene;
+
+/** What kind of thing the server reported in a {@code see} message. */
+public enum ObjectKind {
+    BALL, GOAL, FLAG, LINE, PLAYER;
+
+    /** Lower-case name used in scene files. */
+    public String key() {
+        return name().toLowerCase(java.util.Locale.ROOT);
+    }
+
+    public static ObjectKind fromKey(String key) {
+        for (ObjectKind kind : values()) {
+            if (kind.key().equals(key)) {
+                return kind;
+            }
+        }
+        throw new IllegalArgumentException("unknown object kind '" + key + "'");
+    }
+}

@@ -1,0 +1,190 @@
+package org.scenes.scene;
+
+import com.fasterxml.jackson.core.JsonEncoding;
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonGenerator;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Path;
+import java.util.List;
+import org.scenes.files.AtomicOutput;
+
+/**
+ * Streams scenes into a scene file (see {@code docs/scene-format.md}), one scene per line.
+ * Nothing appears at the target path until {@link #commit()}; closing without commit
+ * discards what was written.
+ */
+public final class SceneFileWriter implements AutoCloseable {
+    static final JsonFactory JSON = new JsonFactory();
+
+    private final AtomicOutput output;
+    private final JsonGenerator json;
+    private final SceneFileHeader header;
+    private long written;
+
+    private SceneFileWriter(Path target, SceneFileHeader header) throws IOException {
+        this.output = AtomicOutput.create(target);
+        this.header = header;
+        this.json = JSON.createGenerator(output.stream(), JsonEncoding.UTF8);
+        writeHeader();
+    }
+
+    public static SceneFileWriter create(Path target, SceneFileHeader header) throws IOException {
+        return new SceneFileWriter(target, header);
+    }
+
+    /** Writes a whole scene file in one step. */
+    public static void write(Path target, SceneFile file) throws IOException {
+        try (SceneFileWriter writer = create(target, file.header())) {
+            for (Scene scene : file.scenes()) {
+                writer.write(scene);
+            }
+            writer.commit();
+        }
+    }
+
+    private void writeHeader() throws IOException {
+        json.writeStartObject();
+        json.writeNumberField("format", header.format());
+        Grid grid = header.grid();
+        json.writeRaw('\n');
+        json.writeObjectFieldStart("grid");
+        json.writeNumberField("columns", grid.columns());
+        json.writeNumberField("rows", grid.rows());
+        json.writeNumberField("minAngle", grid.minAngle());
+        json.writeNumberField("maxAngle", grid.maxAngle());
+        json.writeArrayFieldStart("bounds");
+        for (double bound : grid.bounds()) {
+            json.writeNumber(bound);
+        }
+        json.writeEndArray();
+        json.writeEndObject();
+        json.writeRaw('\n');
+        json.writeObjectFieldStart("source");
+        json.writeStringField("log", header.source().log());
+        writeObserverFields(header.source().observer());
+        json.writeEndObject();
+        json.writeRaw('\n');
+        json.writeArrayFieldStart("scenes");
+    }
+
+    private void writeObserverFields(Observer observer) throws IOException {
+        json.writeStringField("team", observer.team());
+        if (observer.side() != null) {
+            json.writeStringField("side", String.valueOf(observer.side().letter()));
+        }
+        if (observer.uniformNumber() > 0) {
+            json.writeNumberField("unum", observer.uniformNumber());
+        }
+    }
+
+    public void write(Scene scene) throws IOException {
+        json.writeRaw('\n');
+        json.writeStartObject();
+        json.writeNumberField("cycle", scene.cycle());
+        if (!scene.observer().equals(header.source().observer())) {
+            json.writeObjectFieldStart("observer");
+            writeObserverFields(scene.observer());
+            json.writeEndObject();
+        }
+        json.writeArrayFieldStart("objects");
+        for (SeenObject object : scene.objects()) {
+            writeObject(object);
+        }
+        json.writeEndArray();
+        json.writeArrayFieldStart("actions");
+        List<Action> actions = scene.actions();
+        for (int i = 0; i < actions.size(); i++) {
+            writeAction(actions.get(i), i == 0);
+        }
+        json.writeEndArray();
+        json.writeEndObject();
+        written++;
+    }
+
+    /** Writes every scene, turning I/O errors into unchecked ones for use in streams. */
+    public void writeAll(Iterable<Scene> scenes) {
+        try {
+            for (Scene scene : scenes) {
+                write(scene);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    private void writeObject(SeenObject object) throws IOException {
+        json.writeStartObject();
+        json.writeStringField("kind", object.kind().key());
+        json.writeStringField("name", object.name());
+        if (!object.team().isEmpty()) {
+            json.writeStringField("team", object.team());
+        }
+        if (object.uniformNumber() > 0) {
+            json.writeNumberField("unum", object.uniformNumber());
+        }
+        if (object.goalie()) {
+            json.writeBooleanField("goalie", true);
+        }
+        if (object.relation() != Relation.NONE) {
+            json.writeStringField("relation", object.relation().key());
+        }
+        writeOptional("dist", object.distance());
+        writeOptional("dir", object.direction());
+        writeOptional("distChange", object.distanceChange());
+        writeOptional("dirChange", object.directionChange());
+        writeOptional("bodyFacing", object.bodyFacing());
+        writeOptional("headFacing", object.headFacing());
+        writeOptional("pointDir", object.pointingDirection());
+        if (object.mark() != SeenObject.NO_MARK) {
+            json.writeStringField("mark", String.valueOf(object.mark()));
+        }
+        json.writeArrayFieldStart("cell");
+        json.writeNumber(object.cell().column());
+        json.writeNumber(object.cell().row());
+        json.writeEndArray();
+        json.writeEndObject();
+    }
+
+    private void writeAction(Action action, boolean primary) throws IOException {
+        json.writeStartObject();
+        json.writeStringField("type", action.type().key());
+        for (int i = 0; i < action.type().parameterCount(); i++) {
+            writeOptional(action.type().parameter(i), action.parameter(i));
+        }
+        if (primary) {
+            json.writeBooleanField("primary", true);
+        }
+        json.writeEndObject();
+    }
+
+    private void writeOptional(String field, double value) throws IOException {
+        if (Double.isNaN(value)) {
+            return;
+        }
+        if (value == Math.rint(value) && Math.abs(value) < 1e15) {
+            json.writeNumberField(field, (long) value);
+        } else {
+            json.writeNumberField(field, value);
+        }
+    }
+
+    public long written() {
+        return written;
+    }
+
+    /** Ends the JSON document and moves the file into place. */
+    public void commit() throws IOException {
+        json.writeRaw('\n');
+        json.writeEndArray();
+        json.writeEndObject();
+        json.writeRaw('\n');
+        json.close();
+        output.commit();
+    }
+
+    @Override
+    public void close() throws IOException {
+        output.close();
+    }
+}
