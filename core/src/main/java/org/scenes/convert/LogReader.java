@@ -79,6 +79,18 @@ public final class LogReader implements AutoCloseable {
         }
     }
 
+    /**
+     * Reads a log from a stream that is already decompressed (e.g. text held in memory); {@code name}
+     * is used in errors only.
+     */
+    public static LogReader read(Path name, InputStream in) {
+        try {
+            return new LogReader(name, in);
+        } catch (IOException e) {
+            throw new LogException(name, 0, "cannot read: " + e.getMessage(), e);
+        }
+    }
+
     public Path file() {
         return file;
     }
