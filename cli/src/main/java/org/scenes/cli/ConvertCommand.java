@@ -79,6 +79,7 @@ final class ConvertCommand implements Callable<Integer> {
         SceneConverter converter = new SceneConverter(grid, strict, line -> warn(err, line));
         ConversionReport total = new ConversionReport();
         List<Path> written = new ArrayList<>();
+        long started = System.nanoTime();
         try (ProgressBar progress = progressBar()) {
             LongConsumer advance = progress == null ? bytes -> { } : bytes -> progress.stepBy(bytes);
             if (output.file != null) {
@@ -91,8 +92,10 @@ final class ConvertCommand implements Callable<Integer> {
                 written.add(output.file);
             } else {
                 Files.createDirectories(output.directory);
-                for (Path log : logs) {
-                    Path target = output.directory.resolve(baseName(log) + ".json.gz");
+                List<String> names = outputNames(logs);
+                for (int i = 0; i < logs.size(); i++) {
+                    Path log = logs.get(i);
+                    Path target = output.directory.resolve(names.get(i) + ".json.gz");
                     try (LazyWriter writer = new LazyWriter(target, grid, log.getFileName().toString())) {
                         total.add(converter.convert(log, writer::write, advance));
                         writer.commit();
@@ -105,7 +108,7 @@ final class ConvertCommand implements Callable<Integer> {
             err.printf("scenes: warning: %d more malformed lines not shown%n", total.malformed() - warningsShown);
         }
         err.flush();
-        printSummary(spec.commandLine().getOut(), total, grid, written);
+        printSummary(spec.commandLine().getOut(), total, grid, written, (System.nanoTime() - started) / 1e9);
         return ExitCodes.OK;
     }
 
@@ -139,6 +142,28 @@ final class ConvertCommand implements Callable<Integer> {
                 .clearDisplayOnFinish().build();
     }
 
+    /**
+     * One output name per log: the log's name without extensions, prefixed with its directory's
+     * name when two logs share a name (game1/Carleton_1 and game2/Carleton_1).
+     */
+    static List<String> outputNames(List<Path> logs) {
+        Map<String, Long> counts = logs.stream().collect(Collectors.groupingBy(ConvertCommand::baseName, Collectors.counting()));
+        List<String> names = new ArrayList<>();
+        for (Path log : logs) {
+            String name = baseName(log);
+            Path parent = log.toAbsolutePath().getParent();
+            if (counts.get(name) > 1 && parent != null && parent.getFileName() != null) {
+                name = parent.getFileName() + "-" + name;
+            }
+            if (names.contains(name)) {
+                throw new UsageException("--out-dir: two logs would both be written to " + name
+                        + ".json.gz; convert them separately or with -o");
+            }
+            names.add(name);
+        }
+        return names;
+    }
+
     static String baseName(Path log) {
         String name = log.getFileName().toString();
         for (String suffix : new String[] {".gz", ".lsf", ".log", ".txt"}) {
@@ -153,26 +178,29 @@ final class ConvertCommand implements Callable<Integer> {
         return logs.stream().map(p -> p.getFileName().toString()).collect(Collectors.joining(", "));
     }
 
-    private static void printSummary(PrintWriter out, ConversionReport report, Grid grid, List<Path> written) {
-        out.printf("%-22s %s%n", "Logs read", report.logs());
-        out.printf("%-22s %s (%.1f MB of text)%n", "Lines read", report.lines(), report.bytes() / 1e6);
-        out.printf("%-22s %s (%s repeated while paused, collapsed)%n", "See messages", report.sees(), report.repeatedSees());
-        out.printf("%-22s %s  (grid %s)%n", "Scenes written", report.scenes(), grid.describe());
-        out.printf("%-22s %s%n", "Scenes dropped", report.droppedTotal());
+    private static void printSummary(PrintWriter out, ConversionReport report, Grid grid, List<Path> written,
+                                     double seconds) {
+        out.printf(Locale.ROOT, "%-22s %s%n", "Logs read", report.logs());
+        out.printf(Locale.ROOT, "%-22s %s (%.1f MB of text)%n", "Lines read", report.lines(), report.bytes() / 1e6);
+        out.printf(Locale.ROOT, "%-22s %s (%s repeated while paused, collapsed)%n", "See messages", report.sees(), report.repeatedSees());
+        out.printf(Locale.ROOT, "%-22s %s  (grid %s)%n", "Scenes written", report.scenes(), grid.describe());
+        out.printf(Locale.ROOT, "%-22s %s%n", "Scenes dropped", report.droppedTotal());
         for (DropReason reason : DropReason.values()) {
-            out.printf("  %-20s %s%n", reason.label(), report.dropped(reason));
+            out.printf(Locale.ROOT, "  %-20s %s%n", reason.label(), report.dropped(reason));
         }
-        out.printf("%-22s %s%n", "Commands by type", counts(report.commands()));
-        out.printf("%-22s %s%n", "Scene actions", counts(report.actions()));
-        out.printf("%-22s %s (sent after a scene had its action; not kept)%n", "Extra actions", report.extraActions());
-        out.printf("%-22s %s%n", "Ill-formed commands", report.illFormedCommands());
-        out.printf("%-22s %s%n", "Unknown messages",
+        out.printf(Locale.ROOT, "%-22s %s%n", "Commands by type", counts(report.commands()));
+        out.printf(Locale.ROOT, "%-22s %s%n", "Scene actions", counts(report.actions()));
+        out.printf(Locale.ROOT, "%-22s %s (sent after a scene had its action; not kept)%n", "Extra actions", report.extraActions());
+        out.printf(Locale.ROOT, "%-22s %s%n", "Ill-formed commands", report.illFormedCommands());
+        out.printf(Locale.ROOT, "%-22s %s%n", "Unknown messages",
                 report.unknown().isEmpty() ? "0" : report.unknown().entrySet().stream()
                         .map(e -> e.getKey() + " " + e.getValue()).collect(Collectors.joining(", ")));
-        out.printf("%-22s %s%n", "Malformed lines", report.malformed());
+        out.printf(Locale.ROOT, "%-22s %s%n", "Malformed lines", report.malformed());
         for (Path file : written) {
-            out.printf("%-22s %s%n", "Written", file);
+            out.printf(Locale.ROOT, "%-22s %s%n", "Written", file);
         }
+        out.printf(Locale.ROOT, "%-22s %.2f s (%.1f MB/s of log text, scene files included)%n", "Time", seconds,
+                seconds > 0 ? report.bytes() / 1e6 / seconds : 0);
         out.flush();
     }
 

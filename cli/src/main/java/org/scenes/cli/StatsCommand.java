@@ -3,6 +3,7 @@ package org.scenes.cli;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.EnumMap;
+import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.Callable;
@@ -63,35 +64,35 @@ final class StatsCommand implements Callable<Integer> {
             }
         }
         PrintWriter out = spec.commandLine().getOut();
-        out.printf("%-24s %s%n", "File", file);
-        out.printf("%-24s %s%n", "Grid", header.grid().describe());
-        out.printf("%-24s %s%n", "Source log", header.source().log().isEmpty() ? "-" : header.source().log());
-        out.printf("%-24s %d%n", "Scenes", scenes);
+        out.printf(Locale.ROOT, "%-24s %s%n", "File", file);
+        out.printf(Locale.ROOT, "%-24s %s%n", "Grid", header.grid().describe());
+        out.printf(Locale.ROOT, "%-24s %s%n", "Source log", header.source().log().isEmpty() ? "-" : header.source().log());
+        out.printf(Locale.ROOT, "%-24s %d%n", "Scenes", scenes);
         if (scenes > 0) {
-            out.printf("%-24s %d .. %d%n", "Cycles", firstCycle, lastCycle);
+            out.printf(Locale.ROOT, "%-24s %d .. %d%n", "Cycles", firstCycle, lastCycle);
         }
         out.println();
         out.println("Observers");
-        observers.forEach((label, count) -> out.printf("  %-22s %8d%n", label, count));
+        observers.forEach((label, count) -> out.printf(Locale.ROOT, "  %-22s %8d%n", label, count));
         out.println();
-        out.printf("%-24s %8s %8s %8s%n", "Action", "primary", "%", "second");
+        out.printf(Locale.ROOT, "%-24s %8s %8s %8s%n", "Action", "primary", "%", "second");
         for (ActionType type : ActionType.values()) {
             long count = primary.getOrDefault(type, 0L);
             long second = secondary.getOrDefault(type, 0L);
             if (count > 0 || second > 0) {
-                out.printf("  %-22s %8d %8.1f %8d%n", type.key(), count, scenes == 0 ? 0 : 100.0 * count / scenes, second);
+                out.printf(Locale.ROOT, "  %-22s %8d %8.1f %8d%n", type.key(), count, scenes == 0 ? 0 : 100.0 * count / scenes, second);
             }
         }
         out.println();
-        out.printf("%-24s %8s %8s%n", "Object kind", "count", "/scene");
+        out.printf(Locale.ROOT, "%-24s %8s %8s%n", "Object kind", "count", "/scene");
         for (ObjectKind kind : ObjectKind.values()) {
             long count = kinds.getOrDefault(kind, 0L);
-            out.printf("  %-22s %8d %8.2f%n", kind.key(), count, scenes == 0 ? 0 : (double) count / scenes);
+            out.printf(Locale.ROOT, "  %-22s %8d %8.2f%n", kind.key(), count, scenes == 0 ? 0 : (double) count / scenes);
         }
-        out.printf("  %-22s %8d %8.2f%n", "all", objects, scenes == 0 ? 0 : (double) objects / scenes);
+        out.printf(Locale.ROOT, "  %-22s %8d %8.2f%n", "all", objects, scenes == 0 ? 0 : (double) objects / scenes);
         out.println();
-        out.printf("%-24s %8s%n", "Relation", "count");
-        relations.forEach((relation, count) -> out.printf("  %-22s %8d%n", relation, count));
+        out.printf(Locale.ROOT, "%-24s %8s%n", "Relation", "count");
+        relations.forEach((relation, count) -> out.printf(Locale.ROOT, "  %-22s %8d%n", relation, count));
         out.flush();
         return ExitCodes.OK;
     }

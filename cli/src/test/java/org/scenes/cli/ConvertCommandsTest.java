@@ -73,6 +73,16 @@ class ConvertCommandsTest {
     }
 
     @Test
+    void outDirKeepsLogsOfTheSameNameApart() {
+        Path other = DATA.resolve("krislet/classic-game2/Carleton_1.lsf.gz");
+        assertEquals(0, run("convert", CARLETON_1, other, "--out-dir", dir), err.toString());
+        assertEquals(2592, SceneFileReader.read(dir.resolve("classic-game1-Carleton_1.json.gz")).scenes().size());
+        assertTrue(Files.exists(dir.resolve("classic-game2-Carleton_1.json.gz")));
+        assertEquals(2, run("convert", CARLETON_1, CARLETON_1, "--out-dir", dir));
+        assertTrue(err.toString().contains("two logs would both be written"), err.toString());
+    }
+
+    @Test
     void malformedLinesWarnWithFileAndLineAndStrictStopsWithoutOutput() throws IOException {
         Path log = dir.resolve("bad.lsf");
         Files.write(log, List.of("(init A (version 9))", "(init l 1 before_kick_off)", "(see 0 ((b) 1 2)",
