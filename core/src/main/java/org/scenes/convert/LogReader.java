@@ -5,6 +5,7 @@ import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.Arrays;
 import org.scenes.files.Inputs;
 
 /**
@@ -37,6 +38,7 @@ public final class LogReader implements AutoCloseable {
     private Direction direction = Direction.UNKNOWN;
     private double time = Double.NaN;
     private String problem;
+    private byte[] clientPort;
 
     private LogReader(Path file, InputStream in) throws IOException {
         this.file = file;
@@ -214,6 +216,14 @@ public final class LogReader implements AutoCloseable {
             direction = Direction.SERVER;
         } else {
             return broken("direction must be client->server or server->client");
+        }
+        if (clientPort == null) {
+            clientPort = Arrays.copyOfRange(line, secondSpace + 1, thirdSpace);
+        } else if (!Arrays.equals(clientPort, 0, clientPort.length, line, secondSpace + 1, thirdSpace)) {
+            // one log is one player: mixing two clients' traffic would pair one's sees with the other's actions
+            return broken("a second client (port " + new String(line, secondSpace + 1, thirdSpace - secondSpace - 1,
+                    StandardCharsets.UTF_8) + ", first was " + new String(clientPort, StandardCharsets.UTF_8)
+                    + "); split the capture by client port");
         }
         time = decimal(line, 0, firstSpace);
         setMessage(line, thirdSpace + 1, lineLength - thirdSpace - 1);

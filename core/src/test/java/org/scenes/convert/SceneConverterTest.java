@@ -189,7 +189,8 @@ class SceneConverterTest {
                     "1795423810.383147 server->client 50919 (init l 1 before_kick_off)",
                     "1795423810.504982 server->client 50919 (see 0 ((b) 5 0))",
                     "1795423810.594238 client->server 50919 (turn 40.0)",
-                    "1795423810.6 sideways 50919 (turn 40.0)").getBytes(StandardCharsets.UTF_8));
+                    "1795423810.6 sideways 50919 (turn 40.0)",
+                    "1795423810.7 server->client 50920 (see 1 ((b) 5 0))").getBytes(StandardCharsets.UTF_8));
         }
         try (LogReader reader = LogReader.open(file)) {
             assertEquals(LogFormat.CAPTURE, reader.format());
@@ -197,8 +198,10 @@ class SceneConverterTest {
         ConversionReport report = convert(file);
         assertEquals(1, scenes.size());
         assertEquals(List.of(Action.turn(40)), scenes.get(0).actions());
-        assertEquals(1, report.malformed(), "the line with a bad direction");
+        assertEquals(2, report.malformed(), "the line with a bad direction and the other client's line");
         assertEquals(5, warnings.get(0).line());
+        assertTrue(warnings.get(1).problem().contains("a second client (port 50920, first was 50919)"),
+                warnings.get(1).problem());
     }
 
     @Test
