@@ -655,7 +655,12 @@ public final class MessageParser {
     private PlayerCommand command(CommandType type) {
         int argumentsStart = pos;
         int count = arguments();
-        String rest = text(argumentsStart, end - 1).trim();
+        // word arguments are decoded only for the commands that have them (not for 400k turns)
+        String rest = switch (type) {
+            case POINTTO, SAY, CHANGE_VIEW, ATTENTIONTO, EAR, CLANG, SENSE_BODY, SCORE, BYE, DONE, SYNCH_SEE,
+                 GAUSSIAN_SEE -> text(argumentsStart, end - 1).trim();
+            default -> "";
+        };
         double first = count > 0 ? number(argStart[0], argEnd[0]) : Double.NaN;
         double second = count > 1 ? number(argStart[1], argEnd[1]) : Double.NaN;
         boolean firstNumber = !Double.isNaN(first);
@@ -817,7 +822,7 @@ public final class MessageParser {
      * significant digits and 22 fraction digits the result is exact (one correctly rounded
      * division); anything longer or with an exponent goes through {@link Double#parseDouble}.
      */
-    double number(int s, int e) {
+    private double number(int s, int e) {
         if (s >= e) {
             return Double.NaN;
         }

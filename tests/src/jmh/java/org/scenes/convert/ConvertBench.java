@@ -18,10 +18,14 @@ import org.openjdk.jmh.annotations.OutputTimeUnit;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import org.openjdk.jmh.infra.Blackhole;
 import org.scenes.files.Inputs;
 import org.scenes.scene.Grid;
+import org.scenes.scene.SceneFileHeader;
+import org.scenes.scene.SceneFileWriter;
+import org.scenes.scene.SceneSource;
 
 /**
  * Conversion throughput over the 27 recorded Krislet logs of the shared data set. One operation
@@ -30,7 +34,9 @@ import org.scenes.scene.Grid;
  * setup prints the exact size.
  * <ul>
  *   <li>{@code gzipLogs}: from the .lsf.gz files, decompression included, as {@code scenes convert} runs;</li>
- *   <li>{@code textInMemory}: from the decompressed text held in memory: parser and converter alone.</li>
+ *   <li>{@code textInMemory}: from the decompressed text held in memory: parser and converter alone;</li>
+ *   <li>{@code gzipLogsToSceneFile}: like {@code gzipLogs}, the scenes written to one plain JSON scene
+ *       file (about 118 MB), as {@code scenes convert ... -o all.json} does.</li>
  * </ul>
  */
 @State(Scope.Benchmark)
@@ -42,6 +48,7 @@ import org.scenes.scene.Grid;
 public class ConvertBench {
     private List<Path> logs;
     private List<byte[]> texts;
+    private Path sceneFile;
 
     @Setup
     public void load() throws IOException {
@@ -62,6 +69,25 @@ public class ConvertBench {
             }
         }
         System.out.printf("%nConvertBench: %d logs, %.2f MB of log text per operation%n", logs.size(), bytes / 1e6);
+        sceneFile = Files.createTempFile("convert-bench", ".json");
+    }
+
+    @TearDown
+    public void removeSceneFile() throws IOException {
+        Files.deleteIfExists(sceneFile);
+    }
+
+    @Benchmark
+    public long gzipLogsToSceneFile() throws IOException {
+        long scenes = 0;
+        try (SceneFileWriter writer = SceneFileWriter.create(sceneFile,
+                SceneFileHeader.of(Grid.DEFAULT, new SceneSource("27 shared logs", null)))) {
+            for (Path log : logs) {
+                scenes += new SceneConverter(Grid.DEFAULT, false, null).convert(log, writer::write).scenes();
+            }
+            writer.commit();
+        }
+        return scenes;
     }
 
     @Benchmark
