@@ -9,7 +9,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import java.util.function.LongConsumer;
 import java.util.stream.Collectors;
 import me.tongfei.progressbar.ConsoleProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBar;
@@ -80,12 +79,12 @@ final class ConvertCommand implements Callable<Integer> {
         ConversionReport total = new ConversionReport();
         List<Path> written = new ArrayList<>();
         long started = System.nanoTime();
-        try (ProgressBar progress = progressBar()) {
-            LongConsumer advance = progress == null ? bytes -> { } : bytes -> progress.stepBy(bytes);
+        try (Progress progress = Progress.start(logs)) {
             if (output.file != null) {
                 try (LazyWriter writer = new LazyWriter(output.file, grid, sourceName(logs))) {
                     for (Path log : logs) {
-                        total.add(converter.convert(log, writer::write, advance));
+                        total.add(converter.convert(log, writer::write, progress::step));
+                        progress.logDone(log);
                     }
                     writer.commit();
                 }
@@ -97,9 +96,10 @@ final class ConvertCommand implements Callable<Integer> {
                     Path log = logs.get(i);
                     Path target = output.directory.resolve(names.get(i) + ".json.gz");
                     try (LazyWriter writer = new LazyWriter(target, grid, log.getFileName().toString())) {
-                        total.add(converter.convert(log, writer::write, advance));
+                        total.add(converter.convert(log, writer::write, progress::step));
                         writer.commit();
                     }
+                    progress.logDone(log);
                     written.add(target);
                 }
             }
@@ -119,27 +119,59 @@ final class ConvertCommand implements Callable<Integer> {
         }
     }
 
-    /** A bar in log MB on a terminal, for several logs or a large one; null when piped. */
-    private ProgressBar progressBar() throws IOException {
-        if (System.console() == null) {
-            return null;
+    /**
+     * A bar in MB of log text on a terminal, for several logs or a large one; silent when piped.
+     * The total of gzip logs is unknown until read, so it is re-estimated after each log from
+     * the compression ratio seen so far.
+     */
+    private static final class Progress implements AutoCloseable {
+        private final ProgressBar bar;
+        private final long compressedTotal;
+        private long compressedDone;
+        private long textDone;
+
+        private Progress(ProgressBar bar, long compressedTotal) {
+            this.bar = bar;
+            this.compressedTotal = compressedTotal;
         }
-        long size = 0;
-        boolean compressed = false;
-        for (Path log : logs) {
-            if (Files.isRegularFile(log)) {
-                size += Files.size(log);
-                compressed |= log.getFileName().toString().endsWith(".gz");
+
+        static Progress start(List<Path> logs) throws IOException {
+            long size = 0;
+            for (Path log : logs) {
+                size += Files.isRegularFile(log) ? Files.size(log) : 0;
+            }
+            if (System.console() == null || (logs.size() < 2 && size < LARGE_INPUT)) {
+                return new Progress(null, size);
+            }
+            // about 10 bytes of text per gzip byte in recorded games; corrected as logs are read
+            boolean compressed = logs.stream().anyMatch(l -> l.getFileName().toString().endsWith(".gz"));
+            ProgressBar bar = new ProgressBarBuilder().setTaskName("Converting")
+                    .setInitialMax(compressed ? size * 10 : size).setUnit(" MB", 1L << 20)
+                    .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build();
+            return new Progress(bar, size);
+        }
+
+        void step(long textBytes) {
+            textDone += textBytes;
+            if (bar != null) {
+                bar.stepBy(textBytes);
             }
         }
-        if (logs.size() < 2 && size < LARGE_INPUT) {
-            return null;
+
+        void logDone(Path log) throws IOException {
+            compressedDone += Files.isRegularFile(log) ? Files.size(log) : 0;
+            if (bar != null && compressedDone > 0) {
+                double ratio = (double) textDone / compressedDone;
+                bar.maxHint(textDone + (long) (ratio * Math.max(0, compressedTotal - compressedDone)));
+            }
         }
-        // gzip logs hold about 10 times their size in text; the bar only needs to be roughly right
-        long estimate = compressed ? size * 10 : size;
-        return new ProgressBarBuilder().setTaskName("Converting").setInitialMax(estimate)
-                .setUnit(" MB", 1L << 20).setConsumer(new ConsoleProgressBarConsumer(System.err))
-                .clearDisplayOnFinish().build();
+
+        @Override
+        public void close() {
+            if (bar != null) {
+                bar.close();
+            }
+        }
     }
 
     /**
