@@ -10,7 +10,7 @@ final class GridOptions {
             description = "Columns (angle slices over [-45,45] degrees) x rows (distance rings); default ${DEFAULT-VALUE}.")
     String grid;
 
-    @Option(names = "--bounds", paramLabel = "D,...", split = ",",
+    @Option(names = "--bounds", paramLabel = "D", split = ",", splitSynopsisLabel = ",",
             description = "Ascending distances (m) separating the rows: rows - 1 values; default 1,5 for 3 rows.")
     double[] bounds;
 

@@ -205,6 +205,26 @@ class SceneConverterTest {
     }
 
     @Test
+    void emptyLogsConvertToNothing() throws IOException {
+        ConversionReport empty = convert(log("empty.lsf"));
+        assertEquals(0, empty.scenes());
+        assertEquals(0, empty.malformed());
+        ConversionReport blank = convert(log("blank.log", "#scenes-proxy-log 1", "", "# client 127.0.0.1:40001"));
+        assertEquals(0, blank.messages());
+        assertEquals(0, blank.malformed());
+    }
+
+    @Test
+    void aBrokenProxyFrameIsAMalformedLine() throws IOException {
+        ConversionReport report = convert(log("frames.log", "#scenes-proxy-log 1", "0.1 s2c (see 0 ((b) 1 0))",
+                "0.2 up (dash 10)", "x.y c2s (dash 10)", "0.3 c2s (turn 10)"));
+        assertEquals(2, report.malformed());
+        assertEquals("direction must be c2s or s2c", warnings.get(0).problem());
+        assertEquals(4, warnings.get(1).line());
+        assertEquals(List.of(Action.turn(10)), scenes.get(0).actions());
+    }
+
+    @Test
     void anUnknownFormatIsRejectedWithTheFileName() throws IOException {
         Path file = log("notes.txt", "hello there");
         LogException error = assertThrows(LogException.class, () -> LogReader.open(file));
