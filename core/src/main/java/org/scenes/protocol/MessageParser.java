@@ -2,7 +2,6 @@ package org.scenes.protocol;
 
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -381,77 +380,97 @@ public final class MessageParser {
         double speed = nan;
         double speedDirection = nan;
         double headAngle = nan;
-        Map<String, Integer> counts = new HashMap<>(16);
-        Map<String, String> details = new HashMap<>(16);
-        List<String> leftovers = new ArrayList<>(0);
+        int[] counts = senseCounts;
+        java.util.Arrays.fill(counts, -1);
+        detailCount = 0;
+        List<String> leftovers = List.of();
         while (true) {
             skipSpace();
             if (buf[pos] == ')') {
                 break;
             }
             int elementStart = pos;
-            if (buf[pos] != '(') {
-                skipElement();
-                leftovers.add(text(elementStart, pos));
-                continue;
-            }
-            pos++;
-            skipSpace();
-            int keyStart = pos;
-            int keyEnd = atomEnd();
-            String key = NameTable.string(words, buf, keyStart, keyEnd);
-            pos = keyEnd;
-            boolean understood = true;
-            switch (key) {
-                case "view_mode" -> {
-                    quality = word();
-                    width = word();
-                }
-                case "stamina" -> {
-                    int n = numbers();
-                    stamina = n > 0 ? numbers[0] : nan;
-                    effort = n > 1 ? numbers[1] : nan;
-                    capacity = n > 2 ? numbers[2] : nan;
-                    understood = n >= 2 && n <= 3;
-                }
-                case "speed" -> {
-                    int n = numbers();
-                    speed = n > 0 ? numbers[0] : nan;
-                    speedDirection = n > 1 ? numbers[1] : nan;
-                    understood = n >= 1 && n <= 2;
-                }
-                case "head_angle" -> {
-                    understood = numbers() == 1;
-                    headAngle = numbers[0];
-                }
-                case "kick", "dash", "turn", "say", "turn_neck", "catch", "move", "change_view",
-                     "change_focus" -> {
+            boolean understood = buf[pos] == '(';
+            if (understood) {
+                pos++;
+                skipSpace();
+                int keyStart = pos;
+                int keyEnd = atomEnd();
+                String key = NameTable.string(words, buf, keyStart, keyEnd);
+                pos = keyEnd;
+                int counter = COUNTERS.indexOf(key);
+                if (counter >= 0) {
                     understood = numbers() == 1 && numbers[0] == (int) numbers[0];
-                    counts.put(key, (int) numbers[0]);
+                    counts[counter] = (int) numbers[0];
+                } else {
+                    switch (key) {
+                        case "view_mode" -> {
+                            quality = word();
+                            width = word();
+                        }
+                        case "stamina" -> {
+                            int n = numbers();
+                            stamina = n > 0 ? numbers[0] : nan;
+                            effort = n > 1 ? numbers[1] : nan;
+                            capacity = n > 2 ? numbers[2] : nan;
+                            understood = n >= 2 && n <= 3;
+                        }
+                        case "speed" -> {
+                            int n = numbers();
+                            speed = n > 0 ? numbers[0] : nan;
+                            speedDirection = n > 1 ? numbers[1] : nan;
+                            understood = n >= 1 && n <= 2;
+                        }
+                        case "head_angle" -> {
+                            understood = numbers() == 1;
+                            headAngle = numbers[0];
+                        }
+                        case "arm", "focus", "tackle", "foul" -> understood = subfields(keyStart);
+                        case "collision", "focus_point" -> {
+                            skipSpace();
+                            int valueStart = pos;
+                            skipToClose();
+                            detail(key, valueStart, pos);
+                        }
+                        default -> understood = false;
+                    }
                 }
-                case "arm", "focus", "tackle", "foul" -> understood = subfields(key, details);
-                case "collision", "focus_point" -> {
-                    int valueStart = pos;
-                    skipToClose();
-                    details.put(key, text(valueStart, pos).trim());
-                }
-                default -> understood = false;
+                skipSpace();
+                understood &= buf[pos] == ')';
             }
-            skipSpace();
-            if (!understood || buf[pos] != ')') {
+            if (understood) {
+                pos++;
+            } else {
                 pos = elementStart;
                 skipElement();
+                if (leftovers.isEmpty()) {
+                    leftovers = new ArrayList<>(2);
+                }
                 leftovers.add(text(elementStart, pos));
-            } else {
-                pos++;
             }
         }
+        SenseBody.Counts typedCounts = counts[0] < 0 && counts[1] < 0 && counts[2] < 0 ? SenseBody.Counts.NONE
+                : new SenseBody.Counts(counts[0], counts[1], counts[2], counts[3], counts[4], counts[5], counts[6],
+                        counts[7], counts[8]);
         return new SenseBody(time, quality, width, stamina, effort, capacity, speed, speedDirection,
-                headAngle, counts, details, leftovers);
+                headAngle, typedCounts, details(), leftovers);
     }
 
-    /** {@code (arm (movable 0) (expires 0) (target 0 0) (count 0))}: each part as parent.key. */
-    private boolean subfields(String parent, Map<String, String> details) {
+    /** The sense_body counters, in the order of {@link SenseBody.Counts}. */
+    private static final List<String> COUNTERS = List.of("kick", "dash", "turn", "say", "turn_neck", "catch",
+            "move", "change_view", "change_focus");
+
+    private final int[] senseCounts = new int[COUNTERS.size()];
+    private final String[] detailKeys = new String[16];
+    private final String[] detailValues = new String[16];
+    private int detailCount;
+
+    /**
+     * {@code (arm (movable 0) (expires 0) (target 0 0) (count 0))}: each part as {@code arm.movable}...
+     * Keys are cached by the bytes from the parent's name to the part's name, values by their bytes,
+     * so a sense_body allocates little beyond its record.
+     */
+    private boolean subfields(int parentStart) {
         while (true) {
             skipSpace();
             if (buf[pos] == ')') {
@@ -464,12 +483,62 @@ public final class MessageParser {
             skipSpace();
             int keyStart = pos;
             int keyEnd = atomEnd();
+            String key = dottedKey(parentStart, keyStart, keyEnd);
             pos = keyEnd;
+            skipSpace();
             int valueStart = pos;
             skipToClose();
-            details.put(parent + "." + text(keyStart, keyEnd), text(valueStart, pos).trim());
+            detail(key, valueStart, pos);
             pos++;
         }
+    }
+
+    private final NameTable<String> dottedKeys = new NameTable<>();
+    private byte[] keyScratch = new byte[64];
+
+    /** "arm" and "target" become the cached "arm.target" (cached by its bytes, built once). */
+    private String dottedKey(int parentStart, int keyStart, int keyEnd) {
+        int parentEnd = parentStart;
+        while (parentEnd < end && !isSpace(buf[parentEnd]) && buf[parentEnd] != '(' && buf[parentEnd] != ')') {
+            parentEnd++;
+        }
+        int length = (parentEnd - parentStart) + 1 + (keyEnd - keyStart);
+        if (keyScratch.length < length) {
+            keyScratch = new byte[length * 2];
+        }
+        System.arraycopy(buf, parentStart, keyScratch, 0, parentEnd - parentStart);
+        keyScratch[parentEnd - parentStart] = '.';
+        System.arraycopy(buf, keyStart, keyScratch, parentEnd - parentStart + 1, keyEnd - keyStart);
+        return NameTable.string(dottedKeys, keyScratch, 0, length);
+    }
+
+    private void detail(String key, int valueStart, int valueEnd) {
+        while (valueEnd > valueStart && isSpace(buf[valueEnd - 1])) {
+            valueEnd--;
+        }
+        for (int i = 0; i < detailCount; i++) {
+            if (detailKeys[i].equals(key)) { // sent twice: the last one counts
+                detailValues[i] = NameTable.string(words, buf, valueStart, valueEnd);
+                return;
+            }
+        }
+        if (detailCount < detailKeys.length) {
+            detailKeys[detailCount] = key;
+            detailValues[detailCount] = NameTable.string(words, buf, valueStart, valueEnd);
+            detailCount++;
+        }
+    }
+
+    @SuppressWarnings("unchecked")
+    private Map<String, String> details() {
+        if (detailCount == 0) {
+            return Map.of();
+        }
+        Map.Entry<String, String>[] entries = new Map.Entry[detailCount];
+        for (int i = 0; i < detailCount; i++) {
+            entries[i] = Map.entry(detailKeys[i], detailValues[i]);
+        }
+        return Map.ofEntries(entries);
     }
 
     // ---- hear -------------------------------------------------------------------------------

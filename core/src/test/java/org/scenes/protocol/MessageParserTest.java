@@ -149,8 +149,7 @@ class MessageParserTest {
         assertEquals(0.33, body.speed());
         assertEquals(-12, body.speedDirection());
         assertEquals(30, body.headAngle());
-        assertEquals(40, body.counts().get("dash"));
-        assertEquals(9, body.counts().size());
+        assertEquals(new SenseBody.Counts(1, 40, 7, 2, 3, 0, 1, 4, 0), body.counts());
         assertEquals("0 0", body.details().get("arm.target"));
         assertEquals("none", body.details().get("foul.card"));
         assertEquals("(ball) (player)", body.details().get("collision"));
@@ -163,6 +162,11 @@ class MessageParserTest {
                 parser.parse("(sense_body 0 (view_mode high normal) (stamina 8000 1) (speed 0) (wings 2))"));
         assertEquals(List.of("(wings 2)"), body.leftovers());
         assertTrue(Double.isNaN(body.speedDirection()));
+        assertEquals(-1, body.counts().dash(), "not sent");
+        SenseBody twice = assertInstanceOf(SenseBody.class,
+                parser.parse("(sense_body 0 (collision none) (collision (ball)) (kick x))"));
+        assertEquals(java.util.Map.of("collision", "(ball)"), twice.details());
+        assertEquals(List.of("(kick x)"), twice.leftovers());
     }
 
     @ParameterizedTest
