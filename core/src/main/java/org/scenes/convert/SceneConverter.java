@@ -167,6 +167,13 @@ public final class SceneConverter {
                 malformed(reader.line(), reader.problem());
                 return;
             }
+            if (isRepeat(reader)) {
+                // byte-for-byte the see that opened the scene: parsed once already
+                report.message();
+                report.see();
+                report.repeatedSee();
+                return;
+            }
             Message message;
             try {
                 message = parser.parse(reader.buffer(), reader.offset(), reader.length());
@@ -195,15 +202,17 @@ public final class SceneConverter {
             }
         }
 
+        boolean isRepeat(LogReader reader) {
+            int length = reader.length();
+            int offset = reader.offset();
+            return pending != null && length == pendingLength
+                    && Arrays.equals(pendingBytes, 0, length, reader.buffer(), offset, offset + length);
+        }
+
         void see(See see, LogReader reader) throws IOException {
             report.see();
             int length = reader.length();
             int offset = reader.offset();
-            if (pending != null && length == pendingLength
-                    && Arrays.equals(pendingBytes, 0, length, reader.buffer(), offset, offset + length)) {
-                report.repeatedSee();
-                return;
-            }
             close();
             pending = see;
             pendingObserver = observer;
