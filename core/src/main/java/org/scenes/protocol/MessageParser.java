@@ -2,6 +2,7 @@ package org.scenes.protocol;
 
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -20,6 +21,9 @@ import org.scenes.scene.Side;
  * per thread.
  */
 public final class MessageParser {
+    /** The sense_body counters, in the order of {@link SenseBody.Counts}. */
+    private static final List<String> COUNTERS = List.of("kick", "dash", "turn", "say", "turn_neck", "catch",
+            "move", "change_view", "change_focus");
     private static final double[] POWERS_OF_TEN = new double[23];
 
     static {
@@ -31,9 +35,15 @@ public final class MessageParser {
 
     private final NameTable<String> words = new NameTable<>();
     private final NameTable<ObjectName> objectNames = new NameTable<>();
+    private final NameTable<String> dottedKeys = new NameTable<>();
     private final double[] numbers = new double[8];
     private final int[] argStart = new int[3];
     private final int[] argEnd = new int[3];
+    private final int[] senseCounts = new int[COUNTERS.size()];
+    private final String[] detailKeys = new String[16];
+    private final String[] detailValues = new String[16];
+    private int detailCount;
+    private byte[] keyScratch = new byte[64];
 
     private byte[] buf;
     private int start;
@@ -381,7 +391,7 @@ public final class MessageParser {
         double speedDirection = nan;
         double headAngle = nan;
         int[] counts = senseCounts;
-        java.util.Arrays.fill(counts, -1);
+        Arrays.fill(counts, -1);
         detailCount = 0;
         List<String> leftovers = List.of();
         while (true) {
@@ -400,8 +410,10 @@ public final class MessageParser {
                 pos = keyEnd;
                 int counter = COUNTERS.indexOf(key);
                 if (counter >= 0) {
-                    understood = numbers() == 1 && numbers[0] == (int) numbers[0];
-                    counts[counter] = (int) numbers[0];
+                    understood = numbers() == 1 && numbers[0] == (int) numbers[0] && numbers[0] >= 0;
+                    if (understood) {
+                        counts[counter] = (int) numbers[0];
+                    }
                 } else {
                     switch (key) {
                         case "view_mode" -> {
@@ -449,21 +461,12 @@ public final class MessageParser {
                 leftovers.add(text(elementStart, pos));
             }
         }
-        SenseBody.Counts typedCounts = counts[0] < 0 && counts[1] < 0 && counts[2] < 0 ? SenseBody.Counts.NONE
+        SenseBody.Counts typedCounts = Arrays.stream(counts).allMatch(c -> c < 0) ? SenseBody.Counts.NONE
                 : new SenseBody.Counts(counts[0], counts[1], counts[2], counts[3], counts[4], counts[5], counts[6],
                         counts[7], counts[8]);
         return new SenseBody(time, quality, width, stamina, effort, capacity, speed, speedDirection,
                 headAngle, typedCounts, details(), leftovers);
     }
-
-    /** The sense_body counters, in the order of {@link SenseBody.Counts}. */
-    private static final List<String> COUNTERS = List.of("kick", "dash", "turn", "say", "turn_neck", "catch",
-            "move", "change_view", "change_focus");
-
-    private final int[] senseCounts = new int[COUNTERS.size()];
-    private final String[] detailKeys = new String[16];
-    private final String[] detailValues = new String[16];
-    private int detailCount;
 
     /**
      * {@code (arm (movable 0) (expires 0) (target 0 0) (count 0))}: each part as {@code arm.movable}...
@@ -492,9 +495,6 @@ public final class MessageParser {
             pos++;
         }
     }
-
-    private final NameTable<String> dottedKeys = new NameTable<>();
-    private byte[] keyScratch = new byte[64];
 
     /** "arm" and "target" become the cached "arm.target" (cached by its bytes, built once). */
     private String dottedKey(int parentStart, int keyStart, int keyEnd) {

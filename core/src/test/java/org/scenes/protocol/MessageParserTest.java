@@ -167,6 +167,7 @@ class MessageParserTest {
                 parser.parse("(sense_body 0 (collision none) (collision (ball)) (kick x))"));
         assertEquals(java.util.Map.of("collision", "(ball)"), twice.details());
         assertEquals(List.of("(kick x)"), twice.leftovers());
+        assertEquals(-1, twice.counts().kick(), "a counter that is not a count is not taken");
     }
 
     @ParameterizedTest
