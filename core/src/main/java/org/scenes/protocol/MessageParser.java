@@ -461,7 +461,11 @@ public final class MessageParser {
                 leftovers.add(text(elementStart, pos));
             }
         }
-        SenseBody.Counts typedCounts = Arrays.stream(counts).allMatch(c -> c < 0) ? SenseBody.Counts.NONE
+        boolean anyCount = false;
+        for (int count : counts) {
+            anyCount |= count >= 0;
+        }
+        SenseBody.Counts typedCounts = !anyCount ? SenseBody.Counts.NONE
                 : new SenseBody.Counts(counts[0], counts[1], counts[2], counts[3], counts[4], counts[5], counts[6],
                         counts[7], counts[8]);
         return new SenseBody(time, quality, width, stamina, effort, capacity, speed, speedDirection,
