@@ -36,6 +36,9 @@ final class ScriptCompiler {
     /** The Grape transform downloads dependencies named by {@code @Grab}; scripts never download. */
     private static final String GRAB_TRANSFORM = "groovy.grape.GrabAnnotationTransformation";
 
+    private static final java.util.regex.Pattern RECORD_ACCESS = java.util.regex.Pattern.compile(
+            "^Access to [\\w.$]+#(\\w+) is forbidden");
+
     private static final Map<Key, Class<? extends Script>> COMPILED = new ConcurrentHashMap<>();
 
     private record Key(Path file, String text, Class<? extends Script> base) {
@@ -113,7 +116,8 @@ final class ScriptCompiler {
                 new PrimitiveFieldsCustomizer(),
                 new ScriptShape.Check(ScriptShape.of(base)),
                 new ASTTransformationCustomizer(CompileStatic.class),
-                new ForbiddenCallsCustomizer());
+                new ForbiddenCallsCustomizer(),
+                new EnumIdentityCustomizer());
         return configuration;
     }
 
@@ -139,7 +143,7 @@ final class ScriptCompiler {
             String location = cause.getLine() > 0
                     ? argument + ":" + cause.getLine() + ":" + Math.max(1, cause.getStartColumn())
                     : argument;
-            return location + ": " + oneLine(cause.getOriginalMessage());
+            return location + ": " + hint(oneLine(cause.getOriginalMessage()));
         }
         if (message instanceof ExceptionMessage exception) {
             return argument + ": " + oneLine(String.valueOf(exception.getCause().getMessage()));
@@ -148,6 +152,15 @@ final class ScriptCompiler {
             return argument + ": " + oneLine(simple.getMessage());
         }
         return argument + ": " + message;
+    }
+
+    /** Scene types are Java records: Groovy refuses {@code scene.cycle}, which users write first. */
+    private static String hint(String message) {
+        java.util.regex.Matcher access = RECORD_ACCESS.matcher(message);
+        if (access.find()) {
+            return message + " (scene values are Java records: read them with " + access.group(1) + "())";
+        }
+        return message;
     }
 
     private static String oneLine(String text) {

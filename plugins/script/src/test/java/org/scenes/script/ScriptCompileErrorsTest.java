@@ -74,6 +74,17 @@ class ScriptCompileErrorsTest {
     }
 
     @Test
+    void propertyStyleAccessToARecordGetsAHint() throws IOException {
+        String[] errors = metricErrors("property.groovy", """
+                double distance(Scene query, Scene stored) {
+                    return query.cycle - stored.cycle()
+                }
+                """);
+        assertEquals("property.groovy:2:12: Access to org.scenes.scene.Scene#cycle is forbidden (scene values are "
+                + "Java records: read them with cycle())", errors[0]);
+    }
+
+    @Test
     void systemExitIsRejected() throws IOException {
         String[] errors = metricErrors("exit.groovy", """
                 double distance(Scene query, Scene stored) {

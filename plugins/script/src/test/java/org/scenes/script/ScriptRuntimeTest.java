@@ -128,6 +128,30 @@ class ScriptRuntimeTest {
     }
 
     @Test
+    void enumEqualityKeepsItsMeaningWhenCompiledAsIdentity() throws IOException {
+        // == and != between enums compile to reference comparisons (EnumIdentityCustomizer).
+        String path = write("kinds.groovy", """
+                double distance(Scene query, Scene stored) {
+                    double score = 0
+                    for (SeenObject object : query.objects()) {
+                        if (object.kind() == ObjectKind.BALL) score += 1
+                        if (object.kind() != ObjectKind.BALL) score += 10
+                        if (object.relation() == stored.objects().get(0).relation()) score += 100
+                        ObjectKind nothing = null
+                        if (object.kind() == nothing) score += 1000
+                        if (nothing == null) score += 10000
+                    }
+                    return score
+                }
+                """);
+        SceneMetric metric = REGISTRY.metric("script:" + path, PluginConfig.DEFAULT);
+        Scene query = Fixtures.scene(1, null, Fixtures.ball(3, 0), Fixtures.opponentGoal(30, 2), Fixtures.flag(5, 5));
+        Scene stored = Fixtures.scene(2, null, Fixtures.flag(1, 1));
+        // ball: 1 + 100 (relation NONE) ; goal: 10 ; flag: 10 + 100 ; and 10000 for each of the three.
+        assertEquals(1 + 100 + 10 + 10 + 100 + 30000, metric.distance(query, stored));
+    }
+
+    @Test
     void failingSetUpIsReportedAtCreation() throws IOException {
         String path = write("setup.groovy", """
                 if (weights.ball() == 0) {
