@@ -54,7 +54,7 @@ final class ScriptCompiler {
      */
     static <T extends Script> Class<? extends T> compile(String what, String argument, Class<T> base) {
         if (argument.isBlank()) {
-            throw new PluginException("the script " + what + " needs a file: script:PATH, e.g. script:examples/scripts/"
+            throw new PluginException("the " + what + " script needs a file: script:PATH, e.g. script:examples/scripts/"
                     + (what.equals("selector") ? "vote" : "ball-goal") + ".groovy");
         }
         Path file = Path.of(argument);
@@ -66,17 +66,17 @@ final class ScriptCompiler {
 
     private static String read(String what, String argument, Path file) {
         if (Files.isDirectory(file)) {
-            throw new PluginException("the script " + what + " " + argument + " is a directory, not a .groovy file");
+            throw new PluginException("the " + what + " script " + argument + " is a directory, not a .groovy file");
         }
         try {
             return Files.readString(file);
         } catch (NoSuchFileException e) {
-            throw new PluginException("the script " + what + " " + argument + " does not exist (looked in "
+            throw new PluginException("the " + what + " script " + argument + " does not exist (looked in "
                     + file.toAbsolutePath().normalize() + ")");
         } catch (MalformedInputException e) {
-            throw new PluginException("the script " + what + " " + argument + " is not UTF-8 text");
+            throw new PluginException("the " + what + " script " + argument + " is not UTF-8 text");
         } catch (IOException e) {
-            throw new PluginException("cannot read the script " + what + " " + argument + ": " + e.getMessage(), e);
+            throw new PluginException("cannot read the " + what + " script " + argument + ": " + e.getMessage(), e);
         }
     }
 
@@ -89,16 +89,17 @@ final class ScriptCompiler {
             source.setCachable(false);
             Class<?> compiled = loader.parseClass(source, false);
             if (!base.isAssignableFrom(compiled)) {
-                throw new PluginException(argument + ": the script " + what + " declares only classes; write the "
-                        + ScriptShape.of(base).method() + " method at the top level of the file (see docs/scripting.md)");
+                throw new PluginException(argument + ": the " + what + " script declares only classes; write "
+                        + (base == SweepScript.class ? "the sweep's statements" : "the " + ScriptShape.of(base).method() + " method")
+                        + " at the top level of the file (see docs/scripting.md)");
             }
             return compiled.asSubclass(base);
         } catch (MultipleCompilationErrorsException e) {
             throw new PluginException(describe(what, argument, e), e);
         } catch (CompilationFailedException e) {
-            throw new PluginException("the script " + what + " " + argument + " does not compile: " + e.getMessage(), e);
+            throw new PluginException("the " + what + " script " + argument + " does not compile: " + e.getMessage(), e);
         } catch (IOException e) {
-            throw new PluginException("cannot compile the script " + what + " " + argument + ": " + e.getMessage(), e);
+            throw new PluginException("cannot compile the " + what + " script " + argument + ": " + e.getMessage(), e);
         }
     }
 
@@ -108,7 +109,7 @@ final class ScriptCompiler {
         configuration.setSourceEncoding("UTF-8");
         configuration.setDisabledGlobalASTTransformations(Set.of(GRAB_TRANSFORM));
         ImportCustomizer imports = new ImportCustomizer();
-        imports.addStarImports("org.scenes.scene", "org.scenes.match", "org.scenes.plugin");
+        imports.addStarImports("org.scenes.scene", "org.scenes.match", "org.scenes.plugin", "org.scenes.experiment");
         imports.addImports("java.util.random.RandomGenerator");
         configuration.addCompilationCustomizers(
                 imports,
@@ -134,7 +135,7 @@ final class ScriptCompiler {
                 lines.add(text);
             }
         }
-        return "the script " + what + " " + argument + " does not compile:\n  " + String.join("\n  ", lines);
+        return "the " + what + " script " + argument + " does not compile:\n  " + String.join("\n  ", lines);
     }
 
     private static String describe(String argument, Message message) {

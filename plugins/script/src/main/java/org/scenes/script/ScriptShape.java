@@ -12,7 +12,9 @@ import org.codehaus.groovy.syntax.SyntaxException;
 /** What each kind of script must define at its top level. */
 enum ScriptShape {
     METRIC(MetricScript.class, "distance", 2, "double distance(Scene query, Scene stored)"),
-    SELECTOR(SelectorScript.class, "select", 2, "Action select(List<Neighbour> nearest, RandomGenerator random)");
+    SELECTOR(SelectorScript.class, "select", 2, "Action select(List<Neighbour> nearest, RandomGenerator random)"),
+    /** A sweep is its statements; it defines no method. */
+    SWEEP(SweepScript.class, null, 0, "");
 
     private final Class<? extends Script> base;
     private final String name;
@@ -54,7 +56,7 @@ enum ScriptShape {
 
         @Override
         public void call(SourceUnit source, GeneratorContext context, ClassNode classNode) {
-            if (!classNode.isScript()) {
+            if (!classNode.isScript() || shape.name == null) {
                 return;
             }
             for (MethodNode candidate : classNode.getMethods(shape.name)) {

@@ -21,7 +21,7 @@ final class Scripts {
         } catch (InvocationTargetException e) {
             throw ScriptFailure.of(path, fileName(path), "creating the " + what, e.getCause());
         } catch (ReflectiveOperationException e) {
-            throw new PluginException("cannot create the script " + what + " " + path + ": " + e, e);
+            throw new PluginException("cannot create the " + what + " script " + path + ": " + e, e);
         }
     }
 

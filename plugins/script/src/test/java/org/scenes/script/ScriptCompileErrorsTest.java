@@ -29,7 +29,7 @@ class ScriptCompileErrorsTest {
         String path = write(name, text);
         PluginException e = assertThrows(PluginException.class, () -> REGISTRY.metric("script:" + path, PluginConfig.DEFAULT));
         String[] lines = e.getMessage().split("\n");
-        assertEquals("the script metric " + path + " does not compile:", lines[0]);
+        assertEquals("the metric script " + path + " does not compile:", lines[0]);
         String[] errors = new String[lines.length - 1];
         for (int i = 1; i < lines.length; i++) {
             errors[i - 1] = lines[i].strip().replace(path, name);
@@ -150,12 +150,12 @@ class ScriptCompileErrorsTest {
         Path missing = dir.resolve("nowhere/metric.groovy");
         PluginException e = assertThrows(PluginException.class,
                 () -> REGISTRY.metric("script:" + missing, PluginConfig.DEFAULT));
-        assertEquals("the script metric " + missing + " does not exist (looked in " + missing + ")", e.getMessage());
+        assertEquals("the metric script " + missing + " does not exist (looked in " + missing + ")", e.getMessage());
     }
 
     @Test
     void missingPathSaysHowToWriteIt() {
         PluginException e = assertThrows(PluginException.class, () -> REGISTRY.selector("script", PluginConfig.DEFAULT));
-        assertEquals("the script selector needs a file: script:PATH, e.g. script:examples/scripts/vote.groovy", e.getMessage());
+        assertEquals("the selector script needs a file: script:PATH, e.g. script:examples/scripts/vote.groovy", e.getMessage());
     }
 }

@@ -1,0 +1,84 @@
+package org.scenes.experiment;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.scenes.match.ActionWeights;
+import org.scenes.match.ObjectWeights;
+
+/**
+ * A parameter sweep: every combination of metrics x object weights x k x selectors x action
+ * weights, each validated on the same scene files with the same folds and seed, so that any
+ * one configuration gives the same numbers alone as inside the sweep. The layout says how the
+ * results table is pivoted for reading and drawing.
+ *
+ * @param title heading of the table and the chart
+ * @param data scene files (or directories of them) validated on
+ * @param folds number of cross-validation folds
+ * @param seed seed of every random choice, the same for each configuration
+ * @param layout which axes are rows and columns of the table, and which measure fills it
+ */
+public record Sweep(String title, List<String> data, List<String> metrics, List<ObjectWeights> weights, List<Integer> ks,
+                    List<String> selectors, List<ActionWeights> actionWeights, int folds, long seed, Layout layout) {
+
+    /**
+     * @param rows the axis whose values are the table's rows
+     * @param columns the axis whose values are its columns (one per bar group or line in the chart)
+     * @param measure the measure shown in the cells, e.g. {@code accuracy}
+     */
+    public record Layout(Axis rows, Axis columns, String measure) {
+    }
+
+    public Sweep {
+        data = List.copyOf(data);
+        metrics = List.copyOf(metrics);
+        weights = List.copyOf(weights);
+        ks = List.copyOf(ks);
+        selectors = List.copyOf(selectors);
+        actionWeights = List.copyOf(actionWeights);
+        require(!data.isEmpty(), "a sweep needs scene data: data 'path/to/scenes.json.gz'");
+        require(!metrics.isEmpty(), "a sweep needs at least one metric: metrics 'cell'");
+        require(!weights.isEmpty(), "a sweep needs at least one object weight vector");
+        require(!ks.isEmpty(), "a sweep needs at least one k");
+        require(!selectors.isEmpty(), "a sweep needs at least one selector: selectors 'first-valid'");
+        require(!actionWeights.isEmpty(), "a sweep needs at least one action weight vector");
+        require(folds >= 2, "a sweep needs at least 2 folds, not " + folds);
+        require(layout.rows() != layout.columns(), "the table's rows and columns must be different axes");
+        for (int k : ks) {
+            require(k >= 1, "k must be at least 1, not " + k);
+        }
+    }
+
+    private static void require(boolean condition, String message) {
+        if (!condition) {
+            throw new IllegalArgumentException(message);
+        }
+    }
+
+    /** Every combination, in a fixed order: metric slowest, action weights fastest. */
+    public List<Configuration> configurations() {
+        List<Configuration> all = new ArrayList<>();
+        for (String metric : metrics) {
+            for (ObjectWeights weight : weights) {
+                for (int k : ks) {
+                    for (String selector : selectors) {
+                        for (ActionWeights action : actionWeights) {
+                            all.add(new Configuration(metric, weight, k, selector, action));
+                        }
+                    }
+                }
+            }
+        }
+        return all;
+    }
+
+    /** The values an axis takes, in sweep order. */
+    public List<String> values(Axis axis) {
+        return switch (axis) {
+            case METRIC -> metrics;
+            case WEIGHTS -> weights.stream().map(ObjectWeights::format).toList();
+            case K -> ks.stream().map(String::valueOf).toList();
+            case SELECTOR -> selectors;
+            case ACTION_WEIGHTS -> actionWeights.stream().map(ActionWeights::format).toList();
+        };
+    }
+}

@@ -1,0 +1,101 @@
+package org.scenes.script;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scenes.experiment.Axis;
+import org.scenes.experiment.Configuration;
+import org.scenes.experiment.Sweep;
+import org.scenes.match.ActionWeights;
+import org.scenes.match.ObjectWeights;
+import org.scenes.plugin.PluginException;
+
+/** Sweep scripts describe every combination of their axes, with defaults and clear errors. */
+class SweepScriptTest {
+    @TempDir
+    Path dir;
+
+    private String write(String name, String text) throws IOException {
+        return Files.writeString(dir.resolve(name), text).toString();
+    }
+
+    @Test
+    void describesEveryCombination() throws IOException {
+        String path = write("sweep.groovy", """
+                title 'k and selectors'
+                data 'scenes/a.json.gz', 'scenes/b.json.gz'
+                metrics 'cell', 'continuous'
+                weights '1/1/1/1/0/1/1/1', 'ball=1,goal=1'
+                k 1..3
+                k 5
+                selectors 'first-valid', 'vote'
+                folds 5
+                seed 42
+                table rows: 'k', columns: 'selector', measure: 'accuracy'
+                """);
+        Sweep sweep = Sweeps.load(path);
+        assertEquals("k and selectors", sweep.title());
+        assertEquals(List.of("scenes/a.json.gz", "scenes/b.json.gz"), sweep.data());
+        assertEquals(List.of(1, 2, 3, 5), sweep.ks());
+        assertEquals(5, sweep.folds());
+        assertEquals(42, sweep.seed());
+        assertEquals(new Sweep.Layout(Axis.K, Axis.SELECTOR, "accuracy"), sweep.layout());
+        List<Configuration> all = sweep.configurations();
+        assertEquals(2 * 2 * 4 * 2, all.size());
+        assertEquals(new Configuration("cell", ObjectWeights.DEFAULT, 1, "first-valid", ActionWeights.DEFAULT), all.get(0));
+        assertEquals(new Configuration("continuous", ObjectWeights.parse("ball=1,goal=1"), 5, "vote", ActionWeights.DEFAULT),
+                all.get(all.size() - 1));
+        assertEquals(List.of("1", "2", "3", "5"), sweep.values(Axis.K));
+    }
+
+    @Test
+    void loopsAndVariablesWork() throws IOException {
+        String path = write("loop.groovy", """
+                data 'scenes.json.gz'
+                metrics 'cell'
+                selectors 'first-valid'
+                for (String object : ['ball', 'goal', 'flag']) {
+                    weights object + '=1'
+                }
+                """);
+        Sweep sweep = Sweeps.load(path);
+        assertEquals(List.of(ObjectWeights.parse("ball=1"), ObjectWeights.parse("goal=1"), ObjectWeights.parse("flag=1")),
+                sweep.weights());
+        assertEquals(List.of(1), sweep.ks());
+        assertEquals(10, sweep.folds());
+        assertEquals(new Sweep.Layout(Axis.METRIC, Axis.K, "accuracy"), sweep.layout());
+    }
+
+    @Test
+    void incompleteSweepSaysWhatIsMissing() throws IOException {
+        String path = write("partial.groovy", "data 'scenes.json.gz'\nselectors 'vote'\n");
+        PluginException e = assertThrows(PluginException.class, () -> Sweeps.load(path));
+        assertEquals("the sweep " + path + " is incomplete: a sweep needs at least one metric: metrics 'cell'", e.getMessage());
+    }
+
+    @Test
+    void badValueIsReportedWithItsLine() throws IOException {
+        String path = write("bad.groovy", """
+                data 'scenes.json.gz'
+                metrics 'cell'
+                weights '1/1/x/1/1/1/1/1'
+                """);
+        ScriptFailure failure = assertThrows(ScriptFailure.class, () -> Sweeps.load(path));
+        assertEquals(3, failure.line());
+        assertTrue(failure.getMessage().contains("object weights: 'x' is not a number"), failure.getMessage());
+    }
+
+    @Test
+    void typoInAnAxisIsACompileError() throws IOException {
+        String path = write("typo.groovy", "metric 'cell'\n");
+        PluginException e = assertThrows(PluginException.class, () -> Sweeps.load(path));
+        assertTrue(e.getMessage().contains(path + ":1:1: [Static type checking] - Cannot find matching method"), e.getMessage());
+    }
+}
