@@ -21,11 +21,40 @@ public record Sweep(String title, List<String> data, List<String> metrics, List<
                     List<String> selectors, List<ActionWeights> actionWeights, int folds, long seed, Layout layout) {
 
     /**
-     * @param rows the axis whose values are the table's rows
-     * @param columns the axis whose values are its columns (one per bar group or line in the chart)
+     * @param rows the axes whose value combinations are the table's rows, in axis order; every
+     *             axis that takes several values and is not the columns must be one of them
+     * @param columns the axis whose values are the table's columns (one bar or line each in the chart)
      * @param measure the measure shown in the cells, e.g. {@code accuracy}
      */
-    public record Layout(Axis rows, Axis columns, String measure) {
+    public record Layout(List<Axis> rows, Axis columns, String measure) {
+        public Layout {
+            rows = java.util.Arrays.stream(Axis.values()).filter(rows::contains).toList();
+            if (rows.isEmpty()) {
+                throw new IllegalArgumentException("the table needs at least one row axis");
+            }
+            if (rows.contains(columns)) {
+                throw new IllegalArgumentException("the table's rows and columns must be different axes, not both "
+                        + columns.key());
+            }
+        }
+
+        /**
+         * Rows unless given: every axis besides the columns that takes several values, or the
+         * metric when none does.
+         */
+        public static Layout of(List<Axis> rows, Axis columns, String measure, Sweep sweep) {
+            if (!rows.isEmpty()) {
+                return new Layout(rows, columns, measure);
+            }
+            List<Axis> varying = new ArrayList<>();
+            for (Axis axis : Axis.values()) {
+                if (axis != columns && sweep.values(axis).size() > 1) {
+                    varying.add(axis);
+                }
+            }
+            return new Layout(varying.isEmpty() ? List.of(columns == Axis.METRIC ? Axis.K : Axis.METRIC) : varying,
+                    columns, measure);
+        }
     }
 
     public Sweep {
@@ -42,10 +71,24 @@ public record Sweep(String title, List<String> data, List<String> metrics, List<
         require(!selectors.isEmpty(), "a sweep needs at least one selector: selectors 'first-valid'");
         require(!actionWeights.isEmpty(), "a sweep needs at least one action weight vector");
         require(folds >= 2, "a sweep needs at least 2 folds, not " + folds);
-        require(layout.rows() != layout.columns(), "the table's rows and columns must be different axes");
         for (int k : ks) {
             require(k >= 1, "k must be at least 1, not " + k);
         }
+        for (Axis axis : Axis.values()) {
+            // The table has one cell per row and column value: any other axis must be fixed.
+            require(layout.rows().contains(axis) || axis == layout.columns() || values(axis, metrics, weights, ks,
+                    selectors, actionWeights).size() == 1, "the table's rows are " + keys(layout.rows()) + " and its columns "
+                    + layout.columns().key() + ", but " + axis.key() + " takes several values too: add it to the rows");
+        }
+    }
+
+    static String keys(List<Axis> axes) {
+        return String.join(" x ", axes.stream().map(Axis::key).toList());
+    }
+
+    /** The same sweep with another layout. */
+    public Sweep withLayout(Layout newLayout) {
+        return new Sweep(title, data, metrics, weights, ks, selectors, actionWeights, folds, seed, newLayout);
     }
 
     private static void require(boolean condition, String message) {
@@ -73,6 +116,11 @@ public record Sweep(String title, List<String> data, List<String> metrics, List<
 
     /** The values an axis takes, in sweep order. */
     public List<String> values(Axis axis) {
+        return values(axis, metrics, weights, ks, selectors, actionWeights);
+    }
+
+    private static List<String> values(Axis axis, List<String> metrics, List<ObjectWeights> weights, List<Integer> ks,
+                                       List<String> selectors, List<ActionWeights> actionWeights) {
         return switch (axis) {
             case METRIC -> metrics;
             case WEIGHTS -> weights.stream().map(ObjectWeights::format).toList();

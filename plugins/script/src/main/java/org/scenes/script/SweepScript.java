@@ -4,7 +4,6 @@ import groovy.lang.Script;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import org.scenes.experiment.Axis;
 import org.scenes.experiment.Sweep;
 import org.scenes.match.ActionWeights;
@@ -16,8 +15,6 @@ import org.scenes.match.ObjectWeights;
  * method may be called more than once; its values add up.
  */
 public abstract class SweepScript extends Script {
-    private static final Set<String> TABLE_KEYS = Set.of("rows", "columns", "measure");
-
     private String title = "";
     private final List<String> data = new ArrayList<>();
     private final List<String> metrics = new ArrayList<>();
@@ -27,7 +24,9 @@ public abstract class SweepScript extends Script {
     private final List<ActionWeights> actionWeights = new ArrayList<>();
     private int folds = 10;
     private long seed = 1;
-    private Sweep.Layout layout = new Sweep.Layout(Axis.METRIC, Axis.K, "accuracy");
+    private List<Axis> rows = List.of();
+    private Axis columns = Axis.K;
+    private String measure = "accuracy";
 
     /** Heading of the table and chart. */
     public void title(String text) {
@@ -85,25 +84,38 @@ public abstract class SweepScript extends Script {
     }
 
     /**
-     * How the results table is pivoted: {@code table rows: 'metric', columns: 'k', measure: 'accuracy'}.
-     * Axes: metric, weights, k, selector, action-weights.
+     * How the results table is pivoted: {@code table columns: 'k', measure: 'accuracy'}, and
+     * optionally {@code rows: 'metric'} or {@code rows: ['metric', 'weights']} (by default every
+     * other axis that takes several values). Axes: metric, weights, k, selector, action-weights.
      */
-    public void table(Map<String, String> spec) {
-        for (String key : spec.keySet()) {
-            if (!TABLE_KEYS.contains(key)) {
-                throw new IllegalArgumentException("table takes rows, columns and measure, not '" + key + "'");
+    public void table(Map<String, ?> spec) {
+        for (Map.Entry<String, ?> entry : spec.entrySet()) {
+            Object value = entry.getValue();
+            switch (entry.getKey()) {
+                case "rows" -> {
+                    List<Axis> axes = new ArrayList<>();
+                    for (Object axis : value instanceof List<?> list ? list : List.of(value)) {
+                        axes.add(Axis.fromKey(String.valueOf(axis)));
+                    }
+                    rows = axes;
+                }
+                case "columns" -> columns = Axis.fromKey(String.valueOf(value));
+                case "measure" -> measure = String.valueOf(value);
+                default -> throw new IllegalArgumentException("table takes rows, columns and measure, not '"
+                        + entry.getKey() + "'");
             }
         }
-        Axis rows = spec.containsKey("rows") ? Axis.fromKey(spec.get("rows")) : layout.rows();
-        Axis columns = spec.containsKey("columns") ? Axis.fromKey(spec.get("columns")) : layout.columns();
-        String measure = spec.getOrDefault("measure", layout.measure());
-        layout = new Sweep.Layout(rows, columns, measure);
     }
 
     /** The sweep the script described, with defaults for what it left out. */
     public Sweep sweep() {
-        return new Sweep(title, data, metrics, weights.isEmpty() ? List.of(ObjectWeights.DEFAULT) : weights,
+        // Every axis but the columns as rows is always a valid layout; the real one is chosen from its values.
+        List<Axis> allRows = new ArrayList<>(List.of(Axis.values()));
+        allRows.remove(columns);
+        Sweep sweep = new Sweep(title, data, metrics, weights.isEmpty() ? List.of(ObjectWeights.DEFAULT) : weights,
                 ks.isEmpty() ? List.of(1) : ks, selectors,
-                actionWeights.isEmpty() ? List.of(ActionWeights.DEFAULT) : actionWeights, folds, seed, layout);
+                actionWeights.isEmpty() ? List.of(ActionWeights.DEFAULT) : actionWeights, folds, seed,
+                new Sweep.Layout(allRows, columns, measure));
+        return sweep.withLayout(Sweep.Layout.of(rows, columns, measure, sweep));
     }
 }

@@ -38,7 +38,7 @@ class SweepScriptTest {
                 selectors 'first-valid', 'vote'
                 folds 5
                 seed 42
-                table rows: 'k', columns: 'selector', measure: 'accuracy'
+                table columns: 'selector', measure: 'accuracy'
                 """);
         Sweep sweep = Sweeps.load(path);
         assertEquals("k and selectors", sweep.title());
@@ -46,7 +46,8 @@ class SweepScriptTest {
         assertEquals(List.of(1, 2, 3, 5), sweep.ks());
         assertEquals(5, sweep.folds());
         assertEquals(42, sweep.seed());
-        assertEquals(new Sweep.Layout(Axis.K, Axis.SELECTOR, "accuracy"), sweep.layout());
+        // Rows default to every other axis that varies.
+        assertEquals(new Sweep.Layout(List.of(Axis.METRIC, Axis.WEIGHTS, Axis.K), Axis.SELECTOR, "accuracy"), sweep.layout());
         List<Configuration> all = sweep.configurations();
         assertEquals(2 * 2 * 4 * 2, all.size());
         assertEquals(new Configuration("cell", ObjectWeights.DEFAULT, 1, "first-valid", ActionWeights.DEFAULT), all.get(0));
@@ -70,7 +71,24 @@ class SweepScriptTest {
                 sweep.weights());
         assertEquals(List.of(1), sweep.ks());
         assertEquals(10, sweep.folds());
-        assertEquals(new Sweep.Layout(Axis.METRIC, Axis.K, "accuracy"), sweep.layout());
+        assertEquals(new Sweep.Layout(List.of(Axis.WEIGHTS), Axis.K, "accuracy"), sweep.layout());
+    }
+
+    @Test
+    void explicitRowsMustCoverEveryVaryingAxis() throws IOException {
+        String path = write("rows.groovy", """
+                data 'scenes.json.gz'
+                metrics 'cell', 'continuous'
+                weights 'ball=1', 'goal=1'
+                selectors 'vote'
+                table rows: 'metric', columns: 'k'
+                """);
+        PluginException e = assertThrows(PluginException.class, () -> Sweeps.load(path));
+        assertEquals("the sweep " + path + " is incomplete: the table's rows are metric and its columns k, but weights "
+                + "takes several values too: add it to the rows", e.getMessage());
+        Files.writeString(Path.of(path), Files.readString(Path.of(path)).replace("rows: 'metric'", "rows: ['weights', 'metric']"));
+        // Row axes are kept in axis order whatever order the script names them in.
+        assertEquals(List.of(Axis.METRIC, Axis.WEIGHTS), Sweeps.load(path).layout().rows());
     }
 
     @Test
