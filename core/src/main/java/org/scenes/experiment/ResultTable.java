@@ -15,8 +15,8 @@ import org.scenes.files.AtomicOutput;
 
 /**
  * The results of a sweep: one row per configuration with every measure (the CSV and JSON
- * files), and the pivot the sweep's layout asks for (rows x columns of one measure, the form
- * of the thesis' tables and of the chart).
+ * files), and the pivot the sweep's layout asks for (the form of the thesis' tables and of the
+ * chart).
  */
 public final class ResultTable {
     private final Sweep sweep;
@@ -65,27 +65,37 @@ public final class ResultTable {
         return String.join(" / ", parts);
     }
 
+    /** The columns' labels: the column axis' values, or the measures' names. */
     public List<String> columnValues() {
-        return sweep.values(sweep.layout().columns());
+        Sweep.Layout layout = sweep.layout();
+        return layout.columnsAreMeasures() ? layout.measures() : sweep.values(layout.columns());
     }
 
-    /** The layout's measure for one row and column value (other axes have one value). */
+    /** The value shown for one row and column label. */
     public double cell(String row, String column) {
         Sweep.Layout layout = sweep.layout();
         for (Result result : results) {
             Configuration configuration = result.configuration();
-            if (rowLabel(configuration).equals(row) && configuration.value(layout.columns()).equals(column)) {
-                return result.measure(layout.measure());
+            if (!rowLabel(configuration).equals(row)) {
+                continue;
+            }
+            if (layout.columnsAreMeasures()) {
+                return result.measure(column);
+            }
+            if (configuration.value(layout.columns()).equals(column)) {
+                return result.measure(layout.measures().get(0));
             }
         }
         throw new IllegalArgumentException("no result for " + Sweep.keys(layout.rows()) + " " + row + " and "
-                + layout.columns().key() + " " + column);
+                + layout.columnsKey() + " " + column);
     }
 
-    /** Checks the layout's measure exists, before anyone draws or prints the pivot. */
-    public void checkMeasure() {
+    /** Checks the layout's measures exist, before anyone draws or prints the pivot. */
+    public void checkMeasures() {
         if (!results.isEmpty()) {
-            results.get(0).measure(sweep.layout().measure());
+            for (String measure : sweep.layout().measures()) {
+                results.get(0).measure(measure);
+            }
         }
     }
 
@@ -178,8 +188,12 @@ public final class ResultTable {
                 json.writeString(axis.key());
             }
             json.writeEndArray();
-            json.writeStringField("columns", layout.columns().key());
-            json.writeStringField("measure", layout.measure());
+            json.writeStringField("columns", layout.columnsKey());
+            json.writeArrayFieldStart("measures");
+            for (String measure : layout.measures()) {
+                json.writeString(measure);
+            }
+            json.writeEndArray();
             json.writeArrayFieldStart("rowValues");
             for (String row : rowValues()) {
                 json.writeString(row);
@@ -224,7 +238,7 @@ public final class ResultTable {
         Sweep.Layout layout = sweep.layout();
         StringBuilder text = new StringBuilder();
         text.append("| ").append(String.join(" / ", layout.rows().stream().map(Axis::key).toList()))
-                .append(" \\ ").append(layout.columns().key());
+                .append(" \\ ").append(layout.columnsKey());
         for (String column : columnValues()) {
             text.append(" | ").append(column);
         }

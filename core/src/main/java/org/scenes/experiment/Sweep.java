@@ -15,36 +15,61 @@ import org.scenes.match.ObjectWeights;
  * @param data scene files (or directories of them) validated on
  * @param folds number of cross-validation folds
  * @param seed seed of every random choice, the same for each configuration
- * @param layout which axes are rows and columns of the table, and which measure fills it
+ * @param layout which axes are rows and columns of the table, and which measures fill it
  */
 public record Sweep(String title, List<String> data, List<String> metrics, List<ObjectWeights> weights, List<Integer> ks,
                     List<String> selectors, List<ActionWeights> actionWeights, int folds, long seed, Layout layout) {
 
     /**
-     * @param rows the axes whose value combinations are the table's rows, in axis order; every
-     *             axis that takes several values and is not the columns must be one of them
-     * @param columns the axis whose values are the table's columns (one bar or line each in the chart)
-     * @param measure the measure shown in the cells, e.g. {@code accuracy}
+     * How the results are pivoted into the table (and chart): rows are combinations of axis
+     * values; columns are either the values of one more axis, showing one measure
+     * ({@code columns k, measure accuracy}), or several measures ({@code columns null}).
+     *
+     * @param rows the axes whose value combinations are the table's rows, kept in axis order;
+     *             every axis that takes several values and is not the columns must be one of them
+     * @param columns the axis whose values are the columns, or null for one column per measure
+     * @param measures the measures shown: exactly one when the columns are an axis
      */
-    public record Layout(List<Axis> rows, Axis columns, String measure) {
+    public record Layout(List<Axis> rows, Axis columns, List<String> measures) {
         public Layout {
             rows = java.util.Arrays.stream(Axis.values()).filter(rows::contains).toList();
+            measures = List.copyOf(measures);
             if (rows.isEmpty()) {
                 throw new IllegalArgumentException("the table needs at least one row axis");
             }
-            if (rows.contains(columns)) {
+            if (columns != null && rows.contains(columns)) {
                 throw new IllegalArgumentException("the table's rows and columns must be different axes, not both "
                         + columns.key());
             }
+            if (measures.isEmpty()) {
+                throw new IllegalArgumentException("the table needs a measure: measure: 'accuracy'");
+            }
+            if (columns != null && measures.size() != 1) {
+                throw new IllegalArgumentException("a table whose columns are " + columns.key()
+                        + " shows one measure, not " + measures.size() + "; leave out columns to show several");
+            }
+        }
+
+        public Layout(List<Axis> rows, Axis columns, String measure) {
+            this(rows, columns, List.of(measure));
+        }
+
+        public boolean columnsAreMeasures() {
+            return columns == null;
+        }
+
+        /** "k", or "measure" when the columns are measures. */
+        public String columnsKey() {
+            return columns == null ? "measure" : columns.key();
         }
 
         /**
          * Rows unless given: every axis besides the columns that takes several values, or the
          * metric when none does.
          */
-        public static Layout of(List<Axis> rows, Axis columns, String measure, Sweep sweep) {
+        public static Layout of(List<Axis> rows, Axis columns, List<String> measures, Sweep sweep) {
             if (!rows.isEmpty()) {
-                return new Layout(rows, columns, measure);
+                return new Layout(rows, columns, measures);
             }
             List<Axis> varying = new ArrayList<>();
             for (Axis axis : Axis.values()) {
@@ -53,7 +78,7 @@ public record Sweep(String title, List<String> data, List<String> metrics, List<
                 }
             }
             return new Layout(varying.isEmpty() ? List.of(columns == Axis.METRIC ? Axis.K : Axis.METRIC) : varying,
-                    columns, measure);
+                    columns, measures);
         }
     }
 
@@ -78,7 +103,7 @@ public record Sweep(String title, List<String> data, List<String> metrics, List<
             // The table has one cell per row and column value: any other axis must be fixed.
             require(layout.rows().contains(axis) || axis == layout.columns() || values(axis, metrics, weights, ks,
                     selectors, actionWeights).size() == 1, "the table's rows are " + keys(layout.rows()) + " and its columns "
-                    + layout.columns().key() + ", but " + axis.key() + " takes several values too: add it to the rows");
+                    + layout.columnsKey() + ", but " + axis.key() + " takes several values too: add it to the rows");
         }
     }
 

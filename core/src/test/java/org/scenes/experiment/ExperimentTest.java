@@ -72,6 +72,18 @@ class ExperimentTest {
     }
 
     @Test
+    void columnsMayBeSeveralMeasures() {
+        Sweep sweep = sweep();
+        sweep = sweep.withLayout(new Sweep.Layout(List.of(Axis.METRIC, Axis.K, Axis.SELECTOR), null,
+                List.of("kick accuracy", "accuracy")));
+        ResultTable table = Experiment.run(sweep, ExperimentTest::fake, 2, () -> { });
+        assertEquals(List.of("kick accuracy", "accuracy"), table.columnValues());
+        assertEquals(0.261, table.cell("ball-goal / 1 / vote", "accuracy"), 1e-12);
+        assertTrue(table.markdown().startsWith("| metric / k / selector \\ measure | kick accuracy | accuracy |\n"
+                + "|---|---:|---:|\n| cell / 1 / first-valid | - | 0.5100 |\n"), table.markdown());
+    }
+
+    @Test
     void csvAndJsonHoldEveryConfiguration() throws IOException {
         ResultTable table = Experiment.run(sweep(), ExperimentTest::fake, 2, () -> { });
         Path csv = dir.resolve("out/results.csv");
@@ -86,6 +98,7 @@ class ExperimentTest {
         assertTrue(text.contains("\"command\" : \"scenes experiment sweep.groovy\""), text);
         assertTrue(text.contains("\"kick accuracy\" : null"), text);
         assertTrue(text.contains("\"cells\" : [ [ 0.51, 0.53, 0.55 ]"), text);
+        assertTrue(text.contains("\"measures\" : [ \"accuracy\" ]"), text);
         assertFalse(Files.list(dir.resolve("out")).anyMatch(f -> f.getFileName().toString().endsWith(".tmp")));
     }
 

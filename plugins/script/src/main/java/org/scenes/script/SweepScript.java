@@ -26,7 +26,8 @@ public abstract class SweepScript extends Script {
     private long seed = 1;
     private List<Axis> rows = List.of();
     private Axis columns = Axis.K;
-    private String measure = "accuracy";
+    private boolean columnsGiven;
+    private List<String> measures = List.of("accuracy");
 
     /** Heading of the table and chart. */
     public void title(String text) {
@@ -84,9 +85,11 @@ public abstract class SweepScript extends Script {
     }
 
     /**
-     * How the results table is pivoted: {@code table columns: 'k', measure: 'accuracy'}, and
-     * optionally {@code rows: 'metric'} or {@code rows: ['metric', 'weights']} (by default every
-     * other axis that takes several values). Axes: metric, weights, k, selector, action-weights.
+     * How the results table is pivoted. Either one measure over the values of an axis,
+     * {@code table columns: 'k', measure: 'accuracy'}, or several measures side by side,
+     * {@code table measures: ['accuracy', 'kick-accuracy']}. Rows are every other axis that takes
+     * several values, or {@code rows: 'metric'} / {@code rows: ['metric', 'weights']}. Axes:
+     * metric, weights, k, selector, action-weights. Default: columns k, measure accuracy.
      */
     public void table(Map<String, ?> spec) {
         for (Map.Entry<String, ?> entry : spec.entrySet()) {
@@ -99,11 +102,23 @@ public abstract class SweepScript extends Script {
                     }
                     rows = axes;
                 }
-                case "columns" -> columns = Axis.fromKey(String.valueOf(value));
-                case "measure" -> measure = String.valueOf(value);
-                default -> throw new IllegalArgumentException("table takes rows, columns and measure, not '"
+                case "columns" -> {
+                    columns = Axis.fromKey(String.valueOf(value));
+                    columnsGiven = true;
+                }
+                case "measure", "measures" -> {
+                    List<String> names = new ArrayList<>();
+                    for (Object name : value instanceof List<?> list ? list : List.of(value)) {
+                        names.add(String.valueOf(name));
+                    }
+                    measures = names;
+                }
+                default -> throw new IllegalArgumentException("table takes rows, columns and measure(s), not '"
                         + entry.getKey() + "'");
             }
+        }
+        if (!columnsGiven && measures.size() > 1) {
+            columns = null;
         }
     }
 
@@ -111,11 +126,13 @@ public abstract class SweepScript extends Script {
     public Sweep sweep() {
         // Every axis but the columns as rows is always a valid layout; the real one is chosen from its values.
         List<Axis> allRows = new ArrayList<>(List.of(Axis.values()));
-        allRows.remove(columns);
+        if (columns != null) {
+            allRows.remove(columns);
+        }
         Sweep sweep = new Sweep(title, data, metrics, weights.isEmpty() ? List.of(ObjectWeights.DEFAULT) : weights,
                 ks.isEmpty() ? List.of(1) : ks, selectors,
                 actionWeights.isEmpty() ? List.of(ActionWeights.DEFAULT) : actionWeights, folds, seed,
-                new Sweep.Layout(allRows, columns, measure));
-        return sweep.withLayout(Sweep.Layout.of(rows, columns, measure, sweep));
+                new Sweep.Layout(allRows, columns, measures));
+        return sweep.withLayout(Sweep.Layout.of(rows, columns, measures, sweep));
     }
 }

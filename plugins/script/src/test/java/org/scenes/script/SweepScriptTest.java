@@ -92,6 +92,18 @@ class SweepScriptTest {
     }
 
     @Test
+    void severalMeasuresBecomeTheColumns() throws IOException {
+        String path = write("measures.groovy", """
+                data 'scenes.json.gz'
+                metrics 'cell', 'continuous'
+                selectors 'vote'
+                table measures: ['accuracy', 'kick-accuracy']
+                """);
+        assertEquals(new Sweep.Layout(List.of(Axis.METRIC), null, List.of("accuracy", "kick-accuracy")),
+                Sweeps.load(path).layout());
+    }
+
+    @Test
     void incompleteSweepSaysWhatIsMissing() throws IOException {
         String path = write("partial.groovy", "data 'scenes.json.gz'\nselectors 'vote'\n");
         PluginException e = assertThrows(PluginException.class, () -> Sweeps.load(path));
