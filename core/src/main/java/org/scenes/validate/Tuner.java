@@ -1,0 +1,145 @@
+package org.scenes.validate;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Consumer;
+import java.util.function.UnaryOperator;
+import org.scenes.match.ObjectWeights;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.SceneFile;
+
+/**
+ * Chooses metric, options, weights, k and selector by cross-validation on training files only
+ * ({@link Folds}: each file tested against the next one). The search is a coordinate descent:
+ * each dimension's variants are tried on the best configuration so far and the best is kept;
+ * the dimensions are swept twice. The score is the mean of "action with direction" accuracy
+ * and macro F1, so rare actions (kicks) and turn directions count, not only the common dash.
+ */
+public final class Tuner {
+    /** One axis of the search: variants of the current configuration. */
+    public record Dimension(String name, List<UnaryOperator<MatchConfig>> variants) {
+    }
+
+    /** The chosen configuration, its cross-validation score and the figures behind it. */
+    public record Result(MatchConfig config, double score, Map<String, Double> figures, int evaluated) {
+    }
+
+    private final List<SceneFile> files;
+    private final PluginRegistry registry;
+    private final Consumer<String> log;
+    private final Map<MatchConfig, Double> scores = new HashMap<>();
+    private final Map<MatchConfig, Folds> folds = new HashMap<>();
+
+    public Tuner(List<SceneFile> files, PluginRegistry registry, Consumer<String> log) {
+        if (files.size() < 2) {
+            throw new IllegalArgumentException("tuning needs at least two training files for cross-validation");
+        }
+        this.files = List.copyOf(files);
+        this.registry = registry;
+        this.log = log == null ? line -> { } : log;
+    }
+
+    public static double score(Folds result) {
+        return (result.mean(ValidationReport::directionAccuracy) + result.mean(ValidationReport::macroF1)) / 2;
+    }
+
+    public double evaluate(MatchConfig config) {
+        Double known = scores.get(config);
+        if (known != null) {
+            return known;
+        }
+        config.check(registry);
+        Folds result = Folds.run(files, config, registry, true, null);
+        double score = score(result);
+        scores.put(config, score);
+        folds.put(config, result);
+        log.accept(String.format("%.4f  acc %.4f  dir %.4f  F1 %.4f  %s", score, result.mean(ValidationReport::accuracy),
+                result.mean(ValidationReport::directionAccuracy), result.mean(ValidationReport::macroF1), config.describe()));
+        return score;
+    }
+
+    public Result tune(MatchConfig start, List<Dimension> dimensions, int sweeps) {
+        MatchConfig best = start;
+        double bestScore = evaluate(start);
+        for (int sweep = 0; sweep < sweeps; sweep++) {
+            boolean improved = false;
+            for (Dimension dimension : dimensions) {
+                for (UnaryOperator<MatchConfig> variant : dimension.variants()) {
+                    MatchConfig candidate = variant.apply(best);
+                    double score = evaluate(candidate);
+                    // strictly better only: ties keep the earlier, simpler configuration
+                    if (score > bestScore + 1e-9) {
+                        best = candidate;
+                        bestScore = score;
+                        improved = true;
+                    }
+                }
+            }
+            if (!improved) {
+                break;
+            }
+        }
+        Folds result = folds.get(best);
+        Map<String, Double> figures = new java.util.LinkedHashMap<>();
+        Folds.figures().forEach((name, figure) -> figures.put(name, result.mean(figure)));
+        return new Result(best, bestScore, figures, scores.size());
+    }
+
+    /** The built-in search: metric family and its weights, memory, k and selector. */
+    public static List<Dimension> defaultSearch() {
+        List<Dimension> dimensions = new ArrayList<>();
+        ObjectWeights ballGoal = ObjectWeights.parse("ball=1,goal=1");
+        dimensions.add(new Dimension("metric", List.of(
+                c -> c.withMetric("ball-goal", Map.of()).withObjectWeights(ballGoal),
+                c -> c.withMetric("continuous", Map.of()).withObjectWeights(ballGoal),
+                c -> c.withMetric("continuous", polar(1, 10)).withObjectWeights(ballGoal),
+                c -> c.withMetric("continuous", polar(1, 30)).withObjectWeights(ballGoal),
+                c -> c.withMetric("continuous", polar(1, 100)).withObjectWeights(ballGoal))));
+        dimensions.add(new Dimension("objects", List.of(
+                c -> c.withObjectWeights(ObjectWeights.parse("ball=1")),
+                c -> c.withObjectWeights(ballGoal),
+                c -> c.withObjectWeights(ObjectWeights.parse("ball=1,goal=0.5")),
+                c -> c.withObjectWeights(ObjectWeights.parse("ball=1,goal=1,line=0.2")))));
+        dimensions.add(new Dimension("memory", List.of(
+                c -> withMemory(c, 0, 0),
+                c -> withMemory(c, 0.5, 0),
+                c -> withMemory(c, 1, 0),
+                c -> withMemory(c, 2, 0),
+                c -> withMemory(c, 1, 10))));
+        dimensions.add(new Dimension("k and selector", List.of(
+                c -> c.withK(1).withSelector("first-valid", Map.of()),
+                c -> c.withK(3).withSelector("vote", Map.of()),
+                c -> c.withK(5).withSelector("vote", Map.of()),
+                c -> c.withK(3).withSelector("vote", Map.of("params", "average")))));
+        return dimensions;
+    }
+
+    private static Map<String, String> polar(double distanceWeight, double directionWeight) {
+        return Map.of("space", "polar", "log-distance", "true", "distance-weight", format(distanceWeight),
+                "direction-weight", format(directionWeight));
+    }
+
+    /** Memory needs the memory transform and a metric that reads it (object-set metrics do). */
+    static MatchConfig withMemory(MatchConfig config, double weight, double actionWeight) {
+        Map<String, String> options = new HashMap<>(config.metricOptions());
+        options.remove("memory");
+        options.remove("memory-action");
+        boolean objectSet = !config.metric().equals("ball-goal") && !config.metric().equals("random");
+        if (!objectSet || weight == 0 && actionWeight == 0) {
+            return config.withMetric(config.metric(), options).withTransforms(List.of());
+        }
+        if (weight > 0) {
+            options.put("memory", format(weight));
+        }
+        if (actionWeight > 0) {
+            options.put("memory-action", format(actionWeight));
+        }
+        return config.withMetric(config.metric(), options).withTransforms(List.of("memory"));
+    }
+
+    private static String format(double value) {
+        return value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
+    }
+}
