@@ -22,6 +22,6 @@ public final class ScriptMetricProvider implements MetricProvider {
         MetricScript script = Scripts.instantiate("metric", path, MetricScript.class);
         script.configure(config);
         Scripts.setUp("metric", path, script);
-        return new ScriptedMetric(script, path, Scripts.fileName(path));
+        return ScriptedMetric.of(script, path, Scripts.fileName(path));
     }
 }

@@ -42,6 +42,16 @@ enum ScriptShape {
         throw new IllegalArgumentException("no script shape for " + base.getName());
     }
 
+    private static boolean defines(ClassNode classNode, String name, int parameters) {
+        for (MethodNode candidate : classNode.getMethods(name)) {
+            // getMethods also lists the base class' methods, which do not count
+            if (candidate.getDeclaringClass().equals(classNode) && candidate.getParameters().length == parameters) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /**
      * Fails early, with the signature to write, when the script lacks its method: Groovy's own
      * message ("Can't have an abstract method in a non-abstract class") does not say what to do.
@@ -59,14 +69,27 @@ enum ScriptShape {
             if (!classNode.isScript() || shape.name == null) {
                 return;
             }
-            for (MethodNode candidate : classNode.getMethods(shape.name)) {
-                if (candidate.getParameters().length == shape.parameters) {
+            if (defines(classNode, shape.name, shape.parameters)) {
+                return;
+            }
+            if (shape == METRIC) {
+                // the fast form: encode once, compare arrays
+                boolean encode = defines(classNode, "encode", 1);
+                boolean arrays = defines(classNode, "distance", 3);
+                if (encode && arrays) {
+                    return;
+                }
+                if (encode || arrays) {
+                    source.addError(new SyntaxException("a metric script with " + (encode ? "encode" : "a 3-argument distance")
+                            + " must also define " + (encode ? "double distance(double[] query, double[] stored, double bound)"
+                            : "double[] encode(Scene scene)") + " at its top level", 1, 1));
                     return;
                 }
             }
             String kind = shape.name().toLowerCase(java.util.Locale.ROOT);
             source.addError(new SyntaxException("a " + kind + " script must define the method " + shape.method
-                    + " at its top level", 1, 1));
+                    + (shape == METRIC ? ", or double[] encode(Scene scene) with double distance(double[] query, "
+                    + "double[] stored, double bound)," : "") + " at its top level", 1, 1));
         }
     }
 }

@@ -12,6 +12,7 @@ import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import org.scenes.match.ActionSelector;
 import org.scenes.match.ActionWeights;
+import org.scenes.match.EncodedMetric;
 import org.scenes.match.Neighbour;
 import org.scenes.match.ObjectWeights;
 import org.scenes.match.SceneMetric;
@@ -39,29 +40,35 @@ class ExampleScriptsTest {
     @Test
     void ballGoalComparesBallAndGoalCellsAndAngles() {
         SceneMetric metric = ballGoal("ball=1,goal=1");
+        assertTrue(metric instanceof EncodedMetric<?>, "the example uses the fast form");
+        assertTrue(metric.isTrueMetric());
         Scene query = Fixtures.scene(1, null, Fixtures.ball(3, 0), Fixtures.opponentGoal(30, 20));
         assertEquals(0, metric.distance(query, query));
-        // Ball one row nearer (3 m -> 0.5 m), same direction: a row counts 2.
+        // Ball one row nearer (3 m -> 0.5 m), same direction: a row costs 3.
         Scene nearer = Fixtures.scene(2, null, Fixtures.ball(0.5, 0), Fixtures.opponentGoal(30, 20));
-        assertEquals(2, metric.distance(query, nearer), 1e-12);
-        // Ball one column to the right (0 -> 18 degrees): one column plus 18 degrees = 2.
+        assertEquals(3, metric.distance(query, nearer), 1e-12);
+        // Ball one column to the right (0 -> 18 degrees): one column plus 18 x 0.05.
         Scene right = Fixtures.scene(3, null, Fixtures.ball(3, 18), Fixtures.opponentGoal(30, 20));
-        assertEquals(2, metric.distance(query, right), 1e-12);
-        // Same column, 9 degrees apart: only the angle counts.
-        Scene turned = Fixtures.scene(4, null, Fixtures.ball(3, 0), Fixtures.opponentGoal(30, 11));
+        assertEquals(1.9, metric.distance(query, right), 1e-12);
+        // Same column, 10 degrees apart: only the angle counts.
+        Scene turned = Fixtures.scene(4, null, Fixtures.ball(3, 0), Fixtures.opponentGoal(30, 10));
         assertEquals(0.5, metric.distance(query, turned), 1e-12);
         // Flags do not count; a missing goal costs 10.
         Scene noGoal = Fixtures.scene(5, null, Fixtures.ball(3, 0), Fixtures.flag(10, 5));
         assertEquals(10, metric.distance(query, noGoal), 1e-12);
         assertEquals(0, metric.distance(Fixtures.scene(6, null), Fixtures.scene(7, null, Fixtures.flag(3, 3))));
+        // A part costs at most 20: ball far left and near versus far right and far.
+        Scene opposite = Fixtures.scene(8, null, Fixtures.ball(0.5, -170), Fixtures.opponentGoal(30, 20));
+        Scene other = Fixtures.scene(9, null, Fixtures.ball(40, 170), Fixtures.opponentGoal(30, 20));
+        assertEquals(20, metric.distance(opposite, other), 1e-12);
     }
 
     @Test
     void ballGoalFollowsObjectWeights() {
         Scene query = Fixtures.scene(1, null, Fixtures.ball(3, 0), Fixtures.opponentGoal(30, 20));
         Scene other = Fixtures.scene(2, null, Fixtures.ball(0.5, 0));
-        assertEquals(2 + 10, ballGoal("ball=1,goal=1").distance(query, other), 1e-12);
-        assertEquals(3 * 2, ballGoal("ball=3").distance(query, other), 1e-12);
+        assertEquals(3 + 10, ballGoal("ball=1,goal=1").distance(query, other), 1e-12);
+        assertEquals(3 * 3, ballGoal("ball=3").distance(query, other), 1e-12);
         assertEquals(0.5 * 10, ballGoal("goal=0.5").distance(query, other), 1e-12);
     }
 

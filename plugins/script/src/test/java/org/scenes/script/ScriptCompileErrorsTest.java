@@ -134,7 +134,19 @@ class ScriptCompileErrorsTest {
                 }
                 """);
         assertEquals("misspelt.groovy:1:1: a metric script must define the method double distance(Scene query, "
-                + "Scene stored) at its top level", errors[0]);
+                + "Scene stored), or double[] encode(Scene scene) with double distance(double[] query, double[] stored, "
+                + "double bound), at its top level", errors[0]);
+    }
+
+    @Test
+    void fastFormNeedsBothMethods() throws IOException {
+        String[] errors = metricErrors("half.groovy", """
+                double[] encode(Scene scene) {
+                    return new double[] {scene.objects().size()}
+                }
+                """);
+        assertEquals("half.groovy:1:1: a metric script with encode must also define double distance(double[] query, "
+                + "double[] stored, double bound) at its top level", errors[0]);
     }
 
     @Test
