@@ -33,8 +33,13 @@ public final class Validator {
         IntStream indices = IntStream.range(0, n);
         (parallel ? indices.parallel() : indices).forEach(i -> {
             long start = System.nanoTime();
-            List<Neighbour> nearest = recognizer.nearest(test.get(i));
-            predicted[i] = selector.get().select(nearest, queryRandom(seed, i));
+            try {
+                List<Neighbour> nearest = recognizer.nearest(test.get(i));
+                predicted[i] = selector.get().select(nearest, queryRandom(seed, i));
+            } catch (RuntimeException e) {
+                // a plugin's or script's error, located by the query it failed on
+                throw new QueryFailure(i, test.get(i).cycle(), e);
+            }
             nanos[i] = System.nanoTime() - start;
             if (progress != null) {
                 progress.run();
