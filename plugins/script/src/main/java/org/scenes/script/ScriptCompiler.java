@@ -118,7 +118,7 @@ final class ScriptCompiler {
                 new ScriptShape.Check(ScriptShape.of(base)),
                 new ASTTransformationCustomizer(CompileStatic.class),
                 new ForbiddenCallsCustomizer(),
-                new EnumIdentityCustomizer());
+                new FastEqualityCustomizer());
         return configuration;
     }
 

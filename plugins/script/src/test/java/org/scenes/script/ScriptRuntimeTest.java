@@ -128,8 +128,8 @@ class ScriptRuntimeTest {
     }
 
     @Test
-    void enumEqualityKeepsItsMeaningWhenCompiledAsIdentity() throws IOException {
-        // == and != between enums compile to reference comparisons (EnumIdentityCustomizer).
+    void enumAndBooleanEqualityKeepTheirMeaningWhenCompiledAsIdentity() throws IOException {
+        // == and != between enums or booleans compile to reference comparisons (FastEqualityCustomizer).
         String path = write("kinds.groovy", """
                 double distance(Scene query, Scene stored) {
                     double score = 0
@@ -140,6 +140,10 @@ class ScriptRuntimeTest {
                         ObjectKind nothing = null
                         if (object.kind() == nothing) score += 1000
                         if (nothing == null) score += 10000
+                        boolean far = object.distance() > 10
+                        boolean goal = object.kind() == ObjectKind.GOAL
+                        if (far == goal) score += 100000
+                        if (far != goal) score += 1000000
                     }
                     return score
                 }
@@ -148,7 +152,8 @@ class ScriptRuntimeTest {
         Scene query = Fixtures.scene(1, null, Fixtures.ball(3, 0), Fixtures.opponentGoal(30, 2), Fixtures.flag(5, 5));
         Scene stored = Fixtures.scene(2, null, Fixtures.flag(1, 1));
         // ball: 1 + 100 (relation NONE) ; goal: 10 ; flag: 10 + 100 ; and 10000 for each of the three.
-        assertEquals(1 + 100 + 10 + 10 + 100 + 30000, metric.distance(query, stored));
+        // far == goal for the ball (near, not a goal) and the goal (far, a goal), not for the flag (near).
+        assertEquals(1 + 100 + 10 + 10 + 100 + 30000 + 2 * 100000 + 1000000, metric.distance(query, stored));
     }
 
     @Test
