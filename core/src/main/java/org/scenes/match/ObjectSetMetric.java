@@ -75,7 +75,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         options.put("penalty", "cost of an unmatched object at the observer (default 10)");
         options.put("penalty-scale", "distance at which the unmatched penalty halves (default 10)");
         options.put("memory", "weight of the remembered previous scene (needs the memory transform; default 0)");
-        options.put("memory-action", "cost when the remembered previous actions differ (default 0)");
+        options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
         if (projection) {
             options.put("cycles", "cycles to project objects forward by their distance/direction change (default 1; negative: back)");
         } else {
@@ -199,8 +199,20 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         }
         boolean remember = withMemory && (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0);
         Encoded previous = remember && settings.memoryWeight() > 0 ? encode(scene.previous(), false) : null;
-        int previousAction = remember && scene.previous() != null ? scene.previous().actionType().ordinal() : -1;
+        int previousAction = remember && scene.previous() != null ? actionClass(scene.previous()) : -1;
         return new Encoded(packed, previous, previousAction);
+    }
+
+    /**
+     * A scene's action as compared by memory: the primary type, with turns split by the sign of
+     * the moment (left, straight, right), since the direction of a turn is what an agent repeats.
+     */
+    public static int actionClass(Scene scene) {
+        int type = scene.actionType().ordinal();
+        if (scene.actionType() != org.scenes.scene.ActionType.TURN) {
+            return type * 3;
+        }
+        return type * 3 + 1 + (int) Math.signum(scene.primaryAction().first());
     }
 
     private static int groupOf(SeenObject object) {

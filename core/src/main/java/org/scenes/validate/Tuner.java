@@ -93,21 +93,19 @@ public final class Tuner {
         ObjectWeights ballGoal = ObjectWeights.parse("ball=1,goal=1");
         dimensions.add(new Dimension("metric", List.of(
                 c -> c.withMetric("ball-goal", Map.of()).withObjectWeights(ballGoal),
-                c -> c.withMetric("continuous", Map.of()).withObjectWeights(ballGoal),
+                c -> c.withMetric("ball-goal", Map.of("angle-weight", "2", "row-weight", "10")).withObjectWeights(ballGoal),
+                c -> c.withMetric("ball-goal", Map.of("angle-weight", "10", "row-weight", "10")).withObjectWeights(ballGoal),
                 c -> c.withMetric("continuous", polar(1, 10)).withObjectWeights(ballGoal),
-                c -> c.withMetric("continuous", polar(1, 30)).withObjectWeights(ballGoal),
-                c -> c.withMetric("continuous", polar(1, 100)).withObjectWeights(ballGoal))));
-        dimensions.add(new Dimension("objects", List.of(
-                c -> c.withObjectWeights(ObjectWeights.parse("ball=1")),
-                c -> c.withObjectWeights(ballGoal),
-                c -> c.withObjectWeights(ObjectWeights.parse("ball=1,goal=0.5")),
-                c -> c.withObjectWeights(ObjectWeights.parse("ball=1,goal=1,line=0.2")))));
+                c -> c.withMetric("continuous", polar(10, 3)).withObjectWeights(ballGoal),
+                // the goal counts little by position but much by presence (a kick needs it in sight)
+                c -> c.withMetric("continuous", withPenalty(polar(30, 10), 1000, 10000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05")))));
         dimensions.add(new Dimension("memory", List.of(
                 c -> withMemory(c, 0, 0),
-                c -> withMemory(c, 0.5, 0),
-                c -> withMemory(c, 1, 0),
-                c -> withMemory(c, 2, 0),
-                c -> withMemory(c, 1, 10))));
+                c -> withMemory(c, 0, 2),
+                c -> withMemory(c, 0, 10),
+                c -> withMemory(c, 0.5, 10),
+                c -> withMemory(c, 1, 0))));
         dimensions.add(new Dimension("k and selector", List.of(
                 c -> c.withK(1).withSelector("first-valid", Map.of()),
                 c -> c.withK(3).withSelector("vote", Map.of()),
@@ -116,18 +114,24 @@ public final class Tuner {
         return dimensions;
     }
 
+    private static Map<String, String> withPenalty(Map<String, String> options, double penalty, double scale) {
+        Map<String, String> with = new HashMap<>(options);
+        with.put("penalty", format(penalty));
+        with.put("penalty-scale", format(scale));
+        return with;
+    }
+
     private static Map<String, String> polar(double distanceWeight, double directionWeight) {
         return Map.of("space", "polar", "log-distance", "true", "distance-weight", format(distanceWeight),
                 "direction-weight", format(directionWeight));
     }
 
-    /** Memory needs the memory transform and a metric that reads it (object-set metrics do). */
+    /** Memory needs the memory transform and a metric that reads it (the object-set metrics and ball-goal do). */
     static MatchConfig withMemory(MatchConfig config, double weight, double actionWeight) {
         Map<String, String> options = new HashMap<>(config.metricOptions());
         options.remove("memory");
         options.remove("memory-action");
-        boolean objectSet = !config.metric().equals("ball-goal") && !config.metric().equals("random");
-        if (!objectSet || weight == 0 && actionWeight == 0) {
+        if (config.metric().equals("random") || weight == 0 && actionWeight == 0) {
             return config.withMetric(config.metric(), options).withTransforms(List.of());
         }
         if (weight > 0) {

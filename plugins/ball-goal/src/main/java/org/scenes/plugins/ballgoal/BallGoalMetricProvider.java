@@ -4,6 +4,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import org.scenes.match.EncodedMetric;
 import org.scenes.match.MetricProvider;
+import org.scenes.match.ObjectSetMetric;
 import org.scenes.match.SceneMetric;
 import org.scenes.plugin.PluginConfig;
 import org.scenes.plugin.PluginException;
@@ -35,6 +36,8 @@ public final class BallGoalMetricProvider implements MetricProvider {
         options.put("column-weight", "cost per column of difference (default 1)");
         options.put("angle-weight", "cost per 10 degrees of direction difference (default 0.5)");
         options.put("missing", "cost of a ball or goal seen in one scene only (default 10)");
+        options.put("memory", "weight of the remembered previous scene's ball and goal (needs the memory transform; default 0)");
+        options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
         return options;
     }
 
@@ -44,13 +47,15 @@ public final class BallGoalMetricProvider implements MetricProvider {
         double column = config.doubleOption("column-weight", 1);
         double angle = config.doubleOption("angle-weight", 0.5);
         double missing = config.doubleOption("missing", 10);
-        for (double value : new double[] {row, column, angle, missing}) {
+        double memory = config.doubleOption("memory", 0);
+        double memoryAction = config.doubleOption("memory-action", 0);
+        for (double value : new double[] {row, column, angle, missing, memory, memoryAction}) {
             if (!(value >= 0) || Double.isInfinite(value)) {
                 throw new PluginException("ball-goal weights must be finite and not negative");
             }
         }
         return new BallGoalMetric(row, column, angle / 10, missing,
-                config.objectWeights().ball(), config.objectWeights().goal());
+                config.objectWeights().ball(), config.objectWeights().goal(), memory, memoryAction);
     }
 
     /**
@@ -65,9 +70,13 @@ public final class BallGoalMetricProvider implements MetricProvider {
         private final double missing;
         private final double ballWeight;
         private final double goalWeight;
+        private final double memory;
+        private final double memoryAction;
 
         BallGoalMetric(double rowWeight, double columnWeight, double anglePerDegree, double missing,
-                       double ballWeight, double goalWeight) {
+                       double ballWeight, double goalWeight, double memory, double memoryAction) {
+            this.memory = memory;
+            this.memoryAction = memoryAction;
             this.rowWeight = rowWeight;
             this.columnWeight = columnWeight;
             this.anglePerDegree = anglePerDegree;
@@ -81,16 +90,29 @@ public final class BallGoalMetricProvider implements MetricProvider {
             return true;
         }
 
-        /** [present, column, row, direction] for the ball, then for the opponent goal. */
+        /**
+         * [present, column, row, direction] for the ball, then for the opponent goal; then the
+         * same for the remembered previous scene, and the previous action's class (-1 for none).
+         */
         @Override
         public double[] encode(Scene scene) {
-            double[] features = new double[8];
+            double[] features = new double[17];
+            place(scene, features, 0);
+            Scene previous = scene.previous();
+            if (previous != null) {
+                place(previous, features, 8);
+            }
+            features[16] = previous == null ? -1 : ObjectSetMetric.actionClass(previous);
+            return features;
+        }
+
+        private static void place(Scene scene, double[] features, int start) {
             for (SeenObject object : scene.objects()) {
                 int offset;
                 if (object.kind() == ObjectKind.BALL) {
-                    offset = 0;
+                    offset = start;
                 } else if (object.kind() == ObjectKind.GOAL && object.relation() == Relation.OPPONENT) {
-                    offset = 4;
+                    offset = start + 4;
                 } else {
                     continue;
                 }
@@ -101,12 +123,18 @@ public final class BallGoalMetricProvider implements MetricProvider {
                     features[offset + 3] = Double.isNaN(object.direction()) ? 0 : object.direction();
                 }
             }
-            return features;
         }
 
         @Override
         public double distance(double[] query, double[] stored, double bound) {
-            return ballWeight * objectDistance(query, stored, 0) + goalWeight * objectDistance(query, stored, 4);
+            double distance = ballWeight * objectDistance(query, stored, 0) + goalWeight * objectDistance(query, stored, 4);
+            if (memory > 0) {
+                distance += memory * (ballWeight * objectDistance(query, stored, 8) + goalWeight * objectDistance(query, stored, 12));
+            }
+            if (memoryAction > 0 && query[16] != stored[16]) {
+                distance += memoryAction;
+            }
+            return distance;
         }
 
         private double objectDistance(double[] x, double[] y, int offset) {
