@@ -140,10 +140,10 @@ class ScriptRuntimeTest {
                         ObjectKind nothing = null
                         if (object.kind() == nothing) score += 1000
                         if (nothing == null) score += 10000
-                        boolean far = object.distance() > 10
+                        boolean near = object.distance() < 4
                         boolean goal = object.kind() == ObjectKind.GOAL
-                        if (far == goal) score += 100000
-                        if (far != goal) score += 1000000
+                        if (near == goal) score += 100000
+                        if (near != goal) score += 1000000
                     }
                     return score
                 }
@@ -152,8 +152,8 @@ class ScriptRuntimeTest {
         Scene query = Fixtures.scene(1, null, Fixtures.ball(3, 0), Fixtures.opponentGoal(30, 2), Fixtures.flag(5, 5));
         Scene stored = Fixtures.scene(2, null, Fixtures.flag(1, 1));
         // ball: 1 + 100 (relation NONE) ; goal: 10 ; flag: 10 + 100 ; and 10000 for each of the three.
-        // far == goal for the ball (near, not a goal) and the goal (far, a goal), not for the flag (near).
-        assertEquals(1 + 100 + 10 + 10 + 100 + 30000 + 2 * 100000 + 1000000, metric.distance(query, stored));
+        // near != goal for the ball (near, not a goal) and the goal (far, a goal); == for the flag (far, no goal).
+        assertEquals(1 + 100 + 10 + 10 + 100 + 30000 + 100000 + 2 * 1000000, metric.distance(query, stored));
     }
 
     @Test
