@@ -33,13 +33,20 @@ final class Charts {
             throw new UsageException("--chart " + file + ": the name must end in .png or .svg");
         }
         System.setProperty("java.awt.headless", "true");
-        JFreeChart chart = chart(outcomes);
+        write(file, chart(outcomes), WIDTH, HEIGHT);
+    }
+
+    /** Writes a chart as PNG or SVG by the file name's ending, atomically. */
+    static void write(Path file, JFreeChart chart, int width, int height) throws IOException {
+        System.setProperty("java.awt.headless", "true");
         try (AtomicOutput output = AtomicOutput.create(file)) {
-            if (name.endsWith(".png")) {
-                ChartUtils.writeChartAsPNG(output.stream(), chart, WIDTH, HEIGHT);
+            if (file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
+                ChartUtils.writeChartAsPNG(output.stream(), chart, width, height);
             } else {
-                SVGGraphics2D graphics = new SVGGraphics2D(WIDTH, HEIGHT);
-                chart.draw(graphics, new Rectangle(WIDTH, HEIGHT));
+                SVGGraphics2D graphics = new SVGGraphics2D(width, height);
+                // a fixed prefix instead of a time-based one, so the same chart gives the same file
+                graphics.setDefsKeyPrefix("scenes");
+                chart.draw(graphics, new Rectangle(width, height));
                 output.stream().write(graphics.getSVGDocument().getBytes(StandardCharsets.UTF_8));
             }
             output.commit();

@@ -2,11 +2,7 @@ package org.scenes.cli;
 
 import java.awt.Color;
 import java.awt.Font;
-import java.awt.Rectangle;
 import java.io.IOException;
-import java.io.OutputStreamWriter;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
 import org.jfree.chart.ChartFactory;
@@ -18,19 +14,16 @@ import org.jfree.chart.plot.PlotOrientation;
 import org.jfree.chart.renderer.category.BarRenderer;
 import org.jfree.chart.renderer.category.StandardBarPainter;
 import org.jfree.data.category.DefaultCategoryDataset;
-import org.jfree.svg.SVGGraphics2D;
 import org.scenes.experiment.Axis;
 import org.scenes.experiment.ResultTable;
 import org.scenes.experiment.Sweep;
-import org.scenes.files.AtomicOutput;
 
-/** The pivot of a sweep's results as a grouped bar chart: a group per row, a bar per column value. */
+/** The pivot of a sweep's results as a grouped bar chart: a group per row, a bar per column. */
 final class ExperimentChart {
     private ExperimentChart() {
     }
 
     static void writeSvg(ResultTable table, Path file) throws IOException {
-        // Drawing needs no display; without this AWT looks for one on some systems.
         System.setProperty("java.awt.headless", "true");
         Sweep.Layout layout = table.sweep().layout();
         DefaultCategoryDataset dataset = new DefaultCategoryDataset();
@@ -59,15 +52,7 @@ final class ExperimentChart {
             categories.setCategoryLabelPositions(CategoryLabelPositions.UP_45);
         }
         int width = Math.max(640, 60 + table.rowValues().size() * (24 + 14 * table.columnValues().size()));
-        int height = 480;
-        SVGGraphics2D graphics = new SVGGraphics2D(width, height);
-        chart.draw(graphics, new Rectangle(0, 0, width, height));
-        try (AtomicOutput output = AtomicOutput.create(file);
-             Writer out = new OutputStreamWriter(output.stream(), StandardCharsets.UTF_8)) {
-            out.write(graphics.getSVGDocument());
-            out.flush();
-            output.commit();
-        }
+        Charts.write(file, chart, width, 480);
     }
 
     private static int longest(List<String> labels) {

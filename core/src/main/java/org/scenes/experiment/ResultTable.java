@@ -161,7 +161,11 @@ public final class ResultTable {
                 }
                 json.writeEndArray();
             }
-            json.writeNumberField("folds", sweep.folds());
+            json.writeArrayFieldStart("transforms");
+            for (String transform : sweep.transforms()) {
+                json.writeString(transform);
+            }
+            json.writeEndArray();
             json.writeNumberField("seed", sweep.seed());
             json.writeEndObject();
             json.writeArrayFieldStart("results");

@@ -12,13 +12,15 @@ import org.scenes.match.ObjectWeights;
  * results table is pivoted for reading and drawing.
  *
  * @param title heading of the table and the chart
- * @param data scene files (or directories of them) validated on
- * @param folds number of cross-validation folds
+ * @param data the scene files of the cross-validation, one fold each: each file is tested
+ *             against the next one, cyclically (the thesis' protocol, as {@code scenes validate --folds})
+ * @param transforms scene transforms applied in every configuration ({@code memory}), in order
  * @param seed seed of every random choice, the same for each configuration
  * @param layout which axes are rows and columns of the table, and which measures fill it
  */
 public record Sweep(String title, List<String> data, List<String> metrics, List<ObjectWeights> weights, List<Integer> ks,
-                    List<String> selectors, List<ActionWeights> actionWeights, int folds, long seed, Layout layout) {
+                    List<String> selectors, List<ActionWeights> actionWeights, List<String> transforms, long seed,
+                    Layout layout) {
 
     /**
      * How the results are pivoted into the table (and chart): rows are combinations of axis
@@ -89,13 +91,13 @@ public record Sweep(String title, List<String> data, List<String> metrics, List<
         ks = List.copyOf(ks);
         selectors = List.copyOf(selectors);
         actionWeights = List.copyOf(actionWeights);
-        require(!data.isEmpty(), "a sweep needs scene data: data 'path/to/scenes.json.gz'");
+        transforms = List.copyOf(transforms);
+        require(data.size() >= 2, "a sweep needs at least two scene files, one per fold: data 'a.json.gz', 'b.json.gz'");
         require(!metrics.isEmpty(), "a sweep needs at least one metric: metrics 'cell'");
         require(!weights.isEmpty(), "a sweep needs at least one object weight vector");
         require(!ks.isEmpty(), "a sweep needs at least one k");
         require(!selectors.isEmpty(), "a sweep needs at least one selector: selectors 'first-valid'");
         require(!actionWeights.isEmpty(), "a sweep needs at least one action weight vector");
-        require(folds >= 2, "a sweep needs at least 2 folds, not " + folds);
         for (int k : ks) {
             require(k >= 1, "k must be at least 1, not " + k);
         }
@@ -113,7 +115,7 @@ public record Sweep(String title, List<String> data, List<String> metrics, List<
 
     /** The same sweep with another layout. */
     public Sweep withLayout(Layout newLayout) {
-        return new Sweep(title, data, metrics, weights, ks, selectors, actionWeights, folds, seed, newLayout);
+        return new Sweep(title, data, metrics, weights, ks, selectors, actionWeights, transforms, seed, newLayout);
     }
 
     private static void require(boolean condition, String message) {

@@ -22,7 +22,7 @@ public abstract class SweepScript extends Script {
     private final List<Integer> ks = new ArrayList<>();
     private final List<String> selectors = new ArrayList<>();
     private final List<ActionWeights> actionWeights = new ArrayList<>();
-    private int folds = 10;
+    private final List<String> transforms = new ArrayList<>();
     private long seed = 1;
     private List<Axis> rows = List.of();
     private Axis columns = Axis.K;
@@ -34,9 +34,17 @@ public abstract class SweepScript extends Script {
         this.title = text;
     }
 
-    /** Scene files or directories of scene files, relative to the working directory. */
+    /**
+     * The scene files of the cross-validation, relative to the working directory, at least two:
+     * each is one fold, tested against the next one (as {@code scenes validate --folds}).
+     */
     public void data(String... paths) {
         data.addAll(List.of(paths));
+    }
+
+    /** Scene transforms applied in every configuration, e.g. {@code transforms 'memory'}. */
+    public void transforms(String... names) {
+        transforms.addAll(List.of(names));
     }
 
     /** Metric specs, as on the command line: {@code 'cell'}, {@code 'script:my.groovy'}. */
@@ -72,11 +80,6 @@ public abstract class SweepScript extends Script {
         for (String vector : vectors) {
             actionWeights.add(ActionWeights.parse(vector));
         }
-    }
-
-    /** Number of cross-validation folds (default 10). */
-    public void folds(int count) {
-        this.folds = count;
     }
 
     /** Seed of every random choice, the same for each configuration (default 1). */
@@ -131,7 +134,7 @@ public abstract class SweepScript extends Script {
         }
         Sweep sweep = new Sweep(title, data, metrics, weights.isEmpty() ? List.of(ObjectWeights.DEFAULT) : weights,
                 ks.isEmpty() ? List.of(1) : ks, selectors,
-                actionWeights.isEmpty() ? List.of(ActionWeights.DEFAULT) : actionWeights, folds, seed,
+                actionWeights.isEmpty() ? List.of(ActionWeights.DEFAULT) : actionWeights, transforms, seed,
                 new Sweep.Layout(allRows, columns, measures));
         return sweep.withLayout(Sweep.Layout.of(rows, columns, measures, sweep));
     }

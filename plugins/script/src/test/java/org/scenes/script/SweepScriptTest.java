@@ -36,7 +36,7 @@ class SweepScriptTest {
                 k 1..3
                 k 5
                 selectors 'first-valid', 'vote'
-                folds 5
+                transforms 'memory'
                 seed 42
                 table columns: 'selector', measure: 'accuracy'
                 """);
@@ -44,7 +44,7 @@ class SweepScriptTest {
         assertEquals("k and selectors", sweep.title());
         assertEquals(List.of("scenes/a.json.gz", "scenes/b.json.gz"), sweep.data());
         assertEquals(List.of(1, 2, 3, 5), sweep.ks());
-        assertEquals(5, sweep.folds());
+        assertEquals(List.of("memory"), sweep.transforms());
         assertEquals(42, sweep.seed());
         // Rows default to every other axis that varies.
         assertEquals(new Sweep.Layout(List.of(Axis.METRIC, Axis.WEIGHTS, Axis.K), Axis.SELECTOR, "accuracy"), sweep.layout());
@@ -59,7 +59,7 @@ class SweepScriptTest {
     @Test
     void loopsAndVariablesWork() throws IOException {
         String path = write("loop.groovy", """
-                data 'scenes.json.gz'
+                data 'a.json.gz', 'b.json.gz'
                 metrics 'cell'
                 selectors 'first-valid'
                 for (String object : ['ball', 'goal', 'flag']) {
@@ -70,14 +70,14 @@ class SweepScriptTest {
         assertEquals(List.of(ObjectWeights.parse("ball=1"), ObjectWeights.parse("goal=1"), ObjectWeights.parse("flag=1")),
                 sweep.weights());
         assertEquals(List.of(1), sweep.ks());
-        assertEquals(10, sweep.folds());
+        assertEquals(List.of(), sweep.transforms());
         assertEquals(new Sweep.Layout(List.of(Axis.WEIGHTS), Axis.K, "accuracy"), sweep.layout());
     }
 
     @Test
     void explicitRowsMustCoverEveryVaryingAxis() throws IOException {
         String path = write("rows.groovy", """
-                data 'scenes.json.gz'
+                data 'a.json.gz', 'b.json.gz'
                 metrics 'cell', 'continuous'
                 weights 'ball=1', 'goal=1'
                 selectors 'vote'
@@ -94,7 +94,7 @@ class SweepScriptTest {
     @Test
     void severalMeasuresBecomeTheColumns() throws IOException {
         String path = write("measures.groovy", """
-                data 'scenes.json.gz'
+                data 'a.json.gz', 'b.json.gz'
                 metrics 'cell', 'continuous'
                 selectors 'vote'
                 table measures: ['accuracy', 'kick-accuracy']
@@ -105,7 +105,7 @@ class SweepScriptTest {
 
     @Test
     void incompleteSweepSaysWhatIsMissing() throws IOException {
-        String path = write("partial.groovy", "data 'scenes.json.gz'\nselectors 'vote'\n");
+        String path = write("partial.groovy", "data 'a.json.gz', 'b.json.gz'\nselectors 'vote'\n");
         PluginException e = assertThrows(PluginException.class, () -> Sweeps.load(path));
         assertEquals("the sweep " + path + " is incomplete: a sweep needs at least one metric: metrics 'cell'", e.getMessage());
     }
@@ -113,7 +113,7 @@ class SweepScriptTest {
     @Test
     void badValueIsReportedWithItsLine() throws IOException {
         String path = write("bad.groovy", """
-                data 'scenes.json.gz'
+                data 'a.json.gz', 'b.json.gz'
                 metrics 'cell'
                 weights '1/1/x/1/1/1/1/1'
                 """);
