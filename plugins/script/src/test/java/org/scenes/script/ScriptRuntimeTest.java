@@ -157,6 +157,29 @@ class ScriptRuntimeTest {
     }
 
     @Test
+    void closuresAndHelperClassesWork() throws IOException {
+        String path = write("helpers.groovy", """
+                class Counts {
+                    static int twice(int value) { 2 * value }
+                }
+
+                double distance(Scene query, Scene stored) {
+                    int balls = query.objects().count { SeenObject o -> o.kind() == ObjectKind.BALL } as int
+                    if (balls > 1) throw new IllegalStateException('two balls')
+                    return Counts.twice(balls) + stored.objects().size()
+                }
+                """);
+        SceneMetric metric = REGISTRY.metric("script:" + path, PluginConfig.DEFAULT);
+        Scene query = Fixtures.scene(1, null, Fixtures.ball(3, 0), Fixtures.flag(5, 5));
+        Scene stored = Fixtures.scene(2, null, Fixtures.flag(1, 1));
+        assertEquals(3, metric.distance(query, stored));
+        // a second instance made after compiling loads the same classes again
+        assertEquals(3, REGISTRY.metric("script:" + path, PluginConfig.DEFAULT).distance(query, stored));
+        Scene twoBalls = Fixtures.scene(3, null, Fixtures.ball(3, 0), Fixtures.ball(4, 0));
+        assertEquals(7, assertThrows(ScriptFailure.class, () -> metric.distance(twoBalls, stored)).line());
+    }
+
+    @Test
     void failingSetUpIsReportedAtCreation() throws IOException {
         String path = write("setup.groovy", """
                 if (weights.ball() == 0) {
