@@ -12,10 +12,12 @@ import org.scenes.scene.SceneFile;
 
 /**
  * Chooses metric, options, weights, k and selector by cross-validation on training files only
- * ({@link Folds}: each file tested against the next one). The search is a coordinate descent:
- * each dimension's variants are tried on the best configuration so far and the best is kept;
- * the dimensions are swept twice. The score is the mean of "action with direction" accuracy
- * and macro F1, so rare actions (kicks) and turn directions count, not only the common dash.
+ * ({@link Folds}, by default leave-one-file-out: each file tested against all the others, which
+ * is closest to using the whole training game). The search is a coordinate descent: each
+ * dimension's variants are tried on the best configuration so far and the best is kept; the
+ * dimensions are swept until nothing improves (at most {@code sweeps} times). The score, over
+ * the decisions of all folds pooled, is the mean of action accuracy, "action with direction"
+ * accuracy and macro F1, so rare actions (kicks) and turn directions count, not only the common dash.
  */
 public final class Tuner {
     /** One axis of the search: variants of the current configuration. */
@@ -32,7 +34,10 @@ public final class Tuner {
     private final Map<MatchConfig, Double> scores = new HashMap<>();
     private final Map<MatchConfig, Folds> folds = new HashMap<>();
 
-    public Tuner(List<SceneFile> files, PluginRegistry registry, Consumer<String> log) {
+    private final Folds.Protocol protocol;
+
+    public Tuner(List<SceneFile> files, PluginRegistry registry, Folds.Protocol protocol, Consumer<String> log) {
+        this.protocol = protocol;
         if (files.size() < 2) {
             throw new IllegalArgumentException("tuning needs at least two training files for cross-validation");
         }
@@ -41,8 +46,8 @@ public final class Tuner {
         this.log = log == null ? line -> { } : log;
     }
 
-    public static double score(Folds result) {
-        return (result.mean(ValidationReport::directionAccuracy) + result.mean(ValidationReport::macroF1)) / 2;
+    public static double score(ValidationReport pooled) {
+        return (pooled.accuracy() + pooled.directionAccuracy() + pooled.macroF1()) / 3;
     }
 
     public double evaluate(MatchConfig config) {
@@ -51,12 +56,14 @@ public final class Tuner {
             return known;
         }
         config.check(registry);
-        Folds result = Folds.run(files, config, registry, true, null);
-        double score = score(result);
+        Folds result = Folds.run(files, config, registry, true, null, protocol);
+        ValidationReport pooled = result.pooled();
+        double score = score(pooled);
         scores.put(config, score);
         folds.put(config, result);
-        log.accept(String.format("%.4f  acc %.4f  dir %.4f  F1 %.4f  %s", score, result.mean(ValidationReport::accuracy),
-                result.mean(ValidationReport::directionAccuracy), result.mean(ValidationReport::macroF1), config.describe()));
+        log.accept(String.format("%.4f  acc %.4f  dir %.4f  F1 %.4f  kicks %d/%d  %s", score, pooled.accuracy(),
+                pooled.directionAccuracy(), pooled.macroF1(), pooled.truePositives(org.scenes.scene.ActionType.KICK),
+                pooled.support(org.scenes.scene.ActionType.KICK), config.describe()));
         return score;
     }
 
@@ -81,9 +88,9 @@ public final class Tuner {
                 break;
             }
         }
-        Folds result = folds.get(best);
+        ValidationReport pooled = folds.get(best).pooled();
         Map<String, Double> figures = new java.util.LinkedHashMap<>();
-        Folds.figures().forEach((name, figure) -> figures.put(name, result.mean(figure)));
+        Folds.figures().forEach((name, figure) -> figures.put(name, figure.applyAsDouble(pooled)));
         return new Result(best, bestScore, figures, scores.size());
     }
 
