@@ -68,8 +68,9 @@ public final class Tuner {
     }
 
     public Result tune(MatchConfig start, List<Dimension> dimensions, int sweeps) {
-        MatchConfig best = start;
-        double bestScore = evaluate(start);
+        // start from the first variant of the first dimension: the bare start may be slow and is rarely a contender
+        MatchConfig best = dimensions.isEmpty() ? start : dimensions.get(0).variants().get(0).apply(start);
+        double bestScore = evaluate(best);
         for (int sweep = 0; sweep < sweeps; sweep++) {
             boolean improved = false;
             for (Dimension dimension : dimensions) {
@@ -100,18 +101,19 @@ public final class Tuner {
         ObjectWeights ballGoal = ObjectWeights.parse("ball=1,goal=1");
         dimensions.add(new Dimension("metric", List.of(
                 c -> c.withMetric("ball-goal", Map.of()).withObjectWeights(ballGoal),
-                c -> c.withMetric("ball-goal", Map.of("angle-weight", "2", "row-weight", "10")).withObjectWeights(ballGoal),
                 c -> c.withMetric("ball-goal", Map.of("angle-weight", "10", "row-weight", "10")).withObjectWeights(ballGoal),
                 c -> c.withMetric("continuous", polar(1, 10)).withObjectWeights(ballGoal),
-                c -> c.withMetric("continuous", polar(10, 3)).withObjectWeights(ballGoal),
-                // the goal counts little by position but much by presence (a kick needs it in sight)
-                c -> c.withMetric("continuous", withPenalty(polar(30, 10), 1000, 10000))
-                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05")))));
+                // the distance ring weighs most (the kickable distance is a row boundary), then the
+                // direction; a missing ball or goal costs more than any position difference
+                c -> c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05")),
+                c -> c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.3")))));
         dimensions.add(new Dimension("memory", List.of(
                 c -> withMemory(c, 0, 0),
-                c -> withMemory(c, 0, 2),
                 c -> withMemory(c, 0, 10),
-                c -> withMemory(c, 0.5, 10),
+                c -> withMemory(c, 0, 100),
+                c -> withMemory(c, 0.5, 100),
                 c -> withMemory(c, 1, 0))));
         dimensions.add(new Dimension("k and selector", List.of(
                 c -> c.withK(1).withSelector("first-valid", Map.of()),
@@ -119,6 +121,12 @@ public final class Tuner {
                 c -> c.withK(5).withSelector("vote", Map.of()),
                 c -> c.withK(3).withSelector("vote", Map.of("params", "average")))));
         return dimensions;
+    }
+
+    private static Map<String, String> withRows(Map<String, String> options, double rowWeight) {
+        Map<String, String> with = new HashMap<>(options);
+        with.put("row-weight", format(rowWeight));
+        return with;
     }
 
     private static Map<String, String> withPenalty(Map<String, String> options, double penalty, double scale) {
