@@ -72,7 +72,8 @@ final class ReportTables {
     }
 
     static void printFolds(PrintWriter out, Folds folds) {
-        out.printf("Folds                    %d (each file tested against the next one)%n", folds.reports().size());
+        out.printf("Folds                    %d (each file tested against %s)%n", folds.reports().size(),
+                folds.protocol() == Folds.Protocol.NEXT ? "the next one" : "all the others");
         out.printf("  %-22s %10s %10s%n", "figure", "mean", "std");
         for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : Folds.figures().entrySet()) {
             boolean time = figure.getKey().contains("Micros");
@@ -80,6 +81,9 @@ final class ReportTables {
             out.printf("  %-22s %10.3f %10.3f%s%n", figure.getKey(), scale * folds.mean(figure.getValue()),
                     scale * folds.std(figure.getValue()), time ? " us" : " %");
         }
+        out.println();
+        out.println("Pooled over the decisions of all folds:");
+        printRun(out, folds.pooled());
     }
 
     private static double nanToZero(double value) {

@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.scenes.scene.SceneFile;
 import org.scenes.scene.SceneFileReader;
+import org.scenes.validate.Folds;
 import org.scenes.validate.MatchConfig;
 import org.scenes.validate.Tuner;
 import picocli.CommandLine.Command;
@@ -41,6 +42,10 @@ final class TuneCommand implements Callable<Integer> {
     @Option(names = "--sweeps", paramLabel = "N", description = "Passes over the search dimensions (default 2).")
     int sweeps = 2;
 
+    @Option(names = "--protocol", paramLabel = "leave-one-out|next",
+            description = "Cross-validation: each file against all others (default) or against the next one, as the thesis did.")
+    String protocol = "leave-one-out";
+
     @Option(names = "--quiet", description = "Do not print each configuration tried.")
     boolean quiet;
 
@@ -54,14 +59,20 @@ final class TuneCommand implements Callable<Integer> {
             files.add(SceneFileReader.read(path));
         }
         PrintWriter out = spec.commandLine().getOut();
-        Tuner tuner = new Tuner(files, top.global.registry(), quiet ? null : line -> {
+        Folds.Protocol chosen = switch (protocol) {
+            case "leave-one-out" -> Folds.Protocol.LEAVE_ONE_OUT;
+            case "next" -> Folds.Protocol.NEXT;
+            default -> throw new UsageException("--protocol must be leave-one-out or next, not " + protocol);
+        };
+        Tuner tuner = new Tuner(files, top.global.registry(), chosen, quiet ? null : line -> {
             out.println(line);
             out.flush();
         });
         Tuner.Result result = tuner.tune(MatchConfig.DEFAULT.withSeed(seed), Tuner.defaultSearch(), sweeps);
         Map<String, Object> score = new LinkedHashMap<>();
         score.put("score", result.score());
-        score.put("protocol", "each training file tested against the next one; score = (action-with-direction accuracy + macro F1) / 2");
+        score.put("protocol", protocol);
+        score.put("scoreFormula", "(accuracy + action-with-direction accuracy + macro F1) / 3 over the decisions of all folds");
         score.put("figures", result.figures());
         score.put("configurationsTried", result.evaluated());
         score.put("trainFiles", train.stream().map(Path::toString).toList());

@@ -51,6 +51,10 @@ final class ValidateCommand implements Callable<Integer> {
             description = "Cross-validate: each file is tested against the next one (cyclically); mean and standard deviation.")
     List<Path> folds = new ArrayList<>();
 
+    @Option(names = "--protocol", paramLabel = "next|leave-one-out",
+            description = "With --folds: train on the next file (the thesis' protocol, default) or on all other files.")
+    String protocol = "next";
+
     @Mixin
     MatchOptions match;
 
@@ -92,6 +96,11 @@ final class ValidateCommand implements Callable<Integer> {
                         : "give --test FILE... or --self");
             }
         }
+        Folds.Protocol foldProtocol = switch (protocol) {
+            case "next" -> Folds.Protocol.NEXT;
+            case "leave-one-out" -> Folds.Protocol.LEAVE_ONE_OUT;
+            default -> throw new UsageException("--protocol must be next or leave-one-out, not " + protocol);
+        };
         List<MatchConfig> configs = match.configs();
         PluginRegistry registry = top.global.registry();
         for (MatchConfig config : configs) {
@@ -110,7 +119,7 @@ final class ValidateCommand implements Callable<Integer> {
                 MatchConfig config = configs.get(i);
                 String label = labels.isEmpty() ? config.describe() : labels.get(i);
                 if (!folds.isEmpty()) {
-                    outcomes.add(new Outcome(label, config, null, Folds.run(trainFiles, config, registry, !sequential, tick)));
+                    outcomes.add(new Outcome(label, config, null, Folds.run(trainFiles, config, registry, !sequential, tick, foldProtocol)));
                 } else {
                     KnowledgeBase knowledge = KnowledgeBase.fromFiles(trainFiles, config.transformFactory(registry));
                     List<Scene> queriesOf = new ArrayList<>();

@@ -44,6 +44,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * @param logDistance compare ln(1 + r) instead of r (as the server's own quantisation does)
      * @param distanceWeight wd, multiplies distance differences (polar)
      * @param directionWeight wa, multiplies direction differences in degrees (polar)
+     * @param rowWeight wr, multiplies differences of grid row (distance ring), added to the pair cost
      * @param penalty P, cost of an unmatched object at the observer
      * @param penaltyScale L: the penalty is P L / (L + r), half of P at r = L
      * @param projectCycles objects moved this many cycles forward (negative: back) by their changes
@@ -51,10 +52,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * @param memoryActionWeight cost when the remembered previous actions differ in type
      */
     public record Settings(ObjectWeights weights, Matching matching, Space space, boolean logDistance,
-                           double distanceWeight, double directionWeight, double penalty, double penaltyScale,
+                           double distanceWeight, double directionWeight, double rowWeight, double penalty, double penaltyScale,
                            double projectCycles, double memoryWeight, double memoryActionWeight) {
         public Settings {
-            for (double value : new double[] {distanceWeight, directionWeight, penalty, memoryWeight, memoryActionWeight}) {
+            for (double value : new double[] {distanceWeight, directionWeight, rowWeight, penalty, memoryWeight, memoryActionWeight}) {
                 if (!(value >= 0) || Double.isInfinite(value)) {
                     throw new PluginException("metric weights and penalties must be finite and not negative");
                 }
@@ -72,6 +73,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         options.put("log-distance", "true to compare ln(1 + distance) instead of distance (default false)");
         options.put("distance-weight", "weight of distance differences in polar space (default 1)");
         options.put("direction-weight", "weight of direction differences, per degree, in polar space (default 1)");
+        options.put("row-weight", "cost per grid row (distance ring) of difference, added to the pair cost (default 0)");
         options.put("penalty", "cost of an unmatched object at the observer (default 10)");
         options.put("penalty-scale", "distance at which the unmatched penalty halves (default 10)");
         options.put("memory", "weight of the remembered previous scene (needs the memory transform; default 0)");
@@ -107,6 +109,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         }
         return new Settings(config.objectWeights(), matching, space, log.equals("true"),
                 config.doubleOption("distance-weight", 1), config.doubleOption("direction-weight", 1),
+                config.doubleOption("row-weight", 0),
                 config.doubleOption("penalty", 10), config.doubleOption("penalty-scale", 10),
                 config.doubleOption("cycles", defaultProjection), config.doubleOption("memory", 0),
                 config.doubleOption("memory-action", 0));
@@ -117,7 +120,9 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     static final int GROUPS = 10;
     private static final int[] CLASS_OF_GROUP = {0, 1, 1, 1, 2, 3, 4, 5, 6, 7};
 
-    /** A scene as packed numbers: per group (a, b, penalty) triples, nearest first. */
+    private static final int STRIDE = 4;
+
+    /** A scene as packed numbers: per group (a, b, weighted row, penalty) per object, nearest first. */
     public record Encoded(double[][] groups, Encoded previous, int previousAction) {
     }
 
@@ -191,10 +196,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         double[][] packed = new double[GROUPS][];
         for (int group = 0; group < GROUPS; group++) {
             List<double[]> points = groups.get(group);
-            points.sort(Comparator.comparingDouble((double[] point) -> point[3]));
-            packed[group] = new double[points.size() * 3];
+            points.sort(Comparator.comparingDouble((double[] point) -> point[STRIDE]));
+            packed[group] = new double[points.size() * STRIDE];
             for (int i = 0; i < points.size(); i++) {
-                System.arraycopy(points.get(i), 0, packed[group], i * 3, 3);
+                System.arraycopy(points.get(i), 0, packed[group], i * STRIDE, STRIDE);
             }
         }
         boolean remember = withMemory && (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0);
@@ -225,7 +230,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         };
     }
 
-    /** (a, b, penalty, sort key) of one object in the configured space. */
+    /** (a, b, weighted row, penalty, sort key) of one object in the configured space. */
     private double[] place(SeenObject object) {
         double r = object.distance();
         double direction = Double.isNaN(object.direction()) ? 0 : object.direction();
@@ -262,7 +267,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         }
         double l = settings.penaltyScale();
         double penalty = settings.penalty() * l / (l + penaltyDistance);
-        return new double[] {a, b, penalty, r};
+        return new double[] {a, b, settings.rowWeight() * object.cell().row(), penalty, r};
     }
 
     @Override
@@ -302,12 +307,13 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     private double pairCost(double[] x, int i, double[] y, int j) {
         double da = x[i] - y[j];
         double db = x[i + 1] - y[j + 1];
-        return settings.space() == Space.POLAR ? Math.abs(da) + Math.abs(db) : Math.sqrt(da * da + db * db);
+        double rows = Math.abs(x[i + 2] - y[j + 2]);
+        return rows + (settings.space() == Space.POLAR ? Math.abs(da) + Math.abs(db) : Math.sqrt(da * da + db * db));
     }
 
     private double groupDistance(double[] x, double[] y) {
-        int n = x.length / 3;
-        int m = y.length / 3;
+        int n = x.length / STRIDE;
+        int m = y.length / STRIDE;
         if (n == 0 && m == 0) {
             return 0;
         }
@@ -315,17 +321,17 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             double total = 0;
             int paired = Math.min(n, m);
             for (int i = 0; i < paired; i++) {
-                double cost = pairCost(x, i * 3, y, i * 3);
+                double cost = pairCost(x, i * STRIDE, y, i * STRIDE);
                 if (settings.matching() == Matching.OPTIMAL) {
-                    cost = Math.min(cost, x[i * 3 + 2] + y[i * 3 + 2]);
+                    cost = Math.min(cost, x[i * STRIDE + 3] + y[i * STRIDE + 3]);
                 }
                 total += cost;
             }
             for (int i = paired; i < n; i++) {
-                total += x[i * 3 + 2];
+                total += x[i * STRIDE + 3];
             }
             for (int j = paired; j < m; j++) {
-                total += y[j * 3 + 2];
+                total += y[j * STRIDE + 3];
             }
             return total;
         }
@@ -336,11 +342,11 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             for (int j = 0; j < size; j++) {
                 double value;
                 if (i < n && j < m) {
-                    value = Math.min(pairCost(x, i * 3, y, j * 3), x[i * 3 + 2] + y[j * 3 + 2]);
+                    value = Math.min(pairCost(x, i * STRIDE, y, j * STRIDE), x[i * STRIDE + 3] + y[j * STRIDE + 3]);
                 } else if (i < n) {
-                    value = x[i * 3 + 2];
+                    value = x[i * STRIDE + 3];
                 } else if (j < m) {
-                    value = y[j * 3 + 2];
+                    value = y[j * STRIDE + 3];
                 } else {
                     value = 0;
                 }

@@ -12,18 +12,32 @@ import org.scenes.scene.Scene;
 import org.scenes.scene.SceneFile;
 
 /**
- * The thesis' cross-validation: each file in turn is the test set and the next one
- * (cyclically) the training set; figures are averaged over the folds with their standard deviation.
+ * Cross-validation over scene files: each file in turn is the test set. With the thesis'
+ * protocol ({@link Protocol#NEXT}) the next file (cyclically) is the training set; with
+ * {@link Protocol#LEAVE_ONE_OUT} all the other files are. Figures are averaged over the folds
+ * with their standard deviation, and also pooled over all decisions ({@link #pooled()}).
  */
 public final class Folds {
-    private final List<ValidationReport> reports;
+    /** Which files train each fold. */
+    public enum Protocol {
+        NEXT, LEAVE_ONE_OUT
+    }
 
-    private Folds(List<ValidationReport> reports) {
+    private final List<ValidationReport> reports;
+    private final Protocol protocol;
+
+    private Folds(List<ValidationReport> reports, Protocol protocol) {
         this.reports = List.copyOf(reports);
+        this.protocol = protocol;
     }
 
     public static Folds run(List<SceneFile> files, MatchConfig config, PluginRegistry registry, boolean parallel,
                             Runnable progress) {
+        return run(files, config, registry, parallel, progress, Protocol.NEXT);
+    }
+
+    public static Folds run(List<SceneFile> files, MatchConfig config, PluginRegistry registry, boolean parallel,
+                            Runnable progress, Protocol protocol) {
         if (files.size() < 2) {
             throw new IllegalArgumentException("--folds needs at least two scene files, not " + files.size());
         }
@@ -32,15 +46,36 @@ public final class Folds {
             sequences.add(KnowledgeBase.transform(file.scenes(), config.transformFactory(registry).get()));
         }
         List<ValidationReport> reports = new ArrayList<>();
-        for (int i = 0; i < files.size(); i++) {
-            int trainIndex = (i + 1) % files.size();
-            if (!files.get(trainIndex).grid().equals(files.get(i).grid())) {
-                throw new IllegalArgumentException("scene files use different grids; convert them with the same grid");
+        for (SceneFile file : files) {
+            if (!file.grid().equals(files.get(0).grid())) {
+                throw new IllegalArgumentException("scene files use different grids (" + files.get(0).grid().describe()
+                        + " and " + file.grid().describe() + "); convert them with the same grid");
             }
-            KnowledgeBase train = KnowledgeBase.of(files.get(trainIndex).grid(), sequences.get(trainIndex));
+        }
+        for (int i = 0; i < files.size(); i++) {
+            List<Scene> trainScenes = new ArrayList<>();
+            if (protocol == Protocol.NEXT) {
+                trainScenes.addAll(sequences.get((i + 1) % files.size()));
+            } else {
+                for (int j = 0; j < files.size(); j++) {
+                    if (j != i) {
+                        trainScenes.addAll(sequences.get(j));
+                    }
+                }
+            }
+            KnowledgeBase train = KnowledgeBase.of(files.get(0).grid(), trainScenes);
             reports.add(Validator.run(train, sequences.get(i), config, registry, parallel, progress));
         }
-        return new Folds(reports);
+        return new Folds(reports, protocol);
+    }
+
+    public Protocol protocol() {
+        return protocol;
+    }
+
+    /** One report over the decisions of every fold. */
+    public ValidationReport pooled() {
+        return ValidationReport.pooled(reports);
     }
 
     public List<ValidationReport> reports() {
@@ -77,6 +112,7 @@ public final class Folds {
     public Map<String, Object> toMap() {
         Map<String, Object> map = new LinkedHashMap<>();
         map.put("folds", reports.size());
+        map.put("protocol", protocol == Protocol.NEXT ? "next" : "leave-one-out");
         for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : figures().entrySet()) {
             Map<String, Object> entry = new LinkedHashMap<>();
             entry.put("mean", ValidationReport.number(mean(figure.getValue())));
@@ -86,6 +122,7 @@ public final class Folds {
         // the single-run keys, as means, so scripts read --folds output like a plain run
         map.put("accuracy", ValidationReport.number(mean(ValidationReport::accuracy)));
         map.put("macroF1", ValidationReport.number(mean(ValidationReport::macroF1)));
+        map.put("pooled", pooled().toMap());
         map.put("runs", reports.stream().map(ValidationReport::toMap).toList());
         return map;
     }

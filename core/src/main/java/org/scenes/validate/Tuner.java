@@ -12,10 +12,12 @@ import org.scenes.scene.SceneFile;
 
 /**
  * Chooses metric, options, weights, k and selector by cross-validation on training files only
- * ({@link Folds}: each file tested against the next one). The search is a coordinate descent:
- * each dimension's variants are tried on the best configuration so far and the best is kept;
- * the dimensions are swept twice. The score is the mean of "action with direction" accuracy
- * and macro F1, so rare actions (kicks) and turn directions count, not only the common dash.
+ * ({@link Folds}, by default leave-one-file-out: each file tested against all the others, which
+ * is closest to using the whole training game). The search is a coordinate descent: each
+ * dimension's variants are tried on the best configuration so far and the best is kept; the
+ * dimensions are swept until nothing improves (at most {@code sweeps} times). The score, over
+ * the decisions of all folds pooled, is the mean of action accuracy, "action with direction"
+ * accuracy and macro F1, so rare actions (kicks) and turn directions count, not only the common dash.
  */
 public final class Tuner {
     /** One axis of the search: variants of the current configuration. */
@@ -32,7 +34,10 @@ public final class Tuner {
     private final Map<MatchConfig, Double> scores = new HashMap<>();
     private final Map<MatchConfig, Folds> folds = new HashMap<>();
 
-    public Tuner(List<SceneFile> files, PluginRegistry registry, Consumer<String> log) {
+    private final Folds.Protocol protocol;
+
+    public Tuner(List<SceneFile> files, PluginRegistry registry, Folds.Protocol protocol, Consumer<String> log) {
+        this.protocol = protocol;
         if (files.size() < 2) {
             throw new IllegalArgumentException("tuning needs at least two training files for cross-validation");
         }
@@ -41,8 +46,8 @@ public final class Tuner {
         this.log = log == null ? line -> { } : log;
     }
 
-    public static double score(Folds result) {
-        return (result.mean(ValidationReport::directionAccuracy) + result.mean(ValidationReport::macroF1)) / 2;
+    public static double score(ValidationReport pooled) {
+        return (pooled.accuracy() + pooled.directionAccuracy() + pooled.macroF1()) / 3;
     }
 
     public double evaluate(MatchConfig config) {
@@ -51,18 +56,21 @@ public final class Tuner {
             return known;
         }
         config.check(registry);
-        Folds result = Folds.run(files, config, registry, true, null);
-        double score = score(result);
+        Folds result = Folds.run(files, config, registry, true, null, protocol);
+        ValidationReport pooled = result.pooled();
+        double score = score(pooled);
         scores.put(config, score);
         folds.put(config, result);
-        log.accept(String.format("%.4f  acc %.4f  dir %.4f  F1 %.4f  %s", score, result.mean(ValidationReport::accuracy),
-                result.mean(ValidationReport::directionAccuracy), result.mean(ValidationReport::macroF1), config.describe()));
+        log.accept(String.format("%.4f  acc %.4f  dir %.4f  F1 %.4f  kicks %d/%d  %s", score, pooled.accuracy(),
+                pooled.directionAccuracy(), pooled.macroF1(), pooled.truePositives(org.scenes.scene.ActionType.KICK),
+                pooled.support(org.scenes.scene.ActionType.KICK), config.describe()));
         return score;
     }
 
     public Result tune(MatchConfig start, List<Dimension> dimensions, int sweeps) {
-        MatchConfig best = start;
-        double bestScore = evaluate(start);
+        // start from the first variant of the first dimension: the bare start may be slow and is rarely a contender
+        MatchConfig best = dimensions.isEmpty() ? start : dimensions.get(0).variants().get(0).apply(start);
+        double bestScore = evaluate(best);
         for (int sweep = 0; sweep < sweeps; sweep++) {
             boolean improved = false;
             for (Dimension dimension : dimensions) {
@@ -81,9 +89,9 @@ public final class Tuner {
                 break;
             }
         }
-        Folds result = folds.get(best);
+        ValidationReport pooled = folds.get(best).pooled();
         Map<String, Double> figures = new java.util.LinkedHashMap<>();
-        Folds.figures().forEach((name, figure) -> figures.put(name, result.mean(figure)));
+        Folds.figures().forEach((name, figure) -> figures.put(name, figure.applyAsDouble(pooled)));
         return new Result(best, bestScore, figures, scores.size());
     }
 
@@ -93,18 +101,19 @@ public final class Tuner {
         ObjectWeights ballGoal = ObjectWeights.parse("ball=1,goal=1");
         dimensions.add(new Dimension("metric", List.of(
                 c -> c.withMetric("ball-goal", Map.of()).withObjectWeights(ballGoal),
-                c -> c.withMetric("ball-goal", Map.of("angle-weight", "2", "row-weight", "10")).withObjectWeights(ballGoal),
                 c -> c.withMetric("ball-goal", Map.of("angle-weight", "10", "row-weight", "10")).withObjectWeights(ballGoal),
                 c -> c.withMetric("continuous", polar(1, 10)).withObjectWeights(ballGoal),
-                c -> c.withMetric("continuous", polar(10, 3)).withObjectWeights(ballGoal),
-                // the goal counts little by position but much by presence (a kick needs it in sight)
-                c -> c.withMetric("continuous", withPenalty(polar(30, 10), 1000, 10000))
-                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05")))));
+                // the distance ring weighs most (the kickable distance is a row boundary), then the
+                // direction; a missing ball or goal costs more than any position difference
+                c -> c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05")),
+                c -> c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.3")))));
         dimensions.add(new Dimension("memory", List.of(
                 c -> withMemory(c, 0, 0),
-                c -> withMemory(c, 0, 2),
                 c -> withMemory(c, 0, 10),
-                c -> withMemory(c, 0.5, 10),
+                c -> withMemory(c, 0, 100),
+                c -> withMemory(c, 0.5, 100),
                 c -> withMemory(c, 1, 0))));
         dimensions.add(new Dimension("k and selector", List.of(
                 c -> c.withK(1).withSelector("first-valid", Map.of()),
@@ -112,6 +121,12 @@ public final class Tuner {
                 c -> c.withK(5).withSelector("vote", Map.of()),
                 c -> c.withK(3).withSelector("vote", Map.of("params", "average")))));
         return dimensions;
+    }
+
+    private static Map<String, String> withRows(Map<String, String> options, double rowWeight) {
+        Map<String, String> with = new HashMap<>(options);
+        with.put("row-weight", format(rowWeight));
+        return with;
     }
 
     private static Map<String, String> withPenalty(Map<String, String> options, double penalty, double scale) {

@@ -26,9 +26,15 @@ public final class ValidationReport {
     private int turnSignAgree;
     private final double meanMicros;
     private final double p99Micros;
+    private final Action[] truth;
+    private final Action[] predicted;
+    private final long[] nanos;
 
     private ValidationReport(int trainScenes, Action[] truth, Action[] predicted, long[] nanos) {
         this.trainScenes = trainScenes;
+        this.truth = truth;
+        this.predicted = predicted;
+        this.nanos = nanos;
         this.testScenes = truth.length;
         int types = ActionType.values().length;
         confusion = new int[types][types];
@@ -70,6 +76,28 @@ public final class ValidationReport {
 
     public static ValidationReport of(int trainScenes, Action[] truth, Action[] predicted, long[] nanos) {
         return new ValidationReport(trainScenes, truth, predicted, nanos);
+    }
+
+    /**
+     * One report over the decisions of several runs (e.g. the folds of a cross-validation), so
+     * rare actions are counted over all of them rather than averaged from a few per run. Its
+     * training size is the mean of the runs'.
+     */
+    public static ValidationReport pooled(java.util.List<ValidationReport> reports) {
+        int total = reports.stream().mapToInt(r -> r.testScenes).sum();
+        Action[] truth = new Action[total];
+        Action[] predicted = new Action[total];
+        long[] nanos = new long[total];
+        int at = 0;
+        long train = 0;
+        for (ValidationReport report : reports) {
+            System.arraycopy(report.truth, 0, truth, at, report.testScenes);
+            System.arraycopy(report.predicted, 0, predicted, at, report.testScenes);
+            System.arraycopy(report.nanos, 0, nanos, at, report.testScenes);
+            at += report.testScenes;
+            train += report.trainScenes;
+        }
+        return new ValidationReport(reports.isEmpty() ? 0 : (int) (train / reports.size()), truth, predicted, nanos);
     }
 
     private static ActionType typeOf(Action action) {

@@ -4,7 +4,9 @@ import org.scenes.match.EncodedMetric;
 import org.scenes.match.MetricProvider;
 import org.scenes.match.SceneMetric;
 import org.scenes.plugin.PluginConfig;
+import org.scenes.scene.Action;
 import org.scenes.scene.Scene;
+import org.scenes.scene.SeenObject;
 
 /** {@code random}: distances drawn at random, so the nearest scene is a random one: the statistical floor. */
 public final class RandomMetricProvider implements MetricProvider {
@@ -36,7 +38,27 @@ public final class RandomMetricProvider implements MetricProvider {
 
         @Override
         public Long encode(Scene scene) {
-            return mix(seed ^ scene.hashCode());
+            return mix(seed ^ contentHash(scene));
+        }
+
+        /** A hash of what the scene holds that, unlike enum and record hash codes, is the same in every JVM run. */
+        static long contentHash(Scene scene) {
+            long hash = scene.cycle();
+            hash = hash * 31 + scene.observer().team().hashCode();
+            hash = hash * 31 + scene.observer().uniformNumber();
+            for (SeenObject object : scene.objects()) {
+                hash = hash * 31 + object.kind().ordinal();
+                hash = hash * 31 + object.name().hashCode();
+                hash = hash * 31 + object.relation().ordinal();
+                hash = hash * 31 + Double.hashCode(object.distance());
+                hash = hash * 31 + Double.hashCode(object.direction());
+            }
+            for (Action action : scene.actions()) {
+                hash = hash * 31 + action.type().ordinal();
+                hash = hash * 31 + Double.hashCode(action.first());
+                hash = hash * 31 + Double.hashCode(action.second());
+            }
+            return hash;
         }
 
         @Override

@@ -38,4 +38,13 @@ class RandomMetricTest {
         assertTrue(differing > 45);
         assertNotEquals(one.distance(scene(1), scene(2)), one.distance(scene(1), scene(3)));
     }
+
+    @Test
+    void theHashOfAGivenSceneIsFixedAcrossRuns() {
+        // a constant computed once: enum or identity hash codes would change it from run to run
+        Scene scene = new Scene(7, new Observer("T", org.scenes.scene.Side.LEFT, 3), List.of(), List.of(Action.turn(40)));
+        assertEquals(RandomMetricProvider.RandomMetric.contentHash(scene),
+                ((((7L * 31 + "T".hashCode()) * 31 + 3) * 31 + org.scenes.scene.ActionType.TURN.ordinal()) * 31
+                        + Double.hashCode(40)) * 31 + Double.hashCode(Double.NaN));
+    }
 }
