@@ -25,6 +25,7 @@ import org.scenes.scene.SceneFile;
 import org.scenes.scene.SceneFileReader;
 import org.scenes.script.ScriptFailure;
 import org.scenes.script.Sweeps;
+import org.scenes.validate.Folds;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -148,7 +149,9 @@ final class ExperimentCommand implements Callable<Integer> {
         text.append("# ").append(sweep.title().isEmpty() ? file.getFileName() : sweep.title()).append("\n\n");
         text.append("Regenerate with `").append(command).append("` (sweep script, data and protocol: ")
                 .append("docs/scripting.md). Cross-validation over ").append(sweep.data().size())
-                .append(" scene files, each tested against the next one; seed ").append(sweep.seed());
+                .append(" scene files, each tested against ")
+                .append(sweep.protocol() == Folds.Protocol.NEXT ? "the next one" : "all the others")
+                .append("; seed ").append(sweep.seed());
         if (!sweep.transforms().isEmpty()) {
             text.append("; transforms ").append(String.join(", ", sweep.transforms()));
         }

@@ -21,6 +21,7 @@ public final class FoldValidation implements Experiment.Validation {
 
     private final List<SceneFile> files;
     private final List<String> transforms;
+    private final Folds.Protocol protocol;
     private final long seed;
     private final PluginRegistry registry;
     private final boolean parallelQueries;
@@ -35,6 +36,7 @@ public final class FoldValidation implements Experiment.Validation {
                           Runnable query) {
         this.files = List.copyOf(files);
         this.transforms = sweep.transforms();
+        this.protocol = sweep.protocol();
         this.seed = sweep.seed();
         this.registry = registry;
         this.parallelQueries = parallelQueries;
@@ -57,7 +59,8 @@ public final class FoldValidation implements Experiment.Validation {
 
     @Override
     public Map<String, Double> validate(Configuration configuration) {
-        Folds folds = Folds.run(files, matchConfig(configuration, transforms, seed), registry, parallelQueries, query);
+        Folds folds = Folds.run(files, matchConfig(configuration, transforms, seed), registry, parallelQueries, query,
+                protocol);
         return measures(folds);
     }
 

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.scenes.match.ActionWeights;
 import org.scenes.match.ObjectWeights;
+import org.scenes.validate.Folds;
 
 /**
  * A parameter sweep: every combination of metrics x object weights x k x selectors x action
@@ -13,14 +14,15 @@ import org.scenes.match.ObjectWeights;
  *
  * @param title heading of the table and the chart
  * @param data the scene files of the cross-validation, one fold each: each file is tested
- *             against the next one, cyclically (the thesis' protocol, as {@code scenes validate --folds})
+ *             in turn, as {@code scenes validate --folds} does
+ * @param protocol which files train each fold: the next one (the thesis' protocol) or all others
  * @param transforms scene transforms applied in every configuration ({@code memory}), in order
  * @param seed seed of every random choice, the same for each configuration
  * @param layout which axes are rows and columns of the table, and which measures fill it
  */
 public record Sweep(String title, List<String> data, List<String> metrics, List<ObjectWeights> weights, List<Integer> ks,
-                    List<String> selectors, List<ActionWeights> actionWeights, List<String> transforms, long seed,
-                    Layout layout) {
+                    List<String> selectors, List<ActionWeights> actionWeights, Folds.Protocol protocol,
+                    List<String> transforms, long seed, Layout layout) {
 
     /**
      * How the results are pivoted into the table (and chart): rows are combinations of axis
@@ -92,6 +94,7 @@ public record Sweep(String title, List<String> data, List<String> metrics, List<
         selectors = List.copyOf(selectors);
         actionWeights = List.copyOf(actionWeights);
         transforms = List.copyOf(transforms);
+        protocol = protocol == null ? Folds.Protocol.NEXT : protocol;
         require(data.size() >= 2, "a sweep needs at least two scene files, one per fold: data 'a.json.gz', 'b.json.gz'");
         require(!metrics.isEmpty(), "a sweep needs at least one metric: metrics 'cell'");
         require(!weights.isEmpty(), "a sweep needs at least one object weight vector");
@@ -115,7 +118,7 @@ public record Sweep(String title, List<String> data, List<String> metrics, List<
 
     /** The same sweep with another layout. */
     public Sweep withLayout(Layout newLayout) {
-        return new Sweep(title, data, metrics, weights, ks, selectors, actionWeights, transforms, seed, newLayout);
+        return new Sweep(title, data, metrics, weights, ks, selectors, actionWeights, protocol, transforms, seed, newLayout);
     }
 
     private static void require(boolean condition, String message) {

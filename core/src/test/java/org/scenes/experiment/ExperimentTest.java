@@ -25,7 +25,7 @@ class ExperimentTest {
     private static Sweep sweep() {
         Sweep sweep = new Sweep("k and selectors", List.of("a.json", "b.json"), List.of("cell", "ball-goal"),
                 List.of(ObjectWeights.DEFAULT), List.of(1, 3, 5), List.of("first-valid", "vote"),
-                List.of(ActionWeights.DEFAULT), List.of(), 7,
+                List.of(ActionWeights.DEFAULT), null, List.of(), 7,
                 new Sweep.Layout(List.of(Axis.METRIC, Axis.SELECTOR), Axis.K, "accuracy"));
         return sweep;
     }
@@ -118,7 +118,7 @@ class ExperimentTest {
     void everyVaryingAxisMustBeInTheTable() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new Sweep("", List.of("x", "y"),
                 List.of("cell", "vote"), List.of(ObjectWeights.DEFAULT), List.of(1, 2), List.of("first-valid"),
-                List.of(ActionWeights.DEFAULT), List.of(), 1, new Sweep.Layout(List.of(Axis.SELECTOR), Axis.K, "accuracy")));
+                List.of(ActionWeights.DEFAULT), null, List.of(), 1, new Sweep.Layout(List.of(Axis.SELECTOR), Axis.K, "accuracy")));
         assertEquals("the table's rows are selector and its columns k, but metric takes several values too: add it to the rows",
                 e.getMessage());
     }

@@ -8,6 +8,7 @@ import org.scenes.experiment.Axis;
 import org.scenes.experiment.Sweep;
 import org.scenes.match.ActionWeights;
 import org.scenes.match.ObjectWeights;
+import org.scenes.validate.Folds;
 
 /**
  * Base class of sweep scripts ({@code scenes experiment SWEEP.groovy}): the script's statements
@@ -23,6 +24,7 @@ public abstract class SweepScript extends Script {
     private final List<String> selectors = new ArrayList<>();
     private final List<ActionWeights> actionWeights = new ArrayList<>();
     private final List<String> transforms = new ArrayList<>();
+    private Folds.Protocol protocol = Folds.Protocol.NEXT;
     private long seed = 1;
     private List<Axis> rows = List.of();
     private Axis columns = Axis.K;
@@ -40,6 +42,18 @@ public abstract class SweepScript extends Script {
      */
     public void data(String... paths) {
         data.addAll(List.of(paths));
+    }
+
+    /**
+     * Which files train each fold: {@code 'next'} (the thesis' protocol, the default) or
+     * {@code 'leave-one-out'} (all the other files), as {@code scenes validate --protocol}.
+     */
+    public void protocol(String name) {
+        protocol = switch (name) {
+            case "next" -> Folds.Protocol.NEXT;
+            case "leave-one-out" -> Folds.Protocol.LEAVE_ONE_OUT;
+            default -> throw new IllegalArgumentException("protocol must be 'next' or 'leave-one-out', not '" + name + "'");
+        };
     }
 
     /** Scene transforms applied in every configuration, e.g. {@code transforms 'memory'}. */
@@ -134,7 +148,7 @@ public abstract class SweepScript extends Script {
         }
         Sweep sweep = new Sweep(title, data, metrics, weights.isEmpty() ? List.of(ObjectWeights.DEFAULT) : weights,
                 ks.isEmpty() ? List.of(1) : ks, selectors,
-                actionWeights.isEmpty() ? List.of(ActionWeights.DEFAULT) : actionWeights, transforms, seed,
+                actionWeights.isEmpty() ? List.of(ActionWeights.DEFAULT) : actionWeights, protocol, transforms, seed,
                 new Sweep.Layout(allRows, columns, measures));
         return sweep.withLayout(Sweep.Layout.of(rows, columns, measures, sweep));
     }

@@ -37,6 +37,7 @@ class SweepScriptTest {
                 k 5
                 selectors 'first-valid', 'vote'
                 transforms 'memory'
+                protocol 'leave-one-out'
                 seed 42
                 table columns: 'selector', measure: 'accuracy'
                 """);
@@ -45,6 +46,7 @@ class SweepScriptTest {
         assertEquals(List.of("scenes/a.json.gz", "scenes/b.json.gz"), sweep.data());
         assertEquals(List.of(1, 2, 3, 5), sweep.ks());
         assertEquals(List.of("memory"), sweep.transforms());
+        assertEquals(org.scenes.validate.Folds.Protocol.LEAVE_ONE_OUT, sweep.protocol());
         assertEquals(42, sweep.seed());
         // Rows default to every other axis that varies.
         assertEquals(new Sweep.Layout(List.of(Axis.METRIC, Axis.WEIGHTS, Axis.K), Axis.SELECTOR, "accuracy"), sweep.layout());
@@ -71,6 +73,7 @@ class SweepScriptTest {
                 sweep.weights());
         assertEquals(List.of(1), sweep.ks());
         assertEquals(List.of(), sweep.transforms());
+        assertEquals(org.scenes.validate.Folds.Protocol.NEXT, sweep.protocol());
         assertEquals(new Sweep.Layout(List.of(Axis.WEIGHTS), Axis.K, "accuracy"), sweep.layout());
     }
 
