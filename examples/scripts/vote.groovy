@@ -1,4 +1,5 @@
-// A weighted vote among the k nearest scenes, written as a selector script:
+// A weighted vote among the k nearest scenes, written as a selector script; it chooses as the
+// built-in `vote` selector does (with its default params=copy):
 //   scenes validate --selector script:examples/scripts/vote.groovy ...
 // Each neighbour votes for the type of its primary action with that type's action weight. The
 // type with the most votes wins and the nearest neighbour of that type gives the action (its

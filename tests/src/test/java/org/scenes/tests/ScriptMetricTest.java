@@ -28,7 +28,7 @@ import org.scenes.validate.ValidationReport;
 import org.scenes.validate.Validator;
 
 /**
- * The shipped ball-goal script against the built-in Java ball-goal on real Krislet scenes:
+ * The shipped scripts against the built-in Java plugins they imitate, on real Krislet scenes:
  * same distances, same validation; and a failing script located by query and line.
  */
 class ScriptMetricTest {
@@ -82,6 +82,21 @@ class ScriptMetricTest {
         assertEquals(expected.accuracy(), actual.accuracy());
         assertEquals(expected.macroF1(), actual.macroF1());
         assertTrue(expected.accuracy() > 0.2, "accuracy " + expected.accuracy());
+    }
+
+    @Test
+    void voteScriptSelectsLikeTheBuiltInVote() {
+        KnowledgeBase knowledge = KnowledgeBase.of(Grid.DEFAULT, train);
+        List<Scene> queries = test.subList(0, 1500);
+        String vote = "script:" + Path.of(System.getProperty("scenes.examples", "../examples/scripts"), "vote.groovy");
+        for (String actionWeights : new String[] {"1/1/1/1/1/1/1", "1/1/3/0/1/1/1"}) {
+            MatchConfig java = MatchConfig.DEFAULT.withMetric("ball-goal", Map.of()).withK(7).withSelector("vote", Map.of())
+                    .withActionWeights(org.scenes.match.ActionWeights.parse(actionWeights));
+            ValidationReport expected = Validator.run(knowledge, queries, java, REGISTRY, true, null);
+            ValidationReport actual = Validator.run(knowledge, queries, java.withSelector(vote, Map.of()), REGISTRY, true, null);
+            assertEquals(expected.accuracy(), actual.accuracy(), actionWeights);
+            assertEquals(expected.directionAccuracy(), actual.directionAccuracy(), actionWeights);
+        }
     }
 
     @Test
