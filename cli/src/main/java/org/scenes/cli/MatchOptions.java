@@ -13,8 +13,8 @@ import picocli.CommandLine.Option;
 /** How scenes are matched and an action chosen: the options validate, tune and play share. */
 final class MatchOptions {
     @Option(names = "--config", paramLabel = "CONFIG.json",
-            description = "Matching configuration written by 'scenes tune'; other matching options given override it.")
-    Path config;
+            description = "Matching configuration written by 'scenes tune' (repeatable: one run each); other matching options given override it.")
+    List<Path> configFiles = new ArrayList<>();
 
     @Option(names = "--metric", paramLabel = "NAME[,NAME...]", split = ",",
             description = "Metric(s) (see 'scenes plugins'); several give one run each. Default: continuous.")
@@ -61,7 +61,17 @@ final class MatchOptions {
 
     /** The configurations to run: the config file (or defaults) with the given options, one per metric and k. */
     List<MatchConfig> configs() {
-        MatchConfig base = config == null ? MatchConfig.DEFAULT : ConfigFiles.read(config);
+        List<MatchConfig> configs = new ArrayList<>();
+        if (configFiles.isEmpty()) {
+            configs.addAll(configs(MatchConfig.DEFAULT));
+        }
+        for (Path file : configFiles) {
+            configs.addAll(configs(ConfigFiles.read(file)));
+        }
+        return configs;
+    }
+
+    private List<MatchConfig> configs(MatchConfig base) {
         try {
             if (objectWeights != null) {
                 base = base.withObjectWeights(ObjectWeights.parse(objectWeights));

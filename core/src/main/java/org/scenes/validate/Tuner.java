@@ -16,8 +16,9 @@ import org.scenes.scene.SceneFile;
  * is closest to using the whole training game). The search is a coordinate descent: each
  * dimension's variants are tried on the best configuration so far and the best is kept; the
  * dimensions are swept until nothing improves (at most {@code sweeps} times). The score, over
- * the decisions of all folds pooled, is the mean of action accuracy, "action with direction"
- * accuracy and macro F1, so rare actions (kicks) and turn directions count, not only the common dash.
+ * the decisions of all folds pooled, is by default the mean of action accuracy, "action with
+ * direction" accuracy and macro F1, so rare actions (kicks) and turn directions count, not only
+ * the common dash; {@link Objective} offers each of them alone.
  */
 public final class Tuner {
     /** One axis of the search: variants of the current configuration. */
@@ -35,9 +36,35 @@ public final class Tuner {
     private final Map<MatchConfig, Folds> folds = new HashMap<>();
 
     private final Folds.Protocol protocol;
+    private final java.util.function.ToDoubleFunction<ValidationReport> objective;
+
+    /** What the search maximises, over the decisions of all folds pooled. */
+    public enum Objective {
+        /** the mean of accuracy, action-with-direction accuracy and macro F1 (default) */
+        MEAN,
+        ACCURACY,
+        /** action-with-direction accuracy */
+        DIRECTION,
+        MACRO_F1;
+
+        double of(ValidationReport pooled) {
+            return switch (this) {
+                case MEAN -> score(pooled);
+                case ACCURACY -> pooled.accuracy();
+                case DIRECTION -> pooled.directionAccuracy();
+                case MACRO_F1 -> pooled.macroF1();
+            };
+        }
+    }
 
     public Tuner(List<SceneFile> files, PluginRegistry registry, Folds.Protocol protocol, Consumer<String> log) {
+        this(files, registry, protocol, Objective.MEAN, log);
+    }
+
+    public Tuner(List<SceneFile> files, PluginRegistry registry, Folds.Protocol protocol, Objective objective,
+                 Consumer<String> log) {
         this.protocol = protocol;
+        this.objective = objective::of;
         if (files.size() < 2) {
             throw new IllegalArgumentException("tuning needs at least two training files for cross-validation");
         }
@@ -58,7 +85,7 @@ public final class Tuner {
         config.check(registry);
         Folds result = Folds.run(files, config, registry, true, null, protocol);
         ValidationReport pooled = result.pooled();
-        double score = score(pooled);
+        double score = objective.applyAsDouble(pooled);
         scores.put(config, score);
         folds.put(config, result);
         log.accept(String.format("%.4f  acc %.4f  dir %.4f  F1 %.4f  kicks %d/%d  %s", score, pooled.accuracy(),
@@ -100,15 +127,15 @@ public final class Tuner {
         List<Dimension> dimensions = new ArrayList<>();
         ObjectWeights ballGoal = ObjectWeights.parse("ball=1,goal=1");
         dimensions.add(new Dimension("metric", List.of(
-                c -> c.withMetric("ball-goal", Map.of()).withObjectWeights(ballGoal),
-                c -> c.withMetric("ball-goal", Map.of("angle-weight", "10", "row-weight", "10")).withObjectWeights(ballGoal),
-                c -> c.withMetric("continuous", polar(1, 10)).withObjectWeights(ballGoal),
+                c -> keepMemory(c, c.withMetric("ball-goal", Map.of()).withObjectWeights(ballGoal)),
+                c -> keepMemory(c, c.withMetric("ball-goal", Map.of("angle-weight", "10", "row-weight", "10")).withObjectWeights(ballGoal)),
+                c -> keepMemory(c, c.withMetric("continuous", polar(1, 10)).withObjectWeights(ballGoal)),
                 // the distance ring weighs most (the kickable distance is a row boundary), then the
                 // direction; a missing ball or goal costs more than any position difference
-                c -> c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
-                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05")),
-                c -> c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
-                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.3")))));
+                c -> keepMemory(c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05"))),
+                c -> keepMemory(c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.3"))))));
         dimensions.add(new Dimension("memory", List.of(
                 c -> withMemory(c, 0, 0),
                 c -> withMemory(c, 0, 10),
@@ -121,6 +148,12 @@ public final class Tuner {
                 c -> c.withK(5).withSelector("vote", Map.of()),
                 c -> c.withK(3).withSelector("vote", Map.of("params", "average")))));
         return dimensions;
+    }
+
+    /** A metric variant keeps the memory settings already chosen, so the dimensions stay independent. */
+    static MatchConfig keepMemory(MatchConfig old, MatchConfig changed) {
+        return withMemory(changed, Double.parseDouble(old.metricOptions().getOrDefault("memory", "0")),
+                Double.parseDouble(old.metricOptions().getOrDefault("memory-action", "0")));
     }
 
     private static Map<String, String> withRows(Map<String, String> options, double rowWeight) {
