@@ -45,7 +45,11 @@ class ContinuousMetricTest {
         java.util.Map<String, String> gentle = new java.util.HashMap<>(options);
         gentle.put("penalty", "1");
         assertTrue(REGISTRY.metric("continuous", PluginConfig.DEFAULT.withOptions(gentle)).isTrueMetric());
-        assertEquals(Math.log(11) - Math.log(3) + 10 * 5, metric.distance(ball(2, 0), ball(10, 5)), 1e-9);
+        // optimal pairing never pays more for a pair than leaving both unmatched: 10*10/12 + 10*10/20
+        assertEquals(100 / 12.0 + 5, metric.distance(ball(2, 0), ball(10, 5)), 1e-9);
+        SceneMetric greedy = REGISTRY.metric("continuous", PluginConfig.DEFAULT.withOptions(
+                Map.of("space", "polar", "log-distance", "true", "direction-weight", "10")));
+        assertEquals(Math.log(11) - Math.log(3) + 10 * 5, greedy.distance(ball(2, 0), ball(10, 5)), 1e-9);
     }
 
     @Test
