@@ -32,7 +32,7 @@ class ProjectionMetricTest {
         SceneMetric back = registry.metric("projection", PluginConfig.DEFAULT.withOptions(Map.of("cycles", "-2", "space", "polar")));
         // turning 2 degrees per cycle: two cycles ago it was at 6 degrees
         assertEquals(0, back.distance(ball(5, 10, 0, 2), ball(5, 6, 0, 0)), 1e-12);
-        SceneMetric plain = registry.metric("continuous", PluginConfig.DEFAULT.withOptions(Map.of("space", "polar")));
+        SceneMetric plain = registry.metric("projection", PluginConfig.DEFAULT.withOptions(Map.of("cycles", "0", "space", "polar")));
         assertEquals(3, plain.distance(ball(8, 10, -1, 0), ball(5, 10, 0, 0)), 1e-12);
     }
 }
