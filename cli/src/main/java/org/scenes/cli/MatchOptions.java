@@ -16,11 +16,11 @@ final class MatchOptions {
             description = "Matching configuration written by 'scenes tune' (repeatable: one run each); other matching options given override it.")
     List<Path> configFiles = new ArrayList<>();
 
-    @Option(names = "--metric", paramLabel = "NAME[,NAME...]", split = ",",
+    @Option(names = "--metric", paramLabel = "NAME", split = ",",
             description = "Metric(s) (see 'scenes plugins'); several give one run each. Default: continuous.")
     List<String> metrics;
 
-    @Option(names = "--k", paramLabel = "N[,N...]", split = ",",
+    @Option(names = "--k", paramLabel = "N", split = ",",
             description = "Neighbours to consider; several give one run each. Default: 1.")
     List<Integer> ks;
 

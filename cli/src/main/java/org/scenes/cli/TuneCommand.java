@@ -20,8 +20,8 @@ import picocli.CommandLine.Spec;
 
 /** {@code scenes tune}: choose the matching configuration by cross-validation on training files only. */
 @Command(name = "tune", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Search metric, object weights, memory, k and selector by cross-validation on the training files",
-                "(each file tested against the next one) and write the best configuration for --config."})
+        description = {"Search metric, object weights, memory, k and selector by cross-validation on the training files only",
+                "(by default each file tested against all the others) and write the best configuration for --config."})
 final class TuneCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;

@@ -132,6 +132,25 @@ class ValidateCommandTest {
     }
 
     @Test
+    void realKrisletLogsAreImitatedFarAboveChance() throws Exception {
+        Path data = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "krislet");
+        Path train = dir.resolve("train.json.gz");
+        Path test = dir.resolve("test.json.gz");
+        assertEquals(0, run("convert", data.resolve("classic-game1/Carleton_1.lsf.gz"), "-o", train), err.toString());
+        assertEquals(0, run("convert", data.resolve("classic-game2/Carleton_1.lsf.gz"), "-o", test), err.toString());
+        out.getBuffer().setLength(0);
+        assertEquals(0, run("validate", "--train", train, "--self", "--metric", "continuous", "--json"), err.toString());
+        assertEquals(1.0, json().get("accuracy").asDouble(), "each scene finds itself");
+        out.getBuffer().setLength(0);
+        assertEquals(0, run("validate", "--train", train, "--test", test, "--metric", "random,ball-goal", "--json"), err.toString());
+        JsonNode runs = json().get("configurations");
+        double random = runs.get(0).get("accuracy").asDouble();
+        double ballGoal = runs.get(1).get("accuracy").asDouble();
+        assertTrue(random < 0.75, "random: " + random);
+        assertTrue(ballGoal > 0.95, "ball-goal: " + ballGoal);
+    }
+
+    @Test
     void badUsageIsReportedClearly() throws Exception {
         Path a = player("a", 1, 20);
         assertEquals(ExitCodes.USAGE, run("validate", "--train", a));

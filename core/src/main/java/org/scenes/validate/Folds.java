@@ -113,15 +113,17 @@ public final class Folds {
         Map<String, Object> map = new LinkedHashMap<>();
         map.put("folds", reports.size());
         map.put("protocol", protocol == Protocol.NEXT ? "next" : "leave-one-out");
+        // the single-run keys, as means over the folds, so scripts read --folds output like a plain run
+        map.put("accuracy", ValidationReport.number(mean(ValidationReport::accuracy)));
+        map.put("macroF1", ValidationReport.number(mean(ValidationReport::macroF1)));
+        Map<String, Object> all = new LinkedHashMap<>();
         for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : figures().entrySet()) {
             Map<String, Object> entry = new LinkedHashMap<>();
             entry.put("mean", ValidationReport.number(mean(figure.getValue())));
             entry.put("std", ValidationReport.number(std(figure.getValue())));
-            map.put(figure.getKey(), entry);
+            all.put(figure.getKey(), entry);
         }
-        // the single-run keys, as means, so scripts read --folds output like a plain run
-        map.put("accuracy", ValidationReport.number(mean(ValidationReport::accuracy)));
-        map.put("macroF1", ValidationReport.number(mean(ValidationReport::macroF1)));
+        map.put("figures", all);
         map.put("pooled", pooled().toMap());
         map.put("runs", reports.stream().map(ValidationReport::toMap).toList());
         return map;
