@@ -1,0 +1,67 @@
+package org.scenes.agent.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scenes.convert.ConversionReport;
+import org.scenes.convert.SceneConverter;
+import org.scenes.scene.Action;
+import org.scenes.scene.ActionType;
+import org.scenes.scene.Grid;
+import org.scenes.scene.Relation;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SeenObject;
+
+/** The simulator's logs go through core's converter unchanged, like recorded games. */
+class ConvertSimulatedGameTest {
+    @TempDir
+    Path directory;
+
+    @Test
+    void simulatedLogsConvertWithoutMalformedLines() throws IOException {
+        int cycles = 2000;
+        GameResult game = new Simulator(SimulatorTest.krisletGame(5, cycles, 11, directory)).run(t -> { });
+        SceneConverter converter = new SceneConverter(Grid.DEFAULT, true, line -> { });
+        Map<ActionType, Integer> actions = new EnumMap<>(ActionType.class);
+        List<Scene> scenes = new ArrayList<>();
+        ConversionReport total = new ConversionReport();
+        for (Path log : game.logs()) {
+            total.add(converter.convert(log, scene -> {
+                scenes.add(scene);
+                for (Action action : scene.actions()) {
+                    actions.merge(action.type(), 1, Integer::sum);
+                }
+            }));
+        }
+        assertEquals(0, total.malformed());
+        assertEquals(Map.of(), total.unknown());
+        // Krislet answers every see, and sees come 2 in 3 cycles: roughly 2/3 * cycles scenes per
+        // player once repeated sees in pauses collapse.
+        long perPlayer = total.scenes() / game.logs().size();
+        assertTrue(perPlayer > cycles / 2 && perPlayer < cycles, "scenes per player " + perPlayer);
+        assertTrue(actions.getOrDefault(ActionType.DASH, 0) > 1000, actions.toString());
+        assertTrue(actions.getOrDefault(ActionType.TURN, 0) > 1000, actions.toString());
+        assertTrue(actions.getOrDefault(ActionType.KICK, 0) > 10, actions.toString());
+        // Each player's opening move comes before its first see, so it is counted but not kept.
+        assertEquals(game.logs().size(), total.commands(org.scenes.protocol.CommandType.MOVE));
+        assertEquals(0, actions.getOrDefault(ActionType.MOVE, 0));
+        // Teammates and opponents are told apart by the converter from the quoted team names.
+        boolean teammate = false;
+        boolean opponent = false;
+        for (Scene scene : scenes) {
+            for (SeenObject object : scene.objects()) {
+                teammate |= object.relation() == Relation.TEAMMATE;
+                opponent |= object.relation() == Relation.OPPONENT && object.kind() == org.scenes.scene.ObjectKind.PLAYER;
+            }
+        }
+        assertTrue(teammate && opponent);
+    }
+}
