@@ -7,7 +7,8 @@ import org.scenes.agent.BrainFactory;
 /** The teacher agents by name, as {@code scenes simulate --teams NAME:N,...} names them. */
 public final class Teachers {
     private static final Map<String, BrainFactory> BY_NAME = new TreeMap<>(Map.of(
-            "krislet", (team, random) -> new Krislet(random)));
+            "krislet", (team, random) -> new Krislet(random),
+            "statebased", (team, random) -> new StateBasedKrislet(random)));
 
     private Teachers() {
     }
