@@ -82,21 +82,26 @@ final class SimulateCommand implements Callable<Integer> {
             throw new UsageException(e.getMessage());
         }
         long started = System.nanoTime();
-        GameResult result;
+        GameResult result = play(setup);
+        printSummary(spec.commandLine().getOut(), setup, result, (System.nanoTime() - started) / 1e9);
+        return ExitCodes.OK;
+    }
+
+    /** Runs the game with a progress bar in game cycles on a terminal, silent when piped. */
+    static GameResult play(GameSetup setup) throws IOException {
         try (ProgressBar bar = System.console() == null ? null
-                : new ProgressBarBuilder().setTaskName("Simulating").setInitialMax(cycles).setUnit(" cycles", 1)
-                        .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build()) {
-            result = new Simulator(setup).run(time -> {
+                : new ProgressBarBuilder().setTaskName("Simulating").setInitialMax(setup.cycles())
+                        .setUnit(" cycles", 1).setConsumer(new ConsoleProgressBarConsumer(System.err))
+                        .clearDisplayOnFinish().build()) {
+            return new Simulator(setup).run(time -> {
                 if (bar != null) {
                     bar.stepTo(time);
                 }
             });
         }
-        printSummary(spec.commandLine().getOut(), setup, result, (System.nanoTime() - started) / 1e9);
-        return ExitCodes.OK;
     }
 
-    private static GameSetup.Team team(String spec, String name) {
+    static GameSetup.Team team(String spec, String name) {
         String[] parts = spec.trim().split(":", -1);
         if (parts.length != 2) {
             throw new UsageException("--teams: '" + spec + "' is not TEACHER:N, e.g. krislet:5");
@@ -118,7 +123,7 @@ final class SimulateCommand implements Callable<Integer> {
         }
     }
 
-    private static void printSummary(PrintWriter out, GameSetup setup, GameResult result, double seconds) {
+    static void printSummary(PrintWriter out, GameSetup setup, GameResult result, double seconds) {
         String left = setup.left().name();
         String right = setup.right().name();
         out.printf(Locale.ROOT, "%-14s %s %d : %d %s%n", "Score", left, result.scoreLeft(), result.scoreRight(), right);
