@@ -1,5 +1,6 @@
 package org.scenes.agent.sim;
 
+import java.util.List;
 import org.scenes.scene.Side;
 
 /**
@@ -89,14 +90,51 @@ final class Physics {
             player.x = clamp(player.x, -limitX(), limitX());
             player.y = clamp(player.y, -limitY(), limitY());
         }
-        for (Player player : world.players) {
+        List<Player> players = world.players;
+        for (int i = 0; i < players.size(); i++) {
+            for (int j = i + 1; j < players.size(); j++) {
+                separate(players.get(i), players.get(j));
+            }
+        }
+        for (Player player : players) {
             collide(player, ball);
         }
     }
 
+    /** Two overlapping players are pushed apart, each by half the overlap, and both bounce. */
+    private void separate(Player a, Player b) {
+        double minimum = 2 * p.playerSize();
+        double dx = b.x - a.x;
+        double dy = b.y - a.y;
+        double distance = Math.hypot(dx, dy);
+        if (distance >= minimum) {
+            return;
+        }
+        if (distance < 1e-9) {
+            // Exactly on top of each other: part them along the first one's body direction.
+            dx = Math.cos(Math.toRadians(a.body));
+            dy = Math.sin(Math.toRadians(a.body));
+            distance = 1;
+            a.x -= dx * minimum / 2;
+            a.y -= dy * minimum / 2;
+            b.x = a.x + dx * minimum;
+            b.y = a.y + dy * minimum;
+        } else {
+            double push = (minimum - distance) / 2 / distance;
+            a.x -= dx * push;
+            a.y -= dy * push;
+            b.x += dx * push;
+            b.y += dy * push;
+        }
+        a.vx *= -0.1;
+        a.vy *= -0.1;
+        b.vx *= -0.1;
+        b.vy *= -0.1;
+    }
+
     /**
      * A ball overlapping a player is put back at the player's edge and both bounce, as on the
-     * server (velocities times -0.1); collisions between players are not modelled.
+     * server (velocities times -0.1).
      */
     private void collide(Player player, Ball ball) {
         double minimum = p.playerSize() + p.ballSize();

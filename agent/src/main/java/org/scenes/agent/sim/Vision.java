@@ -8,11 +8,16 @@ import org.scenes.scene.Side;
  * {@code sense_body}.
  */
 final class Vision {
-    /** Uniform numbers are read up to halfway between far and too far; teams likewise. */
-    static final double UNUM_VISIBLE = (ServerParams.UNUM_FAR_LENGTH + ServerParams.UNUM_TOO_FAR_LENGTH) / 2;
+    /**
+     * The server drops a seen player's team with probability rising from 0 at team_far_length to
+     * 1 at team_too_far_length, and its uniform number (with the changes and facing that come with
+     * it) likewise between unum_far_length and unum_too_far_length; the ball's and flags' changes
+     * fade over the same range as the number. This simulator uses the halfway points instead of
+     * dice, on the quantised distance as the server does.
+     */
     static final double TEAM_VISIBLE = (ServerParams.TEAM_FAR_LENGTH + ServerParams.TEAM_TOO_FAR_LENGTH) / 2;
-    /** Distance and direction changes (and a player's facing) are sent up to this distance. */
-    static final double CHANGES_VISIBLE = ServerParams.UNUM_FAR_LENGTH;
+    static final double UNUM_VISIBLE = (ServerParams.UNUM_FAR_LENGTH + ServerParams.UNUM_TOO_FAR_LENGTH) / 2;
+    static final double CHANGES_VISIBLE = UNUM_VISIBLE;
 
     private final World world;
     private final ServerParams p;
@@ -55,7 +60,7 @@ final class Vision {
         double direction = Numbers.normalize(Math.toDegrees(Math.atan2(dy, dx)) - head);
         double seenDistance = Numbers.seenDistance(distance, quantizeStep);
         String seenDirection = Numbers.format(Math.rint(direction), 0);
-        if (Math.abs(direction) > halfAngle) {
+        if (Math.abs(direction) >= halfAngle) {
             if (distance <= p.visibleDistance()) {
                 text.append(" ((").append(behindName).append(") ").append(Numbers.format(seenDistance, 1))
                         .append(' ').append(seenDirection).append(')');
@@ -65,24 +70,25 @@ final class Vision {
         text.append(" ((");
         if (other == null) {
             text.append(name);
-        } else if (distance <= TEAM_VISIBLE) {
+        } else if (seenDistance < TEAM_VISIBLE) {
             text.append("p \"").append(other.team).append('"');
-            if (distance <= UNUM_VISIBLE) {
+            if (seenDistance < UNUM_VISIBLE) {
                 text.append(' ').append(other.unum);
             }
         } else {
             text.append('p');
         }
         text.append(") ").append(Numbers.format(seenDistance, 1)).append(' ').append(seenDirection);
-        if (distance <= CHANGES_VISIBLE && distance > 0) {
-            // Relative velocity split along and across the line of sight, as the server does.
+        if (seenDistance < CHANGES_VISIBLE && distance > 0) {
+            // Relative velocity split along and across the line of sight; the radial part is
+            // quantised relative to the distance and scaled by the seen distance, as the server does.
             double rvx = vx - self.vx;
             double rvy = vy - self.vy;
             double ex = dx / distance;
             double ey = dy / distance;
-            double distanceChange = (rvx * ex + rvy * ey) * seenDistance / distance;
+            double distanceChange = seenDistance * Numbers.quantize((rvx * ex + rvy * ey) / distance, 0.02);
             double directionChange = Math.toDegrees((rvy * ex - rvx * ey) / distance);
-            text.append(' ').append(Numbers.format(Numbers.quantize(distanceChange, 0.02), 2))
+            text.append(' ').append(Numbers.format(distanceChange, 4))
                     .append(' ').append(Numbers.format(Numbers.quantize(directionChange, 0.1), 1));
             if (other != null) {
                 text.append(' ').append(Numbers.format(Math.rint(Numbers.normalize(other.body - head)), 0))
@@ -93,40 +99,42 @@ final class Vision {
     }
 
     /**
-     * The line the view direction meets first: its distance along the view direction and the
-     * angle between the line and the view direction (90 when facing it squarely).
+     * Lines as the server sends them: a line is seen when the view direction points towards it
+     * (less than 90 degrees from its outward normal) and meets it within its length; from inside
+     * the pitch only the first such line in the order left, right, top, bottom, from outside up
+     * to two. Distance along the view direction (landmark quantisation); direction the angle
+     * between the view direction and the line, 90 when facing it squarely.
      */
     private void appendLine(StringBuilder text, Player self, double head) {
-        double radians = Math.toRadians(head);
-        double cos = Math.cos(radians);
-        double sin = Math.sin(radians);
-        Landmarks.Line nearest = null;
-        double nearestDistance = Double.POSITIVE_INFINITY;
+        boolean inside = Math.abs(self.x) < ServerParams.PITCH_HALF_LENGTH
+                && Math.abs(self.y) < ServerParams.PITCH_HALF_WIDTH;
+        int wanted = inside ? 1 : 2;
         for (Landmarks.Line line : Landmarks.LINES) {
-            double along = line.vertical() ? cos : sin;
-            if (Math.abs(along) < 1e-9) {
+            if (wanted == 0) {
+                return;
+            }
+            double position = line.vertical() ? self.x : self.y;
+            double toLine = line.at() - position;
+            // The normal points from the player's side of the line across it.
+            double normal = line.vertical() ? (toLine >= 0 ? 0 : 180) : (toLine >= 0 ? 90 : -90);
+            double sight = Numbers.normalize(normal - head);
+            if (Math.abs(sight) >= 90) {
                 continue;
             }
-            double t = (line.at() - (line.vertical() ? self.x : self.y)) / along;
-            double across = line.vertical() ? self.y + t * sin : self.x + t * cos;
-            double halfExtent = line.vertical() ? ServerParams.PITCH_HALF_WIDTH : ServerParams.PITCH_HALF_LENGTH;
-            if (t > 0 && Math.abs(across) <= halfExtent + 1e-9 && t < nearestDistance) {
-                nearest = line;
-                nearestDistance = t;
+            double radians = Math.toRadians(head);
+            double along = line.vertical() ? Math.cos(radians) : Math.sin(radians);
+            double distance = toLine / along;
+            double across = line.vertical() ? self.y + distance * Math.sin(radians) : self.x + distance * Math.cos(radians);
+            double halfLength = line.vertical() ? ServerParams.PITCH_HALF_WIDTH : ServerParams.PITCH_HALF_LENGTH;
+            if (Math.abs(across) > halfLength) {
+                continue;
             }
+            double direction = sight > 0 ? sight - 90 : sight + 90;
+            text.append(" ((").append(line.name()).append(") ")
+                    .append(Numbers.format(Numbers.seenDistance(Math.abs(distance), p.quantizeStepL()), 1))
+                    .append(' ').append(Numbers.format(Math.rint(direction), 0)).append(')');
+            wanted--;
         }
-        if (nearest == null) {
-            return;
-        }
-        double angle = Numbers.normalize((nearest.vertical() ? 90 : 0) - head);
-        if (angle > 90) {
-            angle -= 180;
-        } else if (angle <= -90) {
-            angle += 180;
-        }
-        text.append(" ((").append(nearest.name()).append(") ")
-                .append(Numbers.format(Numbers.seenDistance(nearestDistance, p.quantizeStepL()), 1)).append(' ')
-                .append(Numbers.format(Math.rint(angle), 0)).append(')');
     }
 
     /** The v9 {@code sense_body}, with the extra groups recent servers add in v9 too. */

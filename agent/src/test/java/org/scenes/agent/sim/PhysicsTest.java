@@ -84,6 +84,24 @@ class PhysicsTest {
     }
 
     @Test
+    void overlappingPlayersArePushedApart() {
+        Player other = world.add("Amber", Side.RIGHT, 2);
+        other.place(0.2, 0);
+        physics.step();
+        assertEquals(0.6, player.distanceTo(other), 1e-9);
+        assertEquals(0.1, (player.x + other.x) / 2, 1e-9); // both moved by half the overlap
+    }
+
+    @Test
+    void aBallInsideAPlayerBouncesOut() {
+        world.ball.place(0.1, 0);
+        world.ball.vx = -0.05; // rolling into the player
+        physics.step();
+        assertEquals(0.385, player.distanceTo(world.ball), 1e-9);
+        assertTrue(world.ball.vx > 0, "bounced back");
+    }
+
+    @Test
     void staminaRecoversEachCycle() {
         player.stamina = 7000;
         physics.recover(player);

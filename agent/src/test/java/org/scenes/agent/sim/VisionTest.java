@@ -78,7 +78,11 @@ class VisionTest {
         world.ball.place(10, 0);
         world.ball.vx = -1;
         VisualObject near = find(see(), "b");
-        assertEquals(-1, near.distanceChange(), 0.03);
+        // seen distance 10 * rint(-1 / 10 / 0.02) * 0.02
+        assertEquals(-1, near.distanceChange(), 1e-9);
+        assertEquals(0, near.directionChange(), 1e-9);
+        world.ball.place(25, 0); // 24.5 seen: changes still sent below the halfway point 30
+        assertTrue(!Double.isNaN(find(see(), "b").distanceChange()));
     }
 
     @Test
@@ -108,6 +112,38 @@ class VisionTest {
         VisualObject line = find(see(), "l r");
         assertEquals(90, line.direction());
         assertEquals(102.5, line.distance(), 1e-9); // 102.3 m, quantised like a landmark
+    }
+
+    @Test
+    void aLineSeenAtAnAngleReportsTheAngleBetweenLineAndView() {
+        self.place(0, 0);
+        self.body = 30; // meets (l r) at (52.5, 30.3), 60.62 m away: exp(4.10) = 60.3 seen
+        See see = see();
+        VisualObject line = find(see, "l r");
+        assertEquals(60, line.direction());
+        assertEquals(60.3, line.distance(), 1e-9);
+        self.body = -30;
+        assertEquals(-60, find(see(), "l r").direction());
+        assertEquals(1, see.objects().stream().filter(o -> o.kind().name().equals("LINE")).count(),
+                "one line from inside the pitch");
+    }
+
+    @Test
+    void fromOutsideThePitchUpToTwoLines() {
+        self.place(-55, -36); // beyond the top left corner, looking into the pitch
+        self.body = 45;
+        long lines = see().objects().stream().filter(o -> o.kind().name().equals("LINE")).count();
+        assertEquals(2, lines);
+    }
+
+    @Test
+    void theConeEdgeIsExcluded() {
+        self.place(0, 0);
+        self.body = -44.9;
+        world.ball.place(10, 0); // just inside the cone
+        assertTrue(find(see(), "b") != null);
+        self.body = -45; // exactly on the edge: not seen, and too far to be sensed behind
+        assertEquals(null, find(see(), "b"));
     }
 
     @Test
