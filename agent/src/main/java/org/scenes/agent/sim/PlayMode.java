@@ -1,20 +1,30 @@
 package org.scenes.agent.sim;
 
-/** The play modes this simulator uses; {@code announced} is the referee's word without the side. */
+/** The play modes this simulator uses; a restart's referee word is {@code word + "_" + side}. */
 enum PlayMode {
-    BEFORE_KICK_OFF(false),
-    KICK_OFF(true),
-    PLAY_ON(true),
+    BEFORE_KICK_OFF(false, "before_kick_off"),
+    KICK_OFF(true, "kick_off"),
+    KICK_IN(true, "kick_in"),
+    CORNER_KICK(true, "corner_kick"),
+    GOAL_KICK(true, "goal_kick"),
+    PLAY_ON(true, "play_on"),
     /** After a goal, until the next kick-off: the clock stands still. */
-    AFTER_GOAL(false),
+    AFTER_GOAL(false, "goal"),
     /** Between the halves: the clock stands still. */
-    HALF_TIME(false),
-    TIME_OVER(false);
+    HALF_TIME(false, "half_time"),
+    TIME_OVER(false, "time_over");
 
     final boolean clockRuns;
+    final String word;
 
-    PlayMode(boolean clockRuns) {
+    PlayMode(boolean clockRuns, String word) {
         this.clockRuns = clockRuns;
+        this.word = word;
+    }
+
+    /** A restart: only the side awarded it may kick, the other keeps its distance. */
+    boolean restart() {
+        return this == KICK_OFF || this == KICK_IN || this == CORNER_KICK || this == GOAL_KICK;
     }
 
     /** Whether players may {@code move} (teleport) in this mode. */

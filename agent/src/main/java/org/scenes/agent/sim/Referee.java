@@ -5,17 +5,24 @@ import java.util.List;
 import org.scenes.scene.Side;
 
 /**
- * Play modes and the clock: kick-off, goals, ball out of the pitch, half time and time over. Each
- * decision is announced as {@code (hear TIME referee MODE)}, delivered to every player at the
- * start of the next step.
+ * Play modes and the clock: kick-off, goals, kick-ins, corner and goal kicks, half time and time
+ * over. Each decision is announced as {@code (hear TIME referee MODE)}, delivered to every player
+ * at the start of the next step.
  */
 final class Referee {
     /** Steps before the first kick-off; the real server waits for the operator or auto_mode. */
     static final int BEFORE_KICK_OFF_STEPS = 30;
     /** Steps the clock stands still after a goal and at half time (about 50 on the real server). */
     static final int PAUSE_STEPS = 50;
-    /** Radius of the centre circle the defending team must stay outside of at kick-off. */
-    static final double CENTRE_CIRCLE = 9.15;
+    /** How far the other side must stay from the ball at a restart ({@code offside_kick_margin}). */
+    static final double KEEP_AWAY = 9.15;
+    /** Cycles a kick-in, corner or goal kick may wait before the ball is dropped ({@code drop_ball_time}). */
+    static final int DROP_BALL_TIME = 200;
+    /** Corner kicks are taken this far inside the corner ({@code ckick_margin}). */
+    static final double CORNER_MARGIN = 1;
+    /** Goal kicks are taken from the corner of the goal area. */
+    static final double GOAL_AREA_LENGTH = 5.5;
+    static final double GOAL_AREA_HALF_WIDTH = 9.16;
 
     private final World world;
     private final int cycles;
@@ -35,18 +42,18 @@ final class Referee {
         return taken;
     }
 
-    /** Whether this player may kick now: at kick-off only the kicking side may. */
+    /** Whether this player may kick now: at a restart only the side awarded it may. */
     boolean mayKick(Player player) {
-        return switch (world.mode) {
-            case PLAY_ON -> true;
-            case KICK_OFF -> player.side == world.kickOffSide;
-            default -> false;
-        };
+        if (world.mode == PlayMode.PLAY_ON) {
+            return true;
+        }
+        return world.mode.restart() && player.side == world.restartSide;
     }
 
-    /** A kick touched the ball: a kick-off becomes play on. */
-    void ballKicked() {
-        if (world.mode == PlayMode.KICK_OFF) {
+    /** A kick touched the ball: a restart becomes play on. */
+    void ballKicked(Player player) {
+        world.lastTouch = player.side;
+        if (world.mode.restart()) {
             world.mode = PlayMode.PLAY_ON;
             announce("play_on");
         }
@@ -60,21 +67,26 @@ final class Referee {
                     kickOff(Side.LEFT);
                 }
             }
-            case KICK_OFF, PLAY_ON -> {
-                if (world.mode == PlayMode.KICK_OFF) {
-                    keepDefendersAway();
+            case AFTER_GOAL, HALF_TIME -> {
+                if (++waited >= PAUSE_STEPS) {
+                    // After a goal the side that conceded kicks off; the second half starts with the right.
+                    kickOff(world.mode == PlayMode.HALF_TIME ? Side.RIGHT : world.restartSide);
+                }
+            }
+            case TIME_OVER -> {
+            }
+            default -> {
+                if (world.mode.restart()) {
+                    keepAway();
+                    if (world.mode != PlayMode.KICK_OFF && ++waited >= DROP_BALL_TIME) {
+                        announce("drop_ball");
+                        world.mode = PlayMode.PLAY_ON;
+                        announce("play_on");
+                    }
                 }
                 if (!judgeBall()) {
                     tick();
                 }
-            }
-            case AFTER_GOAL, HALF_TIME -> {
-                if (++waited >= PAUSE_STEPS) {
-                    // After a goal the side that conceded kicks off; the second half starts with the right.
-                    kickOff(world.mode == PlayMode.HALF_TIME ? Side.RIGHT : world.kickOffSide);
-                }
-            }
-            case TIME_OVER -> {
             }
         }
     }
@@ -93,41 +105,59 @@ final class Referee {
         }
     }
 
-    /** Goal or ball out; returns whether play stopped for a goal. */
+    /** Goal or ball out of the pitch; returns whether play stopped for a goal. */
     private boolean judgeBall() {
         Ball ball = world.ball;
-        double halfGoal = world.params.goalWidth() / 2;
-        if (Math.abs(ball.x) > ServerParams.PITCH_HALF_LENGTH && Math.abs(ball.y) < halfGoal) {
+        double radius = world.params.ballSize();
+        boolean overGoalLine = Math.abs(ball.x) > ServerParams.PITCH_HALF_LENGTH + radius;
+        if (overGoalLine && Math.abs(ball.y) < world.params.goalWidth() / 2) {
             Side scorer = ball.x > 0 ? Side.LEFT : Side.RIGHT;
             int goals = scorer == Side.LEFT ? ++world.scoreLeft : ++world.scoreRight;
             announce("goal_" + scorer.letter() + "_" + goals);
             world.mode = PlayMode.AFTER_GOAL;
-            world.kickOffSide = scorer == Side.LEFT ? Side.RIGHT : Side.LEFT;
+            world.restartSide = other(scorer);
             ball.place(Math.signum(ball.x) * (ServerParams.PITCH_HALF_LENGTH + 1), ball.y);
             waited = 0;
             return true;
         }
-        if (Math.abs(ball.x) > ServerParams.PITCH_HALF_LENGTH || Math.abs(ball.y) > ServerParams.PITCH_HALF_WIDTH) {
-            // Simplified restart: the ball is dropped just inside where it left and play goes on.
-            ball.place(Physics.clamp(ball.x, -ServerParams.PITCH_HALF_LENGTH + 1, ServerParams.PITCH_HALF_LENGTH - 1),
-                    Physics.clamp(ball.y, -ServerParams.PITCH_HALF_WIDTH + 1, ServerParams.PITCH_HALF_WIDTH - 1));
-            announce("drop_ball");
-            world.mode = PlayMode.PLAY_ON;
-            announce("play_on");
+        if (overGoalLine) {
+            Side defending = ball.x > 0 ? Side.RIGHT : Side.LEFT;
+            double endX = Math.signum(ball.x);
+            double sideY = ball.y >= 0 ? 1 : -1;
+            if (world.lastTouch == defending) {
+                restart(PlayMode.CORNER_KICK, other(defending), endX * (ServerParams.PITCH_HALF_LENGTH - CORNER_MARGIN),
+                        sideY * (ServerParams.PITCH_HALF_WIDTH - CORNER_MARGIN));
+            } else {
+                restart(PlayMode.GOAL_KICK, defending, endX * (ServerParams.PITCH_HALF_LENGTH - GOAL_AREA_LENGTH),
+                        sideY * GOAL_AREA_HALF_WIDTH);
+            }
+        } else if (Math.abs(ball.y) > ServerParams.PITCH_HALF_WIDTH + radius) {
+            Side awarded = world.lastTouch == null ? Side.LEFT : other(world.lastTouch);
+            restart(PlayMode.KICK_IN, awarded,
+                    Physics.clamp(ball.x, -ServerParams.PITCH_HALF_LENGTH, ServerParams.PITCH_HALF_LENGTH),
+                    Math.signum(ball.y) * ServerParams.PITCH_HALF_WIDTH);
         }
         return false;
     }
 
+    private void restart(PlayMode mode, Side side, double x, double y) {
+        world.ball.place(x, y);
+        world.mode = mode;
+        world.restartSide = side;
+        waited = 0;
+        announce(mode.word + "_" + side.letter());
+    }
+
     private void kickOff(Side side) {
         resetPositions(side);
-        world.kickOffSide = side;
         world.mode = PlayMode.KICK_OFF;
+        world.restartSide = side;
         announce("kick_off_" + side.letter());
     }
 
     /**
-     * Ball to the centre; players in the other half go back to their own, and the defending side
-     * leaves the centre circle, as the server places players before a kick-off.
+     * Ball to the centre; players in the other half go back to their own, and the side not
+     * kicking off leaves the centre circle, as the server places players before a kick-off.
      */
     private void resetPositions(Side kicking) {
         world.ball.place(0, 0);
@@ -136,34 +166,39 @@ final class Referee {
             if (player.x * sign < 0) {
                 player.x = -player.x;
             }
-            if (player.side != kicking) {
-                pushOutOfCentreCircle(player);
-            }
             player.vx = 0;
             player.vy = 0;
         }
+        world.restartSide = kicking;
+        keepAway();
     }
 
-    /** Until the kick-off is taken, the defending side stays outside the centre circle. */
-    private void keepDefendersAway() {
+    /** Until the restart is taken, the other side stays {@link #KEEP_AWAY} from the ball. */
+    private void keepAway() {
+        Ball ball = world.ball;
         for (Player player : world.players) {
-            if (player.side != world.kickOffSide) {
-                pushOutOfCentreCircle(player);
+            if (player.side == world.restartSide) {
+                continue;
             }
+            double dx = player.x - ball.x;
+            double dy = player.y - ball.y;
+            double distance = Math.hypot(dx, dy);
+            if (distance >= KEEP_AWAY) {
+                continue;
+            }
+            if (distance < 1e-9) {
+                // On the ball: step back towards the own goal.
+                dx = player.side == Side.LEFT ? -1 : 1;
+                dy = 0;
+                distance = 1;
+            }
+            player.x = ball.x + dx / distance * KEEP_AWAY;
+            player.y = ball.y + dy / distance * KEEP_AWAY;
         }
     }
 
-    private static void pushOutOfCentreCircle(Player player) {
-        double fromCentre = Math.hypot(player.x, player.y);
-        if (fromCentre >= CENTRE_CIRCLE) {
-            return;
-        }
-        if (fromCentre < 1e-9) {
-            player.x = (player.side == Side.LEFT ? -1 : 1) * CENTRE_CIRCLE;
-        } else {
-            player.x *= CENTRE_CIRCLE / fromCentre;
-            player.y *= CENTRE_CIRCLE / fromCentre;
-        }
+    private static Side other(Side side) {
+        return side == Side.LEFT ? Side.RIGHT : Side.LEFT;
     }
 
     private void announce(String mode) {

@@ -169,7 +169,7 @@ public final class Simulator {
                         } else {
                             kicksRight++;
                         }
-                        referee.ballKicked();
+                        referee.ballKicked(player);
                     }
                 }
                 default -> {

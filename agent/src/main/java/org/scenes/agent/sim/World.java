@@ -16,8 +16,10 @@ final class World {
     final List<Player> players = new ArrayList<>();
     int time;
     PlayMode mode = PlayMode.BEFORE_KICK_OFF;
-    /** The side taking the current kick-off. */
-    Side kickOffSide = Side.LEFT;
+    /** The side awarded the current restart (kick-off, kick-in, corner or goal kick). */
+    Side restartSide = Side.LEFT;
+    /** The side that touched the ball last, null before the first kick. */
+    Side lastTouch;
     int scoreLeft;
     int scoreRight;
 
