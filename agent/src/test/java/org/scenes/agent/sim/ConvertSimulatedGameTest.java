@@ -64,4 +64,24 @@ class ConvertSimulatedGameTest {
         }
         assertTrue(teammate && opponent);
     }
+
+    @Test
+    void stateBasedTeachersLogsConvertToo() throws IOException {
+        GameResult game = new Simulator(new GameSetup(
+                new GameSetup.Team("Teal", 3, org.scenes.agent.teacher.Teachers.byName("statebased")),
+                new GameSetup.Team("Amber", 3, org.scenes.agent.teacher.Teachers.byName("krislet")), 1500, 2, directory))
+                .run(t -> { });
+        SceneConverter converter = new SceneConverter(Grid.DEFAULT, true, line -> { });
+        Map<ActionType, Integer> actions = new EnumMap<>(ActionType.class);
+        ConversionReport report = converter.convert(game.logs().get(0), scene -> {
+            for (Action action : scene.actions()) {
+                actions.merge(action.type(), 1, Integer::sum);
+            }
+        });
+        assertEquals(0, report.malformed());
+        assertTrue(report.scenes() > 750, "scenes " + report.scenes());
+        assertTrue(actions.getOrDefault(ActionType.DASH, 0) > 0 && actions.getOrDefault(ActionType.TURN, 0) > 0,
+                actions.toString());
+        assertTrue(game.kicksLeft() > 0, game.toString());
+    }
 }
