@@ -104,6 +104,27 @@ class SimulatorTest {
     }
 
     @Test
+    void badCommandsGetErrorsAndOnlyOneBodyCommandPerCycleCounts() throws IOException {
+        GameSetup setup = new GameSetup(new GameSetup.Team("Teal", 1, (team, random) -> (message, send) -> {
+            if (message.startsWith("(see 0 ")) {
+                send.accept("(dash)");
+                send.accept("(fly 3)");
+            } else if (message.startsWith("(see")) {
+                send.accept("(turn 10)");
+                send.accept("(turn 10)");
+            }
+        }), new GameSetup.Team("Amber", 1, Teachers.byName("krislet")), 60, 1, directory);
+        new Simulator(setup).run(t -> { });
+        List<String> log = lines(directory.resolve("Teal_1.lsf.gz"));
+        assertTrue(log.contains("(error illegal_command_form)"));
+        assertTrue(log.contains("(error unknown_command)"));
+        long turnsSent = log.stream().filter(l -> l.equals("(turn 10)")).count();
+        String lastSense = log.stream().filter(l -> l.startsWith("(sense_body")).reduce((a, b) -> b).orElseThrow();
+        // two turns per see, one executed per cycle
+        assertTrue(lastSense.contains("(turn " + turnsSent / 2 + ")"), lastSense + " after " + turnsSent);
+    }
+
+    @Test
     void setupRejectsBadTeams() {
         assertThrows(IllegalArgumentException.class, () -> new GameSetup.Team("Teal", 12, Teachers.byName("krislet")));
         assertThrows(IllegalArgumentException.class, () -> new GameSetup.Team("has space", 1, Teachers.byName("krislet")));
