@@ -67,7 +67,7 @@ class ImitationBrainTest {
     @Test
     void answersASeeWithTheNearestScenesAction() throws IOException {
         KnowledgeBase knowledge = learn();
-        ImitationBrain brain = new ImitationBrain("Teal", new Recognizer(knowledge, () -> BALL, 1), FIRST, List.of(),
+        ImitationBrain brain = new ImitationBrain("Teal", new Recognizer(knowledge, () -> BALL, 1), FIRST, List::of,
                 new Random(1));
         List<String> sent = new ArrayList<>();
         brain.receive("(init l 1 before_kick_off)", sent::add);
@@ -79,6 +79,39 @@ class ImitationBrainTest {
         assertEquals(1, sent.size());
         assertTrue(sent.get(0).startsWith("(dash "), sent.toString());
         assertEquals(1, brain.decisions());
+    }
+
+    /** Remembers the scene before, like the memory plugin. */
+    static final class Remember implements org.scenes.match.SceneTransform {
+        private Scene last;
+
+        @Override
+        public Scene apply(Scene scene) {
+            Scene remembered = scene.withPrevious(last);
+            last = scene.withPrevious(null);
+            return remembered;
+        }
+    }
+
+    @Test
+    void transformsRememberTheActionThisBrainChose() throws IOException {
+        KnowledgeBase knowledge = learn();
+        List<Scene> queries = new ArrayList<>();
+        SceneMetric recording = (query, stored) -> {
+            if (queries.isEmpty() || queries.get(queries.size() - 1) != query) {
+                queries.add(query);
+            }
+            return BALL.distance(query, stored);
+        };
+        ImitationBrain brain = new ImitationBrain("Teal", new Recognizer(knowledge, () -> recording, 1), FIRST,
+                () -> List.of(new Remember()), new Random(1));
+        List<String> sent = new ArrayList<>();
+        brain.receive("(init l 1 before_kick_off)", sent::add);
+        brain.receive("(see 50 ((b) 20 0))", sent::add);
+        brain.receive("(see 51 ((b) 19 0))", sent::add);
+        Scene second = queries.get(queries.size() - 1);
+        assertEquals(50, second.previous().cycle());
+        assertEquals(sent.get(0), second.previous().primaryAction().command(), "the action sent for see 50");
     }
 
     @Test
