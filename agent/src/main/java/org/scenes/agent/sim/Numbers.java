@@ -31,6 +31,17 @@ final class Numbers {
         return a;
     }
 
+    /**
+     * A distance or direction change: like {@link #format}, but a negative value that rounds to
+     * zero, and negative zero itself, print as {@code -0}, as the server's C++ output does.
+     */
+    static String formatChange(double value, int decimals) {
+        if (Math.round(value * SCALE[decimals]) == 0 && (value < 0 || 1 / value < 0)) {
+            return "-0";
+        }
+        return format(value, decimals);
+    }
+
     /** The value rounded to at most {@code decimals} places, without trailing zeros or {@code -0}. */
     static String format(double value, int decimals) {
         long scaled = Math.round(value * SCALE[decimals]);

@@ -88,8 +88,10 @@ final class Vision {
             double ey = dy / distance;
             double distanceChange = seenDistance * Numbers.quantize((rvx * ex + rvy * ey) / distance, 0.02);
             double directionChange = Math.toDegrees((rvy * ex - rvx * ey) / distance);
-            text.append(' ').append(Numbers.format(distanceChange, 4))
-                    .append(' ').append(Numbers.format(Numbers.quantize(directionChange, 0.1), 1));
+            // An exactly zero direction change stays 0; a tiny negative one quantises to -0.
+            directionChange = directionChange == 0 ? 0 : Numbers.quantize(directionChange, 0.1);
+            text.append(' ').append(Numbers.formatChange(distanceChange, 4))
+                    .append(' ').append(Numbers.formatChange(directionChange, 1));
             if (other != null) {
                 text.append(' ').append(Numbers.format(Math.rint(Numbers.normalize(other.body - head)), 0))
                         .append(' ').append(Numbers.format(Math.rint(Numbers.normalize(other.head() - head)), 0));

@@ -147,6 +147,18 @@ class VisionTest {
     }
 
     @Test
+    void smallNegativeChangesPrintAsMinusZeroLikeTheServer() {
+        self.place(0, 0);
+        self.body = 0;
+        world.ball.place(10, 0);
+        world.ball.vx = -0.001; // radial change -0.0001 per metre quantises to -0
+        assertTrue(vision.see(self).contains("((b) 10 0 -0 0)"), vision.see(self));
+        assertEquals("-0", Numbers.formatChange(-0.0, 1));
+        assertEquals("0", Numbers.formatChange(0.0, 1));
+        assertEquals("-0.364", Numbers.formatChange(18.2 * -0.02, 4));
+    }
+
+    @Test
     void thereAre55Landmarks() {
         assertEquals(55, Landmarks.ALL.size());
         assertEquals(2, Landmarks.ALL.stream().filter(Landmarks.Landmark::goal).count());
