@@ -1,0 +1,5 @@
+package org.scenes.agent.sim;
+
+/** The ball. */
+final class Ball extends MovingObject {
+}

@@ -1,0 +1,31 @@
+package org.scenes.agent.teacher;
+
+import java.util.Locale;
+
+/** Command text as a Java client writes it: {@code (dash 603.0)}, {@code (kick 100.0 -12.0)}. */
+final class Commands {
+    private Commands() {
+    }
+
+    static String dash(double power) {
+        return "(dash " + number(power) + ")";
+    }
+
+    static String turn(double moment) {
+        return "(turn " + number(moment) + ")";
+    }
+
+    static String kick(double power, double direction) {
+        return "(kick " + number(power) + " " + number(direction) + ")";
+    }
+
+    static String move(double x, double y) {
+        return "(move " + number(x) + " " + number(y) + ")";
+    }
+
+    /** One decimal at most, always with a decimal point, never in exponent form. */
+    private static String number(double value) {
+        double rounded = Math.rint(value * 10) / 10;
+        return String.format(Locale.ROOT, rounded == Math.rint(rounded) ? "%.1f" : "%s", rounded == 0 ? 0.0 : rounded);
+    }
+}

@@ -1,0 +1,110 @@
+package org.scenes.agent.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+import org.scenes.scene.Side;
+
+class PhysicsTest {
+    private final World world = new World(ServerParams.DEFAULT, 3);
+    private final Physics physics = new Physics(world);
+    private final Player player = world.add("Teal", Side.LEFT, 1);
+
+    PhysicsTest() {
+        world.mode = PlayMode.PLAY_ON;
+        player.place(0, 0);
+        player.body = 0;
+    }
+
+    @Test
+    void dashAcceleratesAlongTheBodyThenDecays() {
+        physics.dash(player, 100);
+        physics.step();
+        // a = 100 * 0.006 * effort 1 = 0.6; noise at most player_rand * 0.6 per axis
+        assertEquals(0.6, player.x, 0.06 + 1e-9);
+        assertEquals(0, player.y, 0.06 + 1e-9);
+        assertEquals(0.4 * player.x, player.vx, 1e-9);
+        assertEquals(8000 - 100, player.stamina, 1e-9);
+    }
+
+    @Test
+    void dashPowerIsCappedAtMaxpower() {
+        physics.dash(player, 603);
+        assertEquals(0.6, player.ax, 1e-9);
+    }
+
+    @Test
+    void dashBeforeKickOffCostsStaminaButDoesNotMove() {
+        world.mode = PlayMode.BEFORE_KICK_OFF;
+        physics.dash(player, 100);
+        physics.step();
+        assertEquals(0, player.x);
+        assertEquals(7900, player.stamina, 1e-9);
+    }
+
+    @Test
+    void turnIsSlowedBySpeed() {
+        physics.turn(player, 90);
+        assertEquals(90, player.body, 1e-9);
+        player.body = 0;
+        player.vx = 0.5;
+        physics.turn(player, 90);
+        assertEquals(90 / (1 + 5 * 0.5), player.body, 1e-9);
+    }
+
+    @Test
+    void kickOnlyWithinKickableDistance() {
+        world.ball.place(2, 0);
+        assertFalse(physics.kick(player, 100, 0));
+        assertEquals(0, world.ball.ax);
+        world.ball.place(0.5, 0);
+        assertTrue(physics.kick(player, 100, 0));
+        // 100 * 0.027 * (1 - 0.25 * gap / 0.7), gap = 0.5 - 0.385
+        double expected = 2.7 * (1 - 0.25 * (0.5 - 0.385) / 0.7);
+        assertEquals(expected, world.ball.ax, 0.1 * (0.5 + 0.25 * 0.115 / 0.7) + 1e-9);
+    }
+
+    @Test
+    void ballSpeedIsCappedAndDecays() {
+        world.ball.place(0, 0);
+        world.ball.vx = 5;
+        physics.step();
+        assertEquals(3, world.ball.x, 3 * 0.05 + 1e-9);
+        assertEquals(0.94 * world.ball.x, world.ball.vx, 1e-9);
+    }
+
+    @Test
+    void moveMirrorsTheRightSide() {
+        Player right = world.add("Amber", Side.RIGHT, 2);
+        physics.move(right, -10, 5);
+        assertEquals(10, right.x);
+        assertEquals(-5, right.y);
+    }
+
+    @Test
+    void overlappingPlayersArePushedApart() {
+        Player other = world.add("Amber", Side.RIGHT, 2);
+        other.place(0.2, 0);
+        physics.step();
+        assertEquals(0.6, player.distanceTo(other), 1e-9);
+        assertEquals(0.1, (player.x + other.x) / 2, 1e-9); // both moved by half the overlap
+    }
+
+    @Test
+    void aBallInsideAPlayerBouncesOut() {
+        world.ball.place(0.1, 0);
+        world.ball.vx = -0.05; // rolling into the player
+        physics.step();
+        assertEquals(0.385, player.distanceTo(world.ball), 1e-9);
+        assertTrue(world.ball.vx > 0, "bounced back");
+    }
+
+    @Test
+    void staminaRecoversEachCycle() {
+        player.stamina = 7000;
+        physics.recover(player);
+        assertEquals(7045, player.stamina, 1e-9);
+    }
+}
