@@ -15,6 +15,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -231,8 +232,8 @@ public final class FakeSoccerServer implements AutoCloseable {
         public final String side;
         public final int unum;
         private final DatagramChannel channel;
-        private final List<byte[]> received = new CopyOnWriteArrayList<>();
-        private final List<byte[]> sent = new CopyOnWriteArrayList<>();
+        private final List<byte[]> received = Collections.synchronizedList(new ArrayList<>());
+        private final List<byte[]> sent = Collections.synchronizedList(new ArrayList<>());
         private int replayed;
 
         Client(Port port, InetSocketAddress address, DatagramChannel channel, String team, String side, int unum) {
@@ -256,12 +257,20 @@ public final class FakeSoccerServer implements AutoCloseable {
 
         /** Every datagram received from the client, init included, as received. */
         public List<byte[]> received() {
-            return List.copyOf(received);
+            synchronized (received) {
+                return List.copyOf(received);
+            }
+        }
+
+        public int receivedCount() {
+            return received.size();
         }
 
         /** Every datagram sent to the client, init reply included. */
         public List<byte[]> sent() {
-            return List.copyOf(sent);
+            synchronized (sent) {
+                return List.copyOf(sent);
+            }
         }
 
         public int serverPort() throws IOException {

@@ -1,0 +1,301 @@
+package org.scenes.fakeserver;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.SocketAddress;
+import java.net.StandardSocketOptions;
+import java.nio.ByteBuffer;
+import java.nio.channels.DatagramChannel;
+import java.nio.channels.SelectionKey;
+import java.nio.channels.Selector;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import org.scenes.logproxy.ClientKind;
+import org.scenes.logproxy.LogFormat;
+import org.scenes.logproxy.LogProxy;
+import org.scenes.logproxy.ProxyConfig;
+import org.scenes.logproxy.ProxyStats;
+import org.scenes.logproxy.Route;
+import org.scenes.proxylog.Direction;
+import org.scenes.proxylog.ProxyLogLine;
+
+/**
+ * Latency benchmark of the logging proxy on loopback: N clients each send M commands per
+ * 100 ms cycle to the fake server, which answers each with a {@code see} message built from a
+ * real log; the round trip is measured talking to the server directly, then through the proxy.
+ * Prints p50/p99/max per mode, lost datagrams, and whether the proxy's logs are complete.
+ *
+ * <pre>gradle :tests:proxyBench -PbenchArgs="--clients 24 --messages 20 --cycles 300"</pre>
+ */
+public final class ProxyBench {
+    private static final long CYCLE_NANOS = 100_000_000L;
+
+    private final int clients;
+    private final int messages;
+    private final int cycles;
+    private final int warmup;
+    private final String seeBody;
+
+    private ProxyBench(int clients, int messages, int cycles, int warmup, String seeBody) {
+        this.clients = clients;
+        this.messages = messages;
+        this.cycles = cycles;
+        this.warmup = warmup;
+        this.seeBody = seeBody;
+    }
+
+    public static void main(String[] args) throws Exception {
+        int clients = 24;
+        int messages = 20;
+        int cycles = 300;
+        int warmup = 30;
+        for (int i = 0; i < args.length; i += 2) {
+            if (i + 1 >= args.length) {
+                usage("missing value after " + args[i]);
+            }
+            int value = Integer.parseInt(args[i + 1]);
+            switch (args[i]) {
+                case "--clients" -> clients = value;
+                case "--messages" -> messages = value;
+                case "--cycles" -> cycles = value;
+                case "--warmup" -> warmup = value;
+                default -> usage("unknown option " + args[i]);
+            }
+        }
+        Path log = Path.of(System.getProperty("scenes.shared", "../shared"), "data/krislet/classic-game1/Carleton_1.lsf.gz");
+        String see = FakeSoccerServer.recordedSensing(log, 1000).stream()
+                .filter(l -> l.startsWith("(see ") && l.length() > 600).findFirst().orElseThrow();
+        // "(see T objects...)" -> "objects...)" so the reply can carry a sequence number as its time.
+        String body = see.substring(see.indexOf(' ', 5) + 1);
+        ProxyBench bench = new ProxyBench(clients, messages, cycles, warmup, body);
+        System.out.printf(Locale.ROOT, "%d clients x %d messages per 100 ms cycle, %d cycles (+%d warm-up), "
+                + "replies %d bytes; Java %s, %d CPUs%n", clients, messages, cycles, warmup, body.length() + 12,
+                System.getProperty("java.version"), Runtime.getRuntime().availableProcessors());
+        Result direct = bench.run(false);
+        Result proxied = bench.run(true);
+        System.out.println(direct);
+        System.out.println(proxied);
+        System.out.printf(Locale.ROOT, "proxy adds: p50 %+.3f ms, p99 %+.3f ms%n",
+                (proxied.p50 - direct.p50) / 1e6, (proxied.p99 - direct.p99) / 1e6);
+        boolean ok = proxied.lost == 0 && direct.lost == 0 && proxied.logsComplete;
+        System.exit(ok ? 0 : 1);
+    }
+
+    private static void usage(String problem) {
+        System.err.println("proxy-bench: " + problem
+                + "\nusage: ProxyBench [--clients N] [--messages N] [--cycles N] [--warmup N]");
+        System.exit(2);
+    }
+
+    private record Result(String mode, long sent, long lost, long p50, long p99, long max, String logs,
+            boolean logsComplete) {
+        @Override
+        public String toString() {
+            return String.format(Locale.ROOT, "%-7s round trips %d, lost %d, p50 %.3f ms, p99 %.3f ms, max %.3f ms%s",
+                    mode, sent, lost, p50 / 1e6, p99 / 1e6, max / 1e6, logs);
+        }
+    }
+
+    private Result run(boolean throughProxy) throws Exception {
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of("(sense_body 0)"))) {
+            server.respondWith((client, datagram) -> reply(datagram));
+            Path out = Files.createTempDirectory("proxy-bench");
+            LogProxy proxy = null;
+            InetSocketAddress target = server.address(FakeSoccerServer.Port.PLAYER);
+            if (throughProxy) {
+                proxy = LogProxy.start(new ProxyConfig(InetAddress.getLoopbackAddress(),
+                        List.of(new Route(ClientKind.PLAYER, 0, target)), out, LogFormat.NATIVE,
+                        Duration.ofSeconds(60), Duration.ofSeconds(5), ProxyConfig.DEFAULT_LOG_BUFFER_BYTES, line -> { }));
+                target = new InetSocketAddress(InetAddress.getLoopbackAddress(), proxy.listenPort(ClientKind.PLAYER));
+            }
+            long[] rtt;
+            long[] counts;
+            try (Selector selector = Selector.open()) {
+                DatagramChannel[] channels = connect(selector, target);
+                long[] measured = new long[clients * messages * cycles];
+                counts = exchange(selector, channels, measured);
+                rtt = Arrays.copyOf(measured, (int) counts[1]);
+                for (DatagramChannel channel : channels) {
+                    channel.close();
+                }
+            }
+            String logs = "";
+            boolean complete = true;
+            if (proxy != null) {
+                proxy.close();
+                ProxyStats stats = proxy.stats();
+                complete = logsComplete(out, server);
+                logs = String.format(Locale.ROOT, "; logs %s (%d messages, not forwarded %d, log buffer peak %.1f MB, %d waits)",
+                        complete ? "complete" : "INCOMPLETE", stats.logged(), stats.notForwarded(),
+                        stats.logBufferHighWater() / 1e6, stats.logBufferWaits());
+            }
+            deleteTree(out);
+            Arrays.sort(rtt);
+            long sent = counts[0];
+            return new Result(throughProxy ? "proxy" : "direct", sent, counts[2] - counts[3], percentile(rtt, 0.50),
+                    percentile(rtt, 0.99), rtt.length == 0 ? 0 : rtt[rtt.length - 1], logs, complete);
+        }
+    }
+
+    private byte[] reply(byte[] command) {
+        // "(turn 30 SEQ)" -> "(see SEQ objects...)" : a see message of realistic size carrying the sequence.
+        int end = command.length;
+        while (end > 0 && (command[end - 1] == 0 || command[end - 1] == ')')) {
+            end--;
+        }
+        int start = end;
+        while (start > 0 && command[start - 1] != ' ') {
+            start--;
+        }
+        String sequence = new String(command, start, end - start, StandardCharsets.US_ASCII);
+        return ("(see " + sequence + " " + seeBody + "\0").getBytes(StandardCharsets.US_ASCII);
+    }
+
+    private DatagramChannel[] connect(Selector selector, InetSocketAddress server) throws IOException {
+        DatagramChannel[] channels = new DatagramChannel[clients];
+        ByteBuffer buffer = ByteBuffer.allocate(1 << 16);
+        for (int i = 0; i < clients; i++) {
+            DatagramChannel channel = DatagramChannel.open();
+            channel.setOption(StandardSocketOptions.SO_RCVBUF, 1 << 20);
+            channel.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
+            channel.send(ByteBuffer.wrap(("(init Bench" + (i / 11) + " (version 9))\0").getBytes(StandardCharsets.US_ASCII)), server);
+            buffer.clear();
+            SocketAddress replyFrom = channel.receive(buffer); // blocking: the init reply
+            channel.connect(replyFrom); // the server's port for this client from now on
+            channel.configureBlocking(false);
+            channel.register(selector, SelectionKey.OP_READ, i);
+            channels[i] = channel;
+        }
+        return channels;
+    }
+
+    /**
+     * Sends every client's messages on schedule and measures replies.
+     *
+     * @return {sent, measured round trips, all sent, all received}
+     */
+    private long[] exchange(Selector selector, DatagramChannel[] channels, long[] measured) throws IOException {
+        int perCycle = clients * messages;
+        int total = perCycle * (cycles + warmup);
+        long[] sentAt = new long[total];
+        long spacing = CYCLE_NANOS / perCycle;
+        ByteBuffer in = ByteBuffer.allocate(1 << 16);
+        long start = System.nanoTime() + 10_000_000L;
+        int next = 0;
+        int received = 0;
+        int count = 0;
+        long endWait = Long.MAX_VALUE;
+        while (received < total && System.nanoTime() < endWait) {
+            long now = System.nanoTime();
+            // Message k of the run is due at start + k * spacing; clients take turns.
+            while (next < total && start + next * spacing <= now) {
+                DatagramChannel channel = channels[next % clients];
+                byte[] command = ("(turn 30 " + next + ")\0").getBytes(StandardCharsets.US_ASCII);
+                sentAt[next] = System.nanoTime();
+                channel.write(ByteBuffer.wrap(command));
+                next++;
+                if (next == total) {
+                    endWait = System.nanoTime() + 2_000_000_000L; // stragglers, then the rest is lost
+                }
+            }
+            selector.select(1);
+            for (SelectionKey key : selector.selectedKeys()) {
+                DatagramChannel channel = (DatagramChannel) key.channel();
+                while (true) {
+                    in.clear();
+                    if (channel.receive(in) == null) {
+                        break;
+                    }
+                    long arrived = System.nanoTime();
+                    int sequence = sequence(in);
+                    received++;
+                    if (sequence >= warmup * perCycle) {
+                        measured[count++] = arrived - sentAt[sequence];
+                    }
+                }
+            }
+            selector.selectedKeys().clear();
+        }
+        return new long[] {(long) cycles * perCycle, count, total, received};
+    }
+
+    private static int sequence(ByteBuffer reply) {
+        int value = 0;
+        for (int i = 5; i < reply.position() && reply.get(i) != ' '; i++) {
+            value = value * 10 + (reply.get(i) - '0');
+        }
+        return value;
+    }
+
+    /** Every client's log holds exactly what the client sent and what the server sent it. */
+    private static boolean logsComplete(Path out, FakeSoccerServer server) throws IOException {
+        boolean complete = true;
+        for (FakeSoccerServer.Client client : server.clients()) {
+            Path file = out.resolve(client.team + "_" + client.unum + ".log");
+            List<byte[]> toServer = new ArrayList<>();
+            List<byte[]> toClient = new ArrayList<>();
+            try (BufferedReader reader = new BufferedReader(new InputStreamReader(Files.newInputStream(file), StandardCharsets.UTF_8))) {
+                for (String line = reader.readLine(); line != null; line = reader.readLine()) {
+                    if (!ProxyLogLine.isComment(line)) {
+                        ProxyLogLine parsed = ProxyLogLine.parse(line);
+                        (parsed.direction() == Direction.CLIENT_TO_SERVER ? toServer : toClient).add(parsed.message());
+                    }
+                }
+            }
+            complete &= same(unpadded(client.received()), toServer, file + " c2s");
+            complete &= same(unpadded(client.sent()), toClient, file + " s2c");
+        }
+        return complete;
+    }
+
+    private static boolean same(List<byte[]> expected, List<byte[]> logged, String what) {
+        if (expected.size() != logged.size()) {
+            System.out.println(what + ": " + expected.size() + " datagrams, " + logged.size() + " logged");
+            return false;
+        }
+        for (int i = 0; i < expected.size(); i++) {
+            if (!Arrays.equals(expected.get(i), logged.get(i))) {
+                System.out.println(what + ": message " + i + " differs");
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static List<byte[]> unpadded(List<byte[]> datagrams) {
+        List<byte[]> out = new ArrayList<>(datagrams.size());
+        for (byte[] datagram : datagrams) {
+            int end = datagram.length;
+            while (end > 0 && datagram[end - 1] == 0) {
+                end--;
+            }
+            out.add(Arrays.copyOf(datagram, end));
+        }
+        return out;
+    }
+
+    private static long percentile(long[] sorted, double fraction) {
+        if (sorted.length == 0) {
+            return 0;
+        }
+        return sorted[Math.min(sorted.length - 1, (int) Math.ceil(fraction * sorted.length) - 1)];
+    }
+
+    private static void deleteTree(Path directory) throws IOException {
+        try (var files = Files.list(directory)) {
+            for (Path file : files.toList()) {
+                Files.delete(file);
+            }
+        }
+        Files.delete(directory);
+    }
+}
