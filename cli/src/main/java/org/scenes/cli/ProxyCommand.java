@@ -78,6 +78,10 @@ final class ProxyCommand implements Callable<Integer> {
             description = "Memory between forwarding and the log writer. Default: ${DEFAULT-VALUE}.")
     int logBufferMb;
 
+    @Option(names = "--max-clients", paramLabel = "N", defaultValue = "" + ProxyConfig.DEFAULT_MAX_CLIENTS,
+            description = "Clients served at once; datagrams from further new addresses are dropped. Default: ${DEFAULT-VALUE}.")
+    int maxClients;
+
     @Override
     public Integer call() throws IOException, InterruptedException {
         PrintWriter console = spec.commandLine().getOut();
@@ -98,6 +102,9 @@ final class ProxyCommand implements Callable<Integer> {
         if (logBufferMb < 1 || logBufferMb > 1024) {
             throw new UsageException("--log-buffer-mb must be between 1 and 1024, not " + logBufferMb);
         }
+        if (maxClients < 1) {
+            throw new UsageException("--max-clients must be positive, not " + maxClients);
+        }
         InetAddress bindAddress;
         try {
             bindAddress = InetAddress.getByName(bind);
@@ -105,7 +112,7 @@ final class ProxyCommand implements Callable<Integer> {
             throw new UsageException("--bind: unknown host " + bind);
         }
         ProxyConfig config = new ProxyConfig(bindAddress, routes, out, logFormat(), seconds(idleTimeout),
-                seconds(endGrace), logBufferMb << 20, line -> {
+                seconds(endGrace), logBufferMb << 20, maxClients, line -> {
                     synchronized (console) {
                         console.println(line);
                         console.flush();

@@ -37,6 +37,7 @@ final class Forwarder implements Runnable {
     private final long endGraceNanos;
     private final long checkEveryNanos;
     private final Consumer<String> events;
+    private final int maxClients;
     private final ByteBuffer buffer = ByteBuffer.allocateDirect(MAX_DATAGRAM);
     private final List<Session> sessions = new ArrayList<>();
     private int nextSessionId = 1;
@@ -55,6 +56,7 @@ final class Forwarder implements Runnable {
         this.endGraceNanos = config.endGrace().toNanos();
         this.checkEveryNanos = Math.max(1_000_000L, Math.min(250_000_000L, Math.min(idleNanos, endGraceNanos) / 4));
         this.events = config.events();
+        this.maxClients = config.maxClients();
         this.selector = Selector.open();
         try {
             for (Route route : config.routes()) {
@@ -213,6 +215,12 @@ final class Forwarder implements Runnable {
     }
 
     private Session open(Listener listener, InetSocketAddress client, long now) {
+        if (sessions.size() >= maxClients) {
+            if (notForwarded.getAndIncrement() % 1000 == 0) {
+                events.accept("too many clients (" + maxClients + "): dropping datagrams from " + client);
+            }
+            return null;
+        }
         DatagramChannel channel = null;
         try {
             channel = DatagramChannel.open();

@@ -2,6 +2,7 @@ package org.scenes.logproxy;
 
 import java.io.IOException;
 import java.nio.file.Files;
+import java.time.Instant;
 
 /**
  * The logging proxy: clients talk to it as if it were the soccer server; every datagram is
@@ -26,9 +27,10 @@ public final class LogProxy implements AutoCloseable {
             throw new IOException("output directory is not writable: " + config.outDirectory());
         }
         long start = System.nanoTime();
+        Instant started = Instant.now();
         ring = new LogRing(config.logBufferBytes());
         forwarder = new Forwarder(config, ring, start);
-        writer = new LogWriter(ring, config.outDirectory(), config.format(), config.events());
+        writer = new LogWriter(ring, config.outDirectory(), config.format(), started, config.events());
         writing = new Thread(writer, "scenes-proxy-log-writer");
         ring.consumer(writing);
         forwarding = new Thread(forwarder, "scenes-proxy-forwarder");

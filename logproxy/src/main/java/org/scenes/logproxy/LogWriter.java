@@ -8,6 +8,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
@@ -31,6 +32,7 @@ final class LogWriter implements Runnable {
     private final Path directory;
     private final LogFormat format;
     private final Consumer<String> events;
+    private final Instant started;
     private final Map<Integer, SessionLog> sessions = new HashMap<>();
     private final StringBuilder line = new StringBuilder(8192);
     final AtomicLong logged = new AtomicLong();
@@ -40,7 +42,8 @@ final class LogWriter implements Runnable {
     private volatile IOException firstError;
     private long lastFlush = System.nanoTime();
 
-    LogWriter(LogRing ring, Path directory, LogFormat format, Consumer<String> events) {
+    LogWriter(LogRing ring, Path directory, LogFormat format, Instant started, Consumer<String> events) {
+        this.started = started;
         this.ring = ring;
         this.directory = directory;
         this.format = format;
@@ -110,6 +113,8 @@ final class LogWriter implements Runnable {
             fail(log, e);
         }
         comment(log, "client " + description);
+        // Times are seconds since the proxy started; this anchors them to the wall clock.
+        comment(log, "proxy started " + started);
         events.accept("client " + description + " connected");
     }
 

@@ -16,11 +16,15 @@ import java.util.function.Consumer;
  * @param endGrace after {@code time_over} or {@code (bye)}, a session quiet in both
  *     directions this long is closed
  * @param logBufferBytes memory between forwarding and the log writer (see {@link LogRing})
+ * @param maxClients clients served at once; datagrams from further new addresses are dropped,
+ *     so a flood of strange senders cannot exhaust sockets or memory
  * @param events one line per notable event (client seen, log completed, errors)
  */
 public record ProxyConfig(InetAddress bindAddress, List<Route> routes, Path outDirectory, LogFormat format,
-        Duration idleTimeout, Duration endGrace, int logBufferBytes, Consumer<String> events) {
+        Duration idleTimeout, Duration endGrace, int logBufferBytes, int maxClients, Consumer<String> events) {
     public static final int DEFAULT_LOG_BUFFER_BYTES = 64 << 20;
+    /** A full game (22 players, 2 coaches, a trainer) with room for reconnections. */
+    public static final int DEFAULT_MAX_CLIENTS = 64;
     /** Room for the largest UDP datagram, twice, plus record headers. */
     static final int MIN_LOG_BUFFER_BYTES = 1 << 18;
 
@@ -34,6 +38,9 @@ public record ProxyConfig(InetAddress bindAddress, List<Route> routes, Path outD
         }
         if (endGrace.isNegative() || endGrace.isZero()) {
             throw new IllegalArgumentException("end grace must be positive: " + endGrace);
+        }
+        if (maxClients < 1) {
+            throw new IllegalArgumentException("max clients must be positive: " + maxClients);
         }
         if (logBufferBytes < MIN_LOG_BUFFER_BYTES) {
             throw new IllegalArgumentException("log buffer must be at least " + MIN_LOG_BUFFER_BYTES + " bytes");

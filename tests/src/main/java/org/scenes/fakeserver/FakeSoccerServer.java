@@ -49,13 +49,14 @@ public final class FakeSoccerServer implements AutoCloseable {
     private volatile BiFunction<Client, byte[], byte[]> responder;
     private volatile boolean running = true;
 
-    private FakeSoccerServer(List<String> recorded) throws IOException {
+    private FakeSoccerServer(List<String> recorded, int playerPort) throws IOException {
         this.recorded = List.copyOf(recorded);
         selector = Selector.open();
         for (Port port : Port.values()) {
             DatagramChannel channel = DatagramChannel.open();
             channel.setOption(StandardSocketOptions.SO_RCVBUF, 4 << 20);
-            channel.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
+            int number = port == Port.PLAYER || playerPort == 0 ? playerPort : playerPort + port.ordinal();
+            channel.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), number));
             channel.configureBlocking(false);
             channel.register(selector, SelectionKey.OP_READ, port);
             initPorts.put(port, channel);
@@ -67,7 +68,12 @@ public final class FakeSoccerServer implements AutoCloseable {
 
     /** A server that replays the given server messages ({@code see}, {@code sense_body}...). */
     public static FakeSoccerServer start(List<String> recordedServerMessages) throws IOException {
-        return new FakeSoccerServer(recordedServerMessages);
+        return new FakeSoccerServer(recordedServerMessages, 0);
+    }
+
+    /** The same on fixed ports: players on {@code playerPort}, coaches on the next two, as rcssserver. */
+    public static FakeSoccerServer start(List<String> recordedServerMessages, int playerPort) throws IOException {
+        return new FakeSoccerServer(recordedServerMessages, playerPort);
     }
 
     /** The {@code see} and {@code sense_body} lines of a classic {@code .lsf} log (gzip or not). */

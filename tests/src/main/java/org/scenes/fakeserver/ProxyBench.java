@@ -44,6 +44,10 @@ public final class ProxyBench {
     private final int cycles;
     private final int warmup;
     private final String seeBody;
+    /** A proxy already running in another process (port and output directory), or 0. */
+    private int externalPort;
+    private Path externalOut;
+    private int serverPort = 6000;
 
     private ProxyBench(int clients, int messages, int cycles, int warmup, String seeBody) {
         this.clients = clients;
@@ -58,12 +62,21 @@ public final class ProxyBench {
         int messages = 20;
         int cycles = 300;
         int warmup = 30;
+        int externalPort = 0;
+        int serverPort = 6000;
+        Path externalOut = null;
         for (int i = 0; i < args.length; i += 2) {
             if (i + 1 >= args.length) {
                 usage("missing value after " + args[i]);
             }
+            if (args[i].equals("--external-out")) {
+                externalOut = Path.of(args[i + 1]);
+                continue;
+            }
             int value = Integer.parseInt(args[i + 1]);
             switch (args[i]) {
+                case "--external-proxy" -> externalPort = value;
+                case "--server-port" -> serverPort = value;
                 case "--clients" -> clients = value;
                 case "--messages" -> messages = value;
                 case "--cycles" -> cycles = value;
@@ -77,6 +90,12 @@ public final class ProxyBench {
         // "(see T objects...)" -> "objects...)" so the reply can carry a sequence number as its time.
         String body = see.substring(see.indexOf(' ', 5) + 1);
         ProxyBench bench = new ProxyBench(clients, messages, cycles, warmup, body);
+        if (externalPort > 0 && externalOut == null) {
+            usage("--external-proxy needs --external-out DIR (the proxy's --out, empty)");
+        }
+        bench.externalPort = externalPort;
+        bench.externalOut = externalOut;
+        bench.serverPort = serverPort;
         System.out.printf(Locale.ROOT, "%d clients x %d messages per 100 ms cycle, %d cycles (+%d warm-up), "
                 + "replies %d bytes; Java %s, %d CPUs%n", clients, messages, cycles, warmup, body.length() + 12,
                 System.getProperty("java.version"), Runtime.getRuntime().availableProcessors());
@@ -92,7 +111,11 @@ public final class ProxyBench {
 
     private static void usage(String problem) {
         System.err.println("proxy-bench: " + problem
-                + "\nusage: ProxyBench [--clients N] [--messages N] [--cycles N] [--warmup N]");
+                + "\nusage: ProxyBench [--clients N] [--messages N] [--cycles N] [--warmup N]"
+                + " [--external-proxy PORT --external-out DIR [--server-port 6000]]"
+                + "\n  --external-proxy: measure a proxy running in another process, started as"
+                + "\n  scenes proxy --server 127.0.0.1:6000 --listen PORT --out DIR --idle-timeout 2;"
+                + "\n  the benchmark's fake server then listens on 127.0.0.1:--server-port for it.");
         System.exit(2);
     }
 
@@ -106,15 +129,18 @@ public final class ProxyBench {
     }
 
     private Result run(boolean throughProxy) throws Exception {
-        try (FakeSoccerServer server = FakeSoccerServer.start(List.of("(sense_body 0)"))) {
+        boolean external = throughProxy && externalPort > 0;
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of("(sense_body 0)"), external ? serverPort : 0)) {
             server.respondWith((client, datagram) -> reply(datagram));
-            Path out = Files.createTempDirectory("proxy-bench");
+            Path out = external ? externalOut : Files.createTempDirectory("proxy-bench");
             LogProxy proxy = null;
             InetSocketAddress target = server.address(FakeSoccerServer.Port.PLAYER);
-            if (throughProxy) {
+            if (external) {
+                target = new InetSocketAddress(InetAddress.getLoopbackAddress(), externalPort);
+            } else if (throughProxy) {
                 proxy = LogProxy.start(new ProxyConfig(InetAddress.getLoopbackAddress(),
                         List.of(new Route(ClientKind.PLAYER, 0, target)), out, LogFormat.NATIVE,
-                        Duration.ofSeconds(60), Duration.ofSeconds(5), ProxyConfig.DEFAULT_LOG_BUFFER_BYTES, line -> { }));
+                        Duration.ofSeconds(60), Duration.ofSeconds(5), ProxyConfig.DEFAULT_LOG_BUFFER_BYTES, ProxyConfig.DEFAULT_MAX_CLIENTS, line -> { }));
                 target = new InetSocketAddress(InetAddress.getLoopbackAddress(), proxy.listenPort(ClientKind.PLAYER));
             }
             long[] rtt;
@@ -130,7 +156,11 @@ public final class ProxyBench {
             }
             String logs = "";
             boolean complete = true;
-            if (proxy != null) {
+            if (external) {
+                awaitLogs(out, server);
+                complete = logsComplete(out, server);
+                logs = "; logs " + (complete ? "complete" : "INCOMPLETE") + " (external proxy)";
+            } else if (proxy != null) {
                 proxy.close();
                 ProxyStats stats = proxy.stats();
                 complete = logsComplete(out, server);
@@ -138,11 +168,24 @@ public final class ProxyBench {
                         complete ? "complete" : "INCOMPLETE", stats.logged(), stats.notForwarded(),
                         stats.logBufferHighWater() / 1e6, stats.logBufferWaits());
             }
-            deleteTree(out);
+            if (!external) {
+                deleteTree(out);
+            }
             Arrays.sort(rtt);
             long sent = counts[0];
             return new Result(throughProxy ? "proxy" : "direct", sent, counts[2] - counts[3], percentile(rtt, 0.50),
                     percentile(rtt, 0.99), rtt.length == 0 ? 0 : rtt[rtt.length - 1], logs, complete);
+        }
+    }
+
+    /** An external proxy completes the logs once the clients fall silent (its idle timeout). */
+    private static void awaitLogs(Path out, FakeSoccerServer server) throws InterruptedException {
+        long deadline = System.nanoTime() + 120_000_000_000L;
+        for (FakeSoccerServer.Client client : server.clients()) {
+            Path file = out.resolve(client.team + "_" + client.unum + ".log");
+            while (!Files.exists(file) && System.nanoTime() < deadline) {
+                Thread.sleep(100);
+            }
         }
     }
 

@@ -66,7 +66,7 @@ class LogProxyIntegrationTest {
                 new Route(ClientKind.COACH, 0, server.address(FakeSoccerServer.Port.COACH)),
                 new Route(ClientKind.ONLINE_COACH, 0, server.address(FakeSoccerServer.Port.ONLINE_COACH)));
         proxy = LogProxy.start(new ProxyConfig(InetAddress.getLoopbackAddress(), routes, out, format, idle, endGrace,
-                ProxyConfig.DEFAULT_LOG_BUFFER_BYTES, events::add));
+                ProxyConfig.DEFAULT_LOG_BUFFER_BYTES, ProxyConfig.DEFAULT_MAX_CLIENTS, events::add));
     }
 
     private PlayerClient connect(ClientKind kind, String init) throws IOException {
