@@ -256,7 +256,7 @@ class LogProxyIntegrationTest {
 
     @Test
     void aVanishedClientIsClosedAfterTheIdleTimeoutWithItsLogComplete() throws Exception {
-        startProxy(LogFormat.NATIVE, Duration.ofMillis(400), Duration.ofSeconds(60));
+        startProxy(LogFormat.NATIVE, Duration.ofMillis(1500), Duration.ofSeconds(60));
         PlayerClient client = connect(ClientKind.PLAYER, "(init University (version 9))\0");
         FakeSoccerServer.Client seen = server.clients().get(0);
         for (int i = 0; i < 5; i++) {
