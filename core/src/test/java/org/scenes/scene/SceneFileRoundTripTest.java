@@ -1,0 +1,172 @@
+package org.scenes.scene;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+class SceneFileRoundTripTest {
+    @TempDir
+    Path dir;
+
+    private final Grid grid = new Grid(7, -60, 60, new double[] {0.7, 3, 20});
+    private final SceneFileHeader header = SceneFileHeader.of(grid,
+            new SceneSource("Carleton_3.lsf.gz", SceneFixtures.OBSERVER));
+
+    @ParameterizedTest
+    @ValueSource(strings = {"scenes.json", "scenes.json.gz"})
+    void everyObjectKindAndActionTypeSurvivesARoundTrip(String name) throws IOException {
+        List<Scene> scenes = SceneFixtures.everyKind(grid);
+        Path file = dir.resolve(name);
+        SceneFileWriter.write(file, new SceneFile(header, scenes));
+
+        SceneFile read = SceneFileReader.read(file);
+
+        assertEquals(header, read.header());
+        assertEquals(scenes, read.scenes());
+        assertEquals(name.endsWith(".gz"), isGzip(file));
+    }
+
+    @Test
+    void roundTripCoversEveryKindRelationAndActionType() {
+        List<Scene> scenes = SceneFixtures.everyKind(grid);
+        for (ObjectKind kind : ObjectKind.values()) {
+            assertTrue(scenes.stream().flatMap(s -> s.objects().stream()).anyMatch(o -> o.kind() == kind), kind::toString);
+        }
+        for (Relation relation : Relation.values()) {
+            assertTrue(scenes.stream().flatMap(s -> s.objects().stream()).anyMatch(o -> o.relation() == relation),
+                    relation::toString);
+        }
+        for (ActionType type : ActionType.values()) {
+            if (type != ActionType.NONE) {
+                assertTrue(scenes.stream().flatMap(s -> s.actions().stream()).anyMatch(a -> a.type() == type),
+                        type::toString);
+            }
+        }
+    }
+
+    @Test
+    void aTruncatedFileNamesFileLineAndColumn() throws IOException {
+        Path file = dir.resolve("whole.json");
+        SceneFileWriter.write(file, new SceneFile(header, SceneFixtures.everyKind(grid)));
+        byte[] bytes = Files.readAllBytes(file);
+        Path truncated = dir.resolve("truncated.json");
+        Files.write(truncated, java.util.Arrays.copyOf(bytes, bytes.length * 2 / 3));
+
+        SceneFileException error = assertThrows(SceneFileException.class, () -> SceneFileReader.read(truncated));
+
+        assertTrue(error.getMessage().startsWith(truncated + ":"), error.getMessage());
+        assertTrue(error.line() > 1, "line of the cut: " + error.getMessage());
+        assertTrue(error.getMessage().contains("truncated"), error.getMessage());
+    }
+
+    @Test
+    void aTruncatedGzipFileIsReportedNotHalfLoaded() throws IOException {
+        Path file = dir.resolve("whole.json.gz");
+        SceneFileWriter.write(file, new SceneFile(header, SceneFixtures.everyKind(grid)));
+        byte[] bytes = Files.readAllBytes(file);
+        Path truncated = dir.resolve("truncated.json.gz");
+        Files.write(truncated, java.util.Arrays.copyOf(bytes, bytes.length / 2));
+
+        SceneFileException error = assertThrows(SceneFileException.class, () -> SceneFileReader.read(truncated));
+
+        assertTrue(error.getMessage().contains(truncated.toString()), error.getMessage());
+        assertTrue(error.getMessage().contains("truncated"), error.getMessage());
+    }
+
+    @Test
+    void aFileFromAFutureFormatSaysSo() throws IOException {
+        Path file = dir.resolve("future.json");
+        Files.writeString(file, "{\"format\": 99, \"grid\": {\"columns\": 5, \"bounds\": [1, 5]}, \"scenes\": []}\n");
+
+        SceneFileException error = assertThrows(SceneFileException.class, () -> SceneFileReader.read(file));
+
+        assertEquals(1, error.line());
+        assertTrue(error.getMessage().contains("format 99 is newer"), error.getMessage());
+    }
+
+    @Test
+    void aFileWithoutFormatIsNotTakenForAScenefile() throws IOException {
+        Path file = dir.resolve("other.json");
+        Files.writeString(file, "{\"name\": \"something else\"}");
+
+        SceneFileException error = assertThrows(SceneFileException.class, () -> SceneFileReader.read(file));
+
+        assertTrue(error.getMessage().contains("'format' first"), error.getMessage());
+    }
+
+    @Test
+    void aCellOutsideTheGridIsRejectedWithItsLine() throws IOException {
+        Path file = dir.resolve("badcell.json");
+        Files.writeString(file, "{\"format\": 1,\n\"grid\": {\"columns\": 5, \"rows\": 3, \"bounds\": [1, 5]},\n"
+                + "\"scenes\": [\n{\"cycle\": 1, \"objects\": [{\"kind\": \"ball\", \"name\": \"b\", \"cell\": [5, 0]}],"
+                + " \"actions\": []}\n]}\n");
+
+        SceneFileException error = assertThrows(SceneFileException.class, () -> SceneFileReader.read(file));
+
+        assertEquals(4, error.line());
+        assertTrue(error.getMessage().contains("outside"), error.getMessage());
+    }
+
+    @Test
+    void anUnknownActionParameterIsAnError() throws IOException {
+        Path file = dir.resolve("badaction.json");
+        Files.writeString(file, "{\"format\": 1, \"grid\": {\"columns\": 5, \"bounds\": [1, 5]}, \"scenes\": [\n"
+                + "{\"cycle\": 1, \"objects\": [], \"actions\": [{\"type\": \"turn\", \"power\": 3}]}]}");
+
+        SceneFileException error = assertThrows(SceneFileException.class, () -> SceneFileReader.read(file));
+
+        assertTrue(error.getMessage().contains("has no parameter 'power'"), error.getMessage());
+    }
+
+    @Test
+    void aFailedWriteLeavesThePreviousFileUntouched() throws IOException {
+        Path file = dir.resolve("kept.json");
+        SceneFileWriter.write(file, new SceneFile(header, SceneFixtures.everyKind(grid)));
+        byte[] before = Files.readAllBytes(file);
+
+        try (SceneFileWriter writer = SceneFileWriter.create(file, header)) {
+            writer.write(SceneFixtures.everyKind(grid).get(0));
+            // no commit: as if the conversion failed half-way
+        }
+
+        assertEquals(List.of(file), listDir());
+        assertTrue(java.util.Arrays.equals(before, Files.readAllBytes(file)));
+    }
+
+    @Test
+    void streamingReaderYieldsScenesOneByOne() throws IOException {
+        Path file = dir.resolve("stream.json");
+        List<Scene> scenes = SceneFixtures.everyKind(grid);
+        SceneFileWriter.write(file, new SceneFile(header, scenes));
+
+        try (SceneFileReader reader = SceneFileReader.open(file)) {
+            assertEquals(grid, reader.header().grid());
+            for (Scene expected : scenes) {
+                assertTrue(reader.hasNext());
+                assertEquals(expected, reader.next());
+            }
+            assertFalse(reader.hasNext());
+        }
+    }
+
+    private List<Path> listDir() throws IOException {
+        try (var files = Files.list(dir)) {
+            return files.toList();
+        }
+    }
+
+    private static boolean isGzip(Path file) throws IOException {
+        byte[] bytes = Files.readAllBytes(file);
+        return bytes.length > 2 && (bytes[0] & 0xff) == 0x1f && (bytes[1] & 0xff) == 0x8b;
+    }
+}

@@ -1,0 +1,73 @@
+package org.scenes.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import com.networknt.schema.JsonSchema;
+import com.networknt.schema.JsonSchemaFactory;
+import com.networknt.schema.SpecVersion;
+import com.networknt.schema.ValidationMessage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scenes.scene.Action;
+import org.scenes.scene.Grid;
+import org.scenes.scene.ObjectKind;
+import org.scenes.scene.Observer;
+import org.scenes.scene.Relation;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SceneFile;
+import org.scenes.scene.SceneFileHeader;
+import org.scenes.scene.SceneFileWriter;
+import org.scenes.scene.SceneSource;
+import org.scenes.scene.SeenObject;
+import org.scenes.scene.Side;
+
+/** The published JSON Schema accepts what the writer writes, and rejects what the reader rejects. */
+class SceneSchemaTest {
+    private static final Path SCHEMA = Path.of(System.getProperty("scenes.root"), "docs", "scene-file.schema.json");
+    private final ObjectMapper mapper = new ObjectMapper();
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void writtenFilesConformToTheSchema() throws IOException {
+        Grid grid = Grid.DEFAULT;
+        Observer observer = new Observer("Carleton", Side.LEFT, 3);
+        SeenObject player = new SeenObject(ObjectKind.PLAYER, "p", "University", 7, true, Relation.OPPONENT,
+                10.5, -20, 0.2, -1, 45, 30, 12, 'k', grid.cell(10.5, -20));
+        List<Scene> scenes = List.of(
+                new Scene(3, observer, List.of(player, SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, 0.6, 3, grid)),
+                        List.of(Action.kick(100, -10), Action.turnNeck(30))),
+                new Scene(4, new Observer("University", Side.RIGHT, 1),
+                        List.of(SeenObject.simple(ObjectKind.GOAL, "g l", Relation.OWN, 20, 1, grid)), List.of(Action.move(-10, 3))));
+        Path file = dir.resolve("s.json");
+        SceneFileWriter.write(file, new SceneFile(SceneFileHeader.of(grid, new SceneSource("x.lsf", observer)), scenes));
+
+        Set<ValidationMessage> errors = schema().validate(mapper.readTree(file.toFile()));
+
+        assertEquals(Set.of(), errors);
+    }
+
+    @Test
+    void theSchemaRejectsAFutureFormatAndAMissingCell() throws IOException {
+        JsonNode future = mapper.readTree("{\"format\":2,\"grid\":{\"columns\":5,\"bounds\":[1,5]},\"scenes\":[]}");
+        assertFalse(schema().validate(future).isEmpty());
+        ObjectNode noCell = (ObjectNode) mapper.readTree("{\"format\":1,\"grid\":{\"columns\":5,\"bounds\":[1,5]},"
+                + "\"scenes\":[{\"cycle\":1,\"objects\":[{\"kind\":\"ball\",\"name\":\"b\"}],\"actions\":[]}]}");
+        assertFalse(schema().validate(noCell).isEmpty());
+    }
+
+    private JsonSchema schema() throws IOException {
+        return JsonSchemaFactory.getInstance(SpecVersion.VersionFlag.V202012)
+                .getSchema(Files.readString(SCHEMA));
+    }
+}
