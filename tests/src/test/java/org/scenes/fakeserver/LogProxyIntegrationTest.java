@@ -61,12 +61,16 @@ class LogProxyIntegrationTest {
     }
 
     private void startProxy(LogFormat format, Duration idle, Duration endGrace) throws IOException {
+        startProxy(format, idle, endGrace, ProxyConfig.DEFAULT_LOG_BUFFER_BYTES);
+    }
+
+    private void startProxy(LogFormat format, Duration idle, Duration endGrace, int logBuffer) throws IOException {
         List<Route> routes = List.of(
                 new Route(ClientKind.PLAYER, 0, server.address(FakeSoccerServer.Port.PLAYER)),
                 new Route(ClientKind.COACH, 0, server.address(FakeSoccerServer.Port.COACH)),
                 new Route(ClientKind.ONLINE_COACH, 0, server.address(FakeSoccerServer.Port.ONLINE_COACH)));
         proxy = LogProxy.start(new ProxyConfig(InetAddress.getLoopbackAddress(), routes, out, format, idle, endGrace,
-                ProxyConfig.DEFAULT_LOG_BUFFER_BYTES, ProxyConfig.DEFAULT_MAX_CLIENTS, events::add));
+                logBuffer, ProxyConfig.DEFAULT_MAX_CLIENTS, events::add));
     }
 
     private PlayerClient connect(ClientKind kind, String init) throws IOException {
@@ -252,6 +256,34 @@ class LogProxyIntegrationTest {
             assertEquals("# end proxy stopped", log.lastComment());
         }
         assertEquals(4, logFiles().size(), logFiles().toString());
+    }
+
+    @Test
+    void theSmallestLogBufferStillLogsEverything() throws Exception {
+        int buffer = 1 << 18;
+        startProxy(LogFormat.NATIVE, Duration.ofSeconds(60), Duration.ofSeconds(60), buffer);
+        for (int i = 0; i < 3; i++) {
+            connect(ClientKind.PLAYER, "(init University (version 9))\0");
+        }
+        Random random = new Random(18);
+        for (int round = 0; round < 100; round++) {
+            for (int i = 0; i < clients.size(); i++) {
+                byte[] datagram = new byte[4000 + random.nextInt(4000)];
+                random.nextBytes(datagram);
+                clients.get(i).send(datagram);
+                server.clients().get(i).send(datagram);
+            }
+            PlayerClient.sleep(2); // gentle enough for default socket buffers: UDP drops would stall the test
+        }
+        awaitDelivery();
+        proxy.close();
+        for (int i = 0; i < clients.size(); i++) {
+            FakeSoccerServer.Client seen = server.clients().get(i);
+            ProxyLogs log = ProxyLogs.read(out.resolve("University_" + seen.unum + ".log"));
+            assertSameDatagrams(unpadded(clients.get(i).sent()), log.messages(Direction.CLIENT_TO_SERVER), "logged c2s");
+            assertSameDatagrams(unpadded(seen.sent()), log.messages(Direction.SERVER_TO_CLIENT), "logged s2c");
+        }
+        assertTrue(proxy.stats().logBufferHighWater() <= buffer, "memory between forwarding and writing stays bounded");
     }
 
     @Test
