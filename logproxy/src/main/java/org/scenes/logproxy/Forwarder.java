@@ -146,10 +146,16 @@ final class Forwarder implements Runnable {
         }
     }
 
-    private void fromClients(Listener listener) throws IOException {
+    private void fromClients(Listener listener) {
         for (int i = 0; i < BATCH; i++) {
             buffer.clear();
-            SocketAddress from = listener.channel.receive(buffer);
+            SocketAddress from;
+            try {
+                from = listener.channel.receive(buffer);
+            } catch (IOException e) {
+                events.accept("receive failed on the " + describe(listener.route.kind()) + " port: " + e.getMessage());
+                return;
+            }
             if (from == null) {
                 return;
             }
@@ -173,7 +179,7 @@ final class Forwarder implements Runnable {
         }
     }
 
-    private void fromServer(Session session) throws IOException {
+    private void fromServer(Session session) {
         for (int i = 0; i < BATCH; i++) {
             buffer.clear();
             SocketAddress from;

@@ -34,7 +34,6 @@ public final class LogProxy implements AutoCloseable {
         writing = new Thread(writer, "scenes-proxy-log-writer");
         ring.consumer(writing);
         forwarding = new Thread(forwarder, "scenes-proxy-forwarder");
-        forwarding.setPriority(Thread.MAX_PRIORITY);
         writing.start();
         forwarding.start();
     }
