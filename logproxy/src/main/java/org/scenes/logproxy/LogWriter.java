@@ -82,6 +82,16 @@ final class LogWriter implements Runnable {
     }
 
     private void record(int type, int session, long nanos, byte[] data, int offset, int length) {
+        try {
+            handle(type, session, nanos, data, offset, length);
+        } catch (RuntimeException e) {
+            // Whatever goes wrong, keep draining: a writer that stops would stall forwarding.
+            errors.incrementAndGet();
+            events.accept("log writer error: " + e);
+        }
+    }
+
+    private void handle(int type, int session, long nanos, byte[] data, int offset, int length) {
         switch (type) {
             case RecordType.OPEN -> open(session, nanos, new String(data, offset, length, StandardCharsets.UTF_8));
             case RecordType.TO_SERVER, RecordType.TO_CLIENT -> message(session, nanos,
