@@ -23,52 +23,78 @@ public final class MessageEscapes {
 
     /** Escapes {@code length} bytes from {@code offset}. */
     public static String escape(byte[] bytes, int offset, int length) {
-        StringBuilder out = new StringBuilder(length + 16);
-        appendEscaped(out, bytes, offset, length);
-        return out.toString();
+        byte[] out = new byte[maxEscapedLength(length)];
+        int end = escape(bytes, offset, length, out, 0);
+        return new String(out, 0, end, StandardCharsets.UTF_8);
     }
 
-    /** Appends the escaped form of the bytes to {@code out}, avoiding an intermediate string. */
+    /** Appends the escaped form of the bytes to {@code out}. */
     public static void appendEscaped(StringBuilder out, byte[] bytes, int offset, int length) {
+        out.append(escape(bytes, offset, length));
+    }
+
+    /** Room {@link #escape(byte[], int, int, byte[], int)} may need for {@code length} bytes. */
+    public static int maxEscapedLength(int length) {
+        return 4 * length;
+    }
+
+    /**
+     * Writes the escaped form (UTF-8) of {@code length} bytes from {@code offset} into
+     * {@code target} at {@code targetOffset}, which needs {@link #maxEscapedLength} bytes of
+     * room; returns the end of what was written. Allocates nothing, for the proxy's writer.
+     */
+    public static int escape(byte[] bytes, int offset, int length, byte[] target, int targetOffset) {
         int end = offset + length;
         int i = offset;
+        int o = targetOffset;
         while (i < end) {
             int b = bytes[i] & 0xFF;
             if (b >= 0x20 && b < 0x7F) {
                 if (b == '\\') {
-                    out.append("\\\\");
-                } else {
-                    out.append((char) b);
+                    target[o++] = '\\';
                 }
+                target[o++] = (byte) b;
                 i++;
             } else if (b < 0x80) {
-                appendControl(out, b);
+                o = escapeControl(target, o, b);
                 i++;
             } else {
                 int sequence = wellFormedLength(bytes, i, end);
                 if (sequence == 0) {
-                    appendHex(out, b);
+                    o = escapeHex(target, o, b);
                     i++;
                 } else {
-                    out.append(new String(bytes, i, sequence, StandardCharsets.UTF_8));
+                    System.arraycopy(bytes, i, target, o, sequence);
+                    o += sequence;
                     i += sequence;
                 }
             }
         }
+        return o;
     }
 
-    private static void appendControl(StringBuilder out, int b) {
-        switch (b) {
-            case '\n' -> out.append("\\n");
-            case '\r' -> out.append("\\r");
-            case '\t' -> out.append("\\t");
-            case 0 -> out.append("\\0");
-            default -> appendHex(out, b);
+    private static int escapeControl(byte[] target, int o, int b) {
+        char named = switch (b) {
+            case '\n' -> 'n';
+            case '\r' -> 'r';
+            case '\t' -> 't';
+            case 0 -> '0';
+            default -> 0;
+        };
+        if (named == 0) {
+            return escapeHex(target, o, b);
         }
+        target[o] = '\\';
+        target[o + 1] = (byte) named;
+        return o + 2;
     }
 
-    private static void appendHex(StringBuilder out, int b) {
-        out.append("\\x").append(HEX[b >>> 4]).append(HEX[b & 0xF]);
+    private static int escapeHex(byte[] target, int o, int b) {
+        target[o] = '\\';
+        target[o + 1] = 'x';
+        target[o + 2] = (byte) HEX[b >>> 4];
+        target[o + 3] = (byte) HEX[b & 0xF];
+        return o + 4;
     }
 
     /**

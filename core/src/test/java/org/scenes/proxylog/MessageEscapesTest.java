@@ -97,6 +97,19 @@ class MessageEscapesTest {
     }
 
     @Test
+    void escapingIntoBytesWritesTheSameUtf8AtTheGivenOffset() {
+        Random random = new Random(7);
+        for (int round = 0; round < 2000; round++) {
+            byte[] original = new byte[random.nextInt(40)];
+            random.nextBytes(original);
+            byte[] target = new byte[3 + MessageEscapes.maxEscapedLength(original.length)];
+            int end = MessageEscapes.escape(original, 0, original.length, target, 3);
+            assertArrayEquals(MessageEscapes.escape(original).getBytes(StandardCharsets.UTF_8),
+                    java.util.Arrays.copyOfRange(target, 3, end));
+        }
+    }
+
+    @Test
     void unescapeAcceptsLowerCaseHex() {
         assertArrayEquals(bytes(0xAB, 'x'), MessageEscapes.unescape("\\xabx"));
     }

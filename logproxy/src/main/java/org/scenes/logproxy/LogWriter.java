@@ -1,9 +1,8 @@
 package org.scenes.logproxy;
 
-import java.io.BufferedWriter;
+import java.io.BufferedOutputStream;
 import java.io.IOException;
-import java.io.OutputStreamWriter;
-import java.io.Writer;
+import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
@@ -34,7 +33,8 @@ final class LogWriter implements Runnable {
     private final Consumer<String> events;
     private final Instant started;
     private final Map<Integer, SessionLog> sessions = new HashMap<>();
-    private final StringBuilder line = new StringBuilder(8192);
+    /** One formatted line; big enough for the largest datagram escaped, plus time and direction. */
+    private final byte[] line = new byte[MessageEscapes.maxEscapedLength(1 << 16) + 64];
     final AtomicLong logged = new AtomicLong();
     final AtomicLong closed = new AtomicLong();
     final AtomicLong errors = new AtomicLong();
@@ -113,11 +113,9 @@ final class LogWriter implements Runnable {
         sessions.put(session, log);
         try {
             log.temporary = directory.resolve(".session-" + session + "-" + ProcessHandle.current().pid() + ".part");
-            log.out = new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(log.temporary),
-                    StandardCharsets.UTF_8), 1 << 16);
+            log.out = new BufferedOutputStream(Files.newOutputStream(log.temporary), 1 << 16);
             if (format == LogFormat.NATIVE) {
-                log.out.write(ProxyLogLine.HEADER);
-                log.out.write('\n');
+                log.out.write((ProxyLogLine.HEADER + "\n").getBytes(StandardCharsets.UTF_8));
             }
         } catch (IOException e) {
             fail(log, e);
@@ -141,14 +139,18 @@ final class LogWriter implements Runnable {
                 log.pendingIdentity = true;
             }
         }
-        line.setLength(0);
+        int end = 0;
         if (format == LogFormat.NATIVE) {
-            ProxyLogLine.appendSeconds(line, nanos / 1000);
-            line.append(' ').append(direction.token()).append(' ');
+            end = writeSeconds(line, nanos / 1000);
+            line[end++] = ' ';
+            line[end++] = direction == Direction.CLIENT_TO_SERVER ? (byte) 'c' : (byte) 's';
+            line[end++] = '2';
+            line[end++] = direction == Direction.CLIENT_TO_SERVER ? (byte) 's' : (byte) 'c';
+            line[end++] = ' ';
         }
-        MessageEscapes.appendEscaped(line, data, offset, length);
-        line.append('\n');
-        write(log, line);
+        end = MessageEscapes.escape(data, offset, length, line, end);
+        line[end++] = '\n';
+        write(log, line, end);
         log.messages++;
         logged.incrementAndGet();
         if (log.pendingIdentity) {
@@ -162,17 +164,37 @@ final class LogWriter implements Runnable {
         if (log == null || format != LogFormat.NATIVE) {
             return;
         }
-        line.setLength(0);
-        line.append("# ").append(text.replace('\n', ' ').replace('\r', ' ')).append('\n');
-        write(log, line);
+        byte[] comment = ("# " + text.replace('\n', ' ').replace('\r', ' ') + "\n").getBytes(StandardCharsets.UTF_8);
+        write(log, comment, comment.length);
     }
 
-    private void write(SessionLog log, CharSequence text) {
+    /** Seconds with six fraction digits, written without allocating; returns the end. */
+    static int writeSeconds(byte[] target, long micros) {
+        long seconds = micros / 1_000_000L;
+        int digits = 1;
+        for (long rest = seconds / 10; rest > 0; rest /= 10) {
+            digits++;
+        }
+        for (int i = digits - 1; i >= 0; i--) {
+            target[i] = (byte) ('0' + seconds % 10);
+            seconds /= 10;
+        }
+        int end = digits;
+        target[end++] = '.';
+        long fraction = micros % 1_000_000L;
+        for (int i = 5; i >= 0; i--) {
+            target[end + i] = (byte) ('0' + fraction % 10);
+            fraction /= 10;
+        }
+        return end + 6;
+    }
+
+    private void write(SessionLog log, byte[] bytes, int length) {
         if (log.out == null) {
             return;
         }
         try {
-            log.out.append(text);
+            log.out.write(bytes, 0, length);
             log.dirty = true;
         } catch (IOException e) {
             fail(log, e);
@@ -262,7 +284,7 @@ final class LogWriter implements Runnable {
         final String description;
         final SessionIdentity identity = new SessionIdentity();
         Path temporary;
-        Writer out;
+        OutputStream out;
         long messages;
         boolean dirty;
         boolean pendingIdentity;
