@@ -91,10 +91,6 @@ final class Forwarder implements Runnable {
         throw new IllegalArgumentException("no " + describe(kind) + " port");
     }
 
-    int openSessions() {
-        return sessions.size();
-    }
-
     void stop() {
         running = false;
         selector.wakeup();
@@ -130,6 +126,13 @@ final class Forwarder implements Runnable {
         } catch (IOException e) {
             events.accept("forwarding stopped: " + e);
         } finally {
+            // What the kernel already holds for us still goes through and into the logs.
+            for (Listener listener : listeners) {
+                fromClients(listener);
+            }
+            for (Session session : new ArrayList<>(sessions)) {
+                fromServer(session);
+            }
             for (Session session : new ArrayList<>(sessions)) {
                 close(session, "proxy stopped");
             }
