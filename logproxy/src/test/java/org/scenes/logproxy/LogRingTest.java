@@ -61,7 +61,38 @@ class LogRingTest {
             assertArrayEquals(payloads.get(i), record.payload(), "record " + i);
         }
         assertTrue(ring.isEmpty());
-        assertTrue(ring.waits() > 0, "the producer should have waited for the slow consumer");
         assertTrue(ring.highWater() <= ProxyConfig.MIN_LOG_BUFFER_BYTES);
+    }
+
+    @Test
+    void aFullRingMakesTheProducerWaitAndLosesNothing() throws Exception {
+        LogRing ring = new LogRing(ProxyConfig.MIN_LOG_BUFFER_BYTES);
+        int count = 20;
+        byte[] payload = new byte[60_000];
+        Thread producer = new Thread(() -> {
+            for (int i = 0; i < count; i++) {
+                payload[0] = (byte) i;
+                ring.publish(RecordType.TO_CLIENT, 7, i, payload);
+            }
+        });
+        producer.start();
+        long deadline = System.currentTimeMillis() + 30_000;
+        while (ring.waits() == 0) {
+            assertTrue(System.currentTimeMillis() < deadline, "the producer never found the ring full");
+            Thread.sleep(1);
+        }
+        assertTrue(producer.isAlive(), "no consumer yet: the producer must be waiting");
+        List<Byte> firstBytes = new ArrayList<>();
+        while (producer.isAlive() || !ring.isEmpty()) {
+            ring.drain((type, session, nanos, data, offset, length) -> {
+                assertEquals(60_000, length);
+                firstBytes.add(data[offset]);
+            });
+            assertTrue(System.currentTimeMillis() < deadline, "the producer never finished");
+        }
+        assertEquals(count, firstBytes.size());
+        for (int i = 0; i < count; i++) {
+            assertEquals((byte) i, firstBytes.get(i));
+        }
     }
 }
