@@ -12,7 +12,8 @@ import picocli.CommandLine.Spec;
 /** The top-level {@code scenes} command; subcommands do the work. */
 @Command(name = "scenes", mixinStandardHelpOptions = true, versionProvider = ScenesCommand.Version.class,
         description = "Learn to play RoboCup 2D soccer by watching another agent: record, convert, validate, play.",
-        subcommands = {CommandLine.HelpCommand.class, PluginsCommand.class, ProxyCommand.class})
+        subcommands = {CommandLine.HelpCommand.class, PluginsCommand.class, ConvertCommand.class,
+                ShowCommand.class, StatsCommand.class, ExportCommand.class, ProxyCommand.class})
 final class ScenesCommand implements Runnable {
     @Spec
     CommandLine.Model.CommandSpec spec;

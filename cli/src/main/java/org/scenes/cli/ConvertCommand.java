@@ -1,0 +1,289 @@
+package org.scenes.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
+import me.tongfei.progressbar.ConsoleProgressBarConsumer;
+import me.tongfei.progressbar.ProgressBar;
+import me.tongfei.progressbar.ProgressBarBuilder;
+import org.scenes.convert.ConversionReport;
+import org.scenes.convert.DropReason;
+import org.scenes.convert.MalformedLine;
+import org.scenes.convert.SceneConverter;
+import org.scenes.scene.Grid;
+import org.scenes.scene.Observer;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SceneFileHeader;
+import org.scenes.scene.SceneFileWriter;
+import org.scenes.scene.SceneSource;
+import picocli.CommandLine.ArgGroup;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.Spec;
+
+/** {@code scenes convert}: player logs to scene files, with a summary of what was kept and dropped. */
+@Command(name = "convert", mixinStandardHelpOptions = true,
+        description = {"Convert player logs (.lsf, the scenes proxy's .log, timestamped captures; gzip or plain)"
+                + " into scenes: each see with the actions sent after it. Rules: docs/conversion.md."})
+final class ConvertCommand implements Callable<Integer> {
+    /** Malformed-line warnings printed; the rest are only counted. */
+    private static final int WARNINGS_SHOWN = 50;
+    private static final long LARGE_INPUT = 32L << 20;
+
+    @Spec
+    CommandSpec spec;
+
+    @ParentCommand
+    ScenesCommand top;
+
+    @Parameters(paramLabel = "LOG", arity = "1..*", description = "Player logs to convert.")
+    List<Path> logs;
+
+    @ArgGroup(exclusive = true, multiplicity = "1")
+    Output output;
+
+    static final class Output {
+        @Option(names = {"-o", "--output"}, paramLabel = "OUT.json[.gz]",
+                description = "One scene file for all logs (gzip when the name ends in .gz).")
+        Path file;
+
+        @Option(names = "--out-dir", paramLabel = "DIR",
+                description = "One scene file per log: DIR/<log name>.json.gz.")
+        Path directory;
+    }
+
+    @Mixin
+    GridOptions gridOptions;
+
+    @Option(names = "--strict", description = "Stop at the first malformed line instead of skipping it.")
+    boolean strict;
+
+    private int warningsShown;
+
+    @Override
+    public Integer call() throws IOException {
+        Grid grid = gridOptions.grid();
+        PrintWriter err = spec.commandLine().getErr();
+        SceneConverter converter = new SceneConverter(grid, strict, line -> warn(err, line));
+        ConversionReport total = new ConversionReport();
+        List<Path> written = new ArrayList<>();
+        long started = System.nanoTime();
+        try (Progress progress = Progress.start(logs)) {
+            if (output.file != null) {
+                try (LazyWriter writer = new LazyWriter(output.file, grid, sourceName(logs))) {
+                    for (Path log : logs) {
+                        total.add(converter.convert(log, writer::write, progress::step));
+                        progress.logDone(log);
+                    }
+                    writer.commit();
+                }
+                written.add(output.file);
+            } else {
+                Files.createDirectories(output.directory);
+                List<String> names = outputNames(logs);
+                for (int i = 0; i < logs.size(); i++) {
+                    Path log = logs.get(i);
+                    Path target = output.directory.resolve(names.get(i) + ".json.gz");
+                    try (LazyWriter writer = new LazyWriter(target, grid, log.getFileName().toString())) {
+                        total.add(converter.convert(log, writer::write, progress::step));
+                        writer.commit();
+                    }
+                    progress.logDone(log);
+                    written.add(target);
+                }
+            }
+        }
+        if (warningsShown < total.malformed()) {
+            err.printf("scenes: warning: %d more malformed lines not shown%n", total.malformed() - warningsShown);
+        }
+        err.flush();
+        printSummary(spec.commandLine().getOut(), total, grid, written, (System.nanoTime() - started) / 1e9);
+        return ExitCodes.OK;
+    }
+
+    private void warn(PrintWriter err, MalformedLine line) {
+        if (warningsShown < WARNINGS_SHOWN) {
+            err.println("scenes: warning: " + line.describe());
+            warningsShown++;
+        }
+    }
+
+    /**
+     * A bar in MB of log text on a terminal, for several logs or a large one; silent when piped.
+     * The total of gzip logs is unknown until read, so it is re-estimated after each log from
+     * the compression ratio seen so far.
+     */
+    private static final class Progress implements AutoCloseable {
+        private final ProgressBar bar;
+        private final long compressedTotal;
+        private long compressedDone;
+        private long textDone;
+
+        private Progress(ProgressBar bar, long compressedTotal) {
+            this.bar = bar;
+            this.compressedTotal = compressedTotal;
+        }
+
+        static Progress start(List<Path> logs) throws IOException {
+            long size = 0;
+            for (Path log : logs) {
+                size += Files.isRegularFile(log) ? Files.size(log) : 0;
+            }
+            if (System.console() == null || (logs.size() < 2 && size < LARGE_INPUT)) {
+                return new Progress(null, size);
+            }
+            // about 10 bytes of text per gzip byte in recorded games; corrected as logs are read
+            boolean compressed = logs.stream().anyMatch(l -> l.getFileName().toString().endsWith(".gz"));
+            ProgressBar bar = new ProgressBarBuilder().setTaskName("Converting")
+                    .setInitialMax(compressed ? size * 10 : size).setUnit(" MB", 1L << 20)
+                    .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build();
+            return new Progress(bar, size);
+        }
+
+        void step(long textBytes) {
+            textDone += textBytes;
+            if (bar != null) {
+                bar.stepBy(textBytes);
+            }
+        }
+
+        void logDone(Path log) throws IOException {
+            compressedDone += Files.isRegularFile(log) ? Files.size(log) : 0;
+            if (bar != null && compressedDone > 0) {
+                double ratio = (double) textDone / compressedDone;
+                bar.maxHint(textDone + (long) (ratio * Math.max(0, compressedTotal - compressedDone)));
+            }
+        }
+
+        @Override
+        public void close() {
+            if (bar != null) {
+                bar.close();
+            }
+        }
+    }
+
+    /**
+     * One output name per log: the log's name without extensions, prefixed with its directory's
+     * name when two logs share a name (game1/Carleton_1 and game2/Carleton_1).
+     */
+    static List<String> outputNames(List<Path> logs) {
+        Map<String, Long> counts = logs.stream().collect(Collectors.groupingBy(ConvertCommand::baseName, Collectors.counting()));
+        List<String> names = new ArrayList<>();
+        for (Path log : logs) {
+            String name = baseName(log);
+            Path parent = log.toAbsolutePath().getParent();
+            if (counts.get(name) > 1 && parent != null && parent.getFileName() != null) {
+                name = parent.getFileName() + "-" + name;
+            }
+            if (names.contains(name)) {
+                throw new UsageException("--out-dir: two logs would both be written to " + name
+                        + ".json.gz; convert them separately or with -o");
+            }
+            names.add(name);
+        }
+        return names;
+    }
+
+    static String baseName(Path log) {
+        String name = log.getFileName().toString();
+        for (String suffix : new String[] {".gz", ".lsf", ".log", ".txt"}) {
+            if (name.endsWith(suffix) && name.length() > suffix.length()) {
+                name = name.substring(0, name.length() - suffix.length());
+            }
+        }
+        return name;
+    }
+
+    private static String sourceName(List<Path> logs) {
+        return logs.stream().map(p -> p.getFileName().toString()).collect(Collectors.joining(", "));
+    }
+
+    private static void printSummary(PrintWriter out, ConversionReport report, Grid grid, List<Path> written,
+                                     double seconds) {
+        out.printf(Locale.ROOT, "%-22s %s%n", "Logs read", report.logs());
+        out.printf(Locale.ROOT, "%-22s %s (%.1f MB of text)%n", "Lines read", report.lines(), report.bytes() / 1e6);
+        out.printf(Locale.ROOT, "%-22s %s (%s repeated while paused, collapsed)%n", "See messages", report.sees(), report.repeatedSees());
+        out.printf(Locale.ROOT, "%-22s %s  (grid %s)%n", "Scenes written", report.scenes(), grid.describe());
+        out.printf(Locale.ROOT, "%-22s %s%n", "Scenes dropped", report.droppedTotal());
+        for (DropReason reason : DropReason.values()) {
+            out.printf(Locale.ROOT, "  %-20s %s%n", reason.label(), report.dropped(reason));
+        }
+        out.printf(Locale.ROOT, "%-22s %s%n", "Commands by type", counts(report.commands()));
+        out.printf(Locale.ROOT, "%-22s %s%n", "Scene actions", counts(report.actions()));
+        out.printf(Locale.ROOT, "%-22s %s (sent after a scene had its action; not kept)%n", "Extra actions", report.extraActions());
+        out.printf(Locale.ROOT, "%-22s %s%n", "Ill-formed commands", report.illFormedCommands());
+        out.printf(Locale.ROOT, "%-22s %s%n", "Unknown messages",
+                report.unknown().isEmpty() ? "0" : report.unknown().entrySet().stream()
+                        .map(e -> e.getKey() + " " + e.getValue()).collect(Collectors.joining(", ")));
+        out.printf(Locale.ROOT, "%-22s %s%n", "Malformed lines", report.malformed());
+        for (Path file : written) {
+            out.printf(Locale.ROOT, "%-22s %s%n", "Written", file);
+        }
+        out.printf(Locale.ROOT, "%-22s %.2f s (%.1f MB/s of log text, scene files included)%n", "Time", seconds,
+                seconds > 0 ? report.bytes() / 1e6 / seconds : 0);
+        out.flush();
+    }
+
+    private static String counts(Map<? extends Enum<?>, Long> counts) {
+        if (counts.isEmpty()) {
+            return "none";
+        }
+        return counts.entrySet().stream()
+                .map(e -> e.getKey().name().toLowerCase(Locale.ROOT) + " " + e.getValue())
+                .collect(Collectors.joining(", "));
+    }
+
+    /**
+     * Opens the scene file at the first scene, so the header names the observer the log's init
+     * exchange revealed; a log without scenes still gets a (valid, empty) file.
+     */
+    private static final class LazyWriter implements AutoCloseable {
+        private final Path target;
+        private final Grid grid;
+        private final String source;
+        private SceneFileWriter writer;
+
+        LazyWriter(Path target, Grid grid, String source) {
+            this.target = target;
+            this.grid = grid;
+            this.source = source;
+        }
+
+        void write(Scene scene) throws IOException {
+            if (writer == null) {
+                open(scene.observer());
+            }
+            writer.write(scene);
+        }
+
+        private void open(Observer observer) throws IOException {
+            writer = SceneFileWriter.create(target, SceneFileHeader.of(grid, new SceneSource(source, observer)));
+        }
+
+        void commit() throws IOException {
+            if (writer == null) {
+                open(Observer.UNKNOWN);
+            }
+            writer.commit();
+        }
+
+        @Override
+        public void close() throws IOException {
+            if (writer != null) {
+                writer.close();
+            }
+        }
+    }
+}

@@ -1,0 +1,69 @@
+package org.scenes.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.scenes.scene.Grid;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SceneFileReader;
+import org.scenes.scene.VisionTable;
+import picocli.CommandLine.ArgGroup;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code scenes show}: scenes as visiontables. */
+@Command(name = "show", mixinStandardHelpOptions = true,
+        description = "Print scenes of a scene file as visiontables (all of them, or one by index or cycle).")
+final class ShowCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(paramLabel = "FILE", description = "A scene file (.json or .json.gz).")
+    Path file;
+
+    @ArgGroup(exclusive = true)
+    Selection selection;
+
+    static final class Selection {
+        @Option(names = "--index", paramLabel = "N", description = "Only the N-th scene, counting from 0.")
+        Long index;
+
+        @Option(names = "--cycle", paramLabel = "C", description = "Only the scenes of server cycle C.")
+        Integer cycle;
+    }
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        long shown = 0;
+        long index = 0;
+        try (SceneFileReader reader = SceneFileReader.open(file)) {
+            Grid grid = reader.header().grid();
+            while (reader.hasNext()) {
+                Scene scene = reader.next();
+                boolean wanted = selection == null
+                        || (selection.index != null && selection.index == index)
+                        || (selection.cycle != null && selection.cycle == scene.cycle());
+                if (wanted) {
+                    out.printf("#%d  ", index);
+                    out.print(VisionTable.render(scene, grid));
+                    out.println();
+                    shown++;
+                    if (selection != null && selection.index != null) {
+                        break;
+                    }
+                }
+                index++;
+            }
+        }
+        out.flush();
+        if (shown == 0 && selection != null) {
+            String what = selection.index != null ? "index " + selection.index : "cycle " + selection.cycle;
+            throw new UsageException("no scene with " + what + " in " + file + " (" + index + " scenes)");
+        }
+        return ExitCodes.OK;
+    }
+}

@@ -1,0 +1,99 @@
+package org.scenes.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.EnumMap;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.Callable;
+import org.scenes.scene.Action;
+import org.scenes.scene.ActionType;
+import org.scenes.scene.ObjectKind;
+import org.scenes.scene.Relation;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SceneFileHeader;
+import org.scenes.scene.SceneFileReader;
+import org.scenes.scene.SeenObject;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code scenes stats}: what a scene file holds, counted per action and object kind. */
+@Command(name = "stats", mixinStandardHelpOptions = true,
+        description = "Count the scenes of a scene file per action, and their objects per kind and relation.")
+final class StatsCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(paramLabel = "FILE", description = "A scene file (.json or .json.gz).")
+    Path file;
+
+    @Override
+    public Integer call() {
+        long scenes = 0;
+        long objects = 0;
+        int firstCycle = Integer.MAX_VALUE;
+        int lastCycle = Integer.MIN_VALUE;
+        Map<ActionType, Long> primary = new EnumMap<>(ActionType.class);
+        Map<ActionType, Long> secondary = new EnumMap<>(ActionType.class);
+        Map<ObjectKind, Long> kinds = new EnumMap<>(ObjectKind.class);
+        Map<String, Long> relations = new TreeMap<>();
+        Map<String, Long> observers = new TreeMap<>();
+        SceneFileHeader header;
+        try (SceneFileReader reader = SceneFileReader.open(file)) {
+            header = reader.header();
+            while (reader.hasNext()) {
+                Scene scene = reader.next();
+                scenes++;
+                firstCycle = Math.min(firstCycle, scene.cycle());
+                lastCycle = Math.max(lastCycle, scene.cycle());
+                observers.merge(scene.observer().label(), 1L, Long::sum);
+                primary.merge(scene.actionType(), 1L, Long::sum);
+                for (Action action : scene.actions().subList(Math.min(1, scene.actions().size()), scene.actions().size())) {
+                    secondary.merge(action.type(), 1L, Long::sum);
+                }
+                for (SeenObject object : scene.objects()) {
+                    objects++;
+                    kinds.merge(object.kind(), 1L, Long::sum);
+                    if (object.relation() != Relation.NONE) {
+                        relations.merge(object.kind().key() + " " + object.relation().key(), 1L, Long::sum);
+                    }
+                }
+            }
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        out.printf(Locale.ROOT, "%-24s %s%n", "File", file);
+        out.printf(Locale.ROOT, "%-24s %s%n", "Grid", header.grid().describe());
+        out.printf(Locale.ROOT, "%-24s %s%n", "Source log", header.source().log().isEmpty() ? "-" : header.source().log());
+        out.printf(Locale.ROOT, "%-24s %d%n", "Scenes", scenes);
+        if (scenes > 0) {
+            out.printf(Locale.ROOT, "%-24s %d .. %d%n", "Cycles", firstCycle, lastCycle);
+        }
+        out.println();
+        out.println("Observers");
+        observers.forEach((label, count) -> out.printf(Locale.ROOT, "  %-22s %8d%n", label, count));
+        out.println();
+        out.printf(Locale.ROOT, "%-24s %8s %8s %8s%n", "Action", "primary", "%", "second");
+        for (ActionType type : ActionType.values()) {
+            long count = primary.getOrDefault(type, 0L);
+            long second = secondary.getOrDefault(type, 0L);
+            if (count > 0 || second > 0) {
+                out.printf(Locale.ROOT, "  %-22s %8d %8.1f %8d%n", type.key(), count, scenes == 0 ? 0 : 100.0 * count / scenes, second);
+            }
+        }
+        out.println();
+        out.printf(Locale.ROOT, "%-24s %8s %8s%n", "Object kind", "count", "/scene");
+        for (ObjectKind kind : ObjectKind.values()) {
+            long count = kinds.getOrDefault(kind, 0L);
+            out.printf(Locale.ROOT, "  %-22s %8d %8.2f%n", kind.key(), count, scenes == 0 ? 0 : (double) count / scenes);
+        }
+        out.printf(Locale.ROOT, "  %-22s %8d %8.2f%n", "all", objects, scenes == 0 ? 0 : (double) objects / scenes);
+        out.println();
+        out.printf(Locale.ROOT, "%-24s %8s%n", "Relation", "count");
+        relations.forEach((relation, count) -> out.printf(Locale.ROOT, "  %-22s %8d%n", relation, count));
+        out.flush();
+        return ExitCodes.OK;
+    }
+}

@@ -1,0 +1,24 @@
+package org.scenes.convert;
+
+import java.nio.file.Path;
+
+/** A log that cannot be read or a malformed line under {@code --strict}, naming file and line. */
+public final class LogException extends RuntimeException {
+    private final transient Path file;
+    private final long line;
+
+    public LogException(Path file, long line, String message, Throwable cause) {
+        super(file + (line > 0 ? ":" + line : "") + ": " + message, cause);
+        this.file = file;
+        this.line = line;
+    }
+
+    public Path file() {
+        return file;
+    }
+
+    /** 1-based line, 0 when the problem is the whole file. */
+    public long line() {
+        return line;
+    }
+}

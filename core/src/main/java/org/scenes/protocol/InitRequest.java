@@ -1,0 +1,14 @@
+package org.scenes.protocol;
+
+/** The client's {@code (init TEAM [(version V)] [(goalie)])}; version 3 when none is sent. */
+public record InitRequest(String team, double version, boolean goalie) implements Message {
+    @Override
+    public String head() {
+        return "init";
+    }
+
+    @Override
+    public boolean fromClient() {
+        return true;
+    }
+}

@@ -1,0 +1,26 @@
+package org.scenes.protocol;
+
+import org.scenes.scene.ObjectKind;
+
+/**
+ * One object of a {@code see} message as the server described it. Long names from old protocol
+ * versions are normalised to the short form ({@code (flag c t)} becomes {@code f c t}); objects
+ * sensed behind the player keep their upper-case name ({@code B}, {@code F}, {@code G}, {@code P}).
+ * Numbers the server did not send are {@code NaN}.
+ *
+ * @param kind ball, goal, flag, line or player
+ * @param name short name without player details: {@code b}, {@code g r}, {@code f p r b}, {@code p}
+ * @param team a player's team, empty when not readable
+ * @param uniformNumber a player's uniform number, 0 when not readable
+ * @param goalie whether the player carries the goalie mark
+ * @param mark {@code 't'} tackling, {@code 'k'} kicked, {@code ' '} none
+ */
+public record VisualObject(ObjectKind kind, String name, String team, int uniformNumber, boolean goalie,
+                           double distance, double direction, double distanceChange, double directionChange,
+                           double bodyFacing, double headFacing, double pointingDirection, char mark) {
+
+    /** Whether the server reported this object in upper case (behind the player, no identity). */
+    public boolean behind() {
+        return Character.isUpperCase(name.charAt(0));
+    }
+}
