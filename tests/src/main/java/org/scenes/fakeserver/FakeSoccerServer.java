@@ -272,6 +272,10 @@ public final class FakeSoccerServer implements AutoCloseable {
             return received.size();
         }
 
+        public int sentCount() {
+            return sent.size();
+        }
+
         /** Every datagram sent to the client, init reply included. */
         public List<byte[]> sent() {
             synchronized (sent) {

@@ -8,9 +8,10 @@ import java.net.StandardSocketOptions;
 import java.nio.ByteBuffer;
 import java.nio.channels.DatagramChannel;
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Collections;
 import java.util.List;
-import java.util.concurrent.CopyOnWriteArrayList;
 
 /**
  * A minimal soccer client for tests: sends {@code init} to the server port, follows the reply's
@@ -19,8 +20,8 @@ import java.util.concurrent.CopyOnWriteArrayList;
  */
 public final class PlayerClient implements AutoCloseable {
     private final DatagramChannel channel;
-    private final List<byte[]> sent = new CopyOnWriteArrayList<>();
-    private final List<byte[]> received = new CopyOnWriteArrayList<>();
+    private final List<byte[]> sent = Collections.synchronizedList(new ArrayList<>());
+    private final List<byte[]> received = Collections.synchronizedList(new ArrayList<>());
     private final Thread receiver;
     private volatile SocketAddress server;
     private volatile boolean open = true;
@@ -52,11 +53,23 @@ public final class PlayerClient implements AutoCloseable {
     }
 
     public List<byte[]> sent() {
-        return List.copyOf(sent);
+        synchronized (sent) {
+            return List.copyOf(sent);
+        }
     }
 
     public List<byte[]> received() {
-        return List.copyOf(received);
+        synchronized (received) {
+            return List.copyOf(received);
+        }
+    }
+
+    public int sentCount() {
+        return sent.size();
+    }
+
+    public int receivedCount() {
+        return received.size();
     }
 
     /** Waits until at least {@code count} datagrams have arrived. */
