@@ -31,13 +31,16 @@ import org.scenes.proxylog.ProxyLogLine;
 /**
  * Latency benchmark of the logging proxy on loopback: N clients each send M commands per
  * 100 ms cycle to the fake server, which answers each with a {@code see} message built from a
- * real log; the round trip is measured talking to the server directly, then through the proxy.
+ * real log; the round trip is measured talking to the server directly and through the proxy, in
+ * alternating blocks of 10 cycles so both see the same background load.
  * Prints p50/p99/max per mode, lost datagrams, and whether the proxy's logs are complete.
  *
  * <pre>gradle :tests:proxyBench -PbenchArgs="--clients 24 --messages 20 --cycles 300"</pre>
  */
 public final class ProxyBench {
     private static final long CYCLE_NANOS = 100_000_000L;
+    /** Cycles per turn of one mode before the other mode's turn. */
+    private static final int BLOCK_CYCLES = 10;
 
     private final int clients;
     private final int messages;
@@ -99,8 +102,9 @@ public final class ProxyBench {
         System.out.printf(Locale.ROOT, "%d clients x %d messages per 100 ms cycle, %d cycles (+%d warm-up), "
                 + "replies %d bytes; Java %s, %d CPUs%n", clients, messages, cycles, warmup, body.length() + 12,
                 System.getProperty("java.version"), Runtime.getRuntime().availableProcessors());
-        Result direct = bench.run(false);
-        Result proxied = bench.run(true);
+        Result[] results = bench.run();
+        Result direct = results[0];
+        Result proxied = results[1];
         System.out.println(direct);
         System.out.println(proxied);
         System.out.printf(Locale.ROOT, "proxy adds: p50 %+.3f ms, p99 %+.3f ms%n",
@@ -128,53 +132,92 @@ public final class ProxyBench {
         }
     }
 
-    private Result run(boolean throughProxy) throws Exception {
-        boolean external = throughProxy && externalPort > 0;
-        try (FakeSoccerServer server = FakeSoccerServer.start(List.of("(sense_body 0)"), external ? serverPort : 0)) {
+    /** Round-trip times and counts of one mode, gathered over many blocks. */
+    private static final class Samples {
+        long[] rtt = new long[1 << 16];
+        int count;
+        long sent;
+        long received;
+
+        void add(long nanos) {
+            if (count == rtt.length) {
+                rtt = Arrays.copyOf(rtt, count * 2);
+            }
+            rtt[count++] = nanos;
+        }
+
+        Result result(String mode, String logs, boolean complete) {
+            long[] sorted = Arrays.copyOf(rtt, count);
+            Arrays.sort(sorted);
+            return new Result(mode, count, sent - received, percentile(sorted, 0.50), percentile(sorted, 0.99),
+                    count == 0 ? 0 : sorted[count - 1], logs, complete);
+        }
+    }
+
+    /**
+     * Direct and proxied clients are connected at once but take turns in blocks of
+     * {@link #BLOCK_CYCLES} cycles, so both modes see the same background load of the machine.
+     */
+    private Result[] run() throws Exception {
+        boolean external = externalPort > 0;
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of("(sense_body 0)"), external ? serverPort : 0);
+                Selector directSelector = Selector.open();
+                Selector proxySelector = Selector.open()) {
             server.respondWith((client, datagram) -> reply(datagram));
             Path out = external ? externalOut : Files.createTempDirectory("proxy-bench");
+            InetSocketAddress serverAddress = server.address(FakeSoccerServer.Port.PLAYER);
             LogProxy proxy = null;
-            InetSocketAddress target = server.address(FakeSoccerServer.Port.PLAYER);
+            InetSocketAddress proxyAddress;
             if (external) {
-                target = new InetSocketAddress(InetAddress.getLoopbackAddress(), externalPort);
-            } else if (throughProxy) {
+                proxyAddress = new InetSocketAddress(InetAddress.getLoopbackAddress(), externalPort);
+            } else {
                 proxy = LogProxy.start(new ProxyConfig(InetAddress.getLoopbackAddress(),
-                        List.of(new Route(ClientKind.PLAYER, 0, target)), out, LogFormat.NATIVE,
-                        Duration.ofSeconds(60), Duration.ofSeconds(5), ProxyConfig.DEFAULT_LOG_BUFFER_BYTES, ProxyConfig.DEFAULT_MAX_CLIENTS, line -> { }));
-                target = new InetSocketAddress(InetAddress.getLoopbackAddress(), proxy.listenPort(ClientKind.PLAYER));
+                        List.of(new Route(ClientKind.PLAYER, 0, serverAddress)), out, LogFormat.NATIVE,
+                        Duration.ofSeconds(60), Duration.ofSeconds(5), ProxyConfig.DEFAULT_LOG_BUFFER_BYTES,
+                        ProxyConfig.DEFAULT_MAX_CLIENTS, line -> { }));
+                proxyAddress = new InetSocketAddress(InetAddress.getLoopbackAddress(), proxy.listenPort(ClientKind.PLAYER));
             }
-            long[] rtt;
-            long[] counts;
-            try (Selector selector = Selector.open()) {
-                DatagramChannel[] channels = connect(selector, target);
-                long[] measured = new long[clients * messages * cycles];
-                counts = exchange(selector, channels, measured);
-                rtt = Arrays.copyOf(measured, (int) counts[1]);
-                for (DatagramChannel channel : channels) {
-                    channel.close();
+            DatagramChannel[] direct = connect(directSelector, serverAddress, "Direct");
+            DatagramChannel[] proxied = connect(proxySelector, proxyAddress, "Bench");
+            int total = clients * messages * (cycles + warmup + 2 * BLOCK_CYCLES);
+            long[] sentAt = new long[2 * total];
+            int[] sequence = {0};
+            Samples directSamples = new Samples();
+            Samples proxySamples = new Samples();
+            exchange(proxySelector, proxied, warmup, sentAt, sequence, null);
+            exchange(directSelector, direct, warmup, sentAt, sequence, null);
+            for (int block = 0; block * BLOCK_CYCLES < cycles; block++) {
+                int length = Math.min(BLOCK_CYCLES, cycles - block * BLOCK_CYCLES);
+                if (block % 2 == 0) {
+                    exchange(directSelector, direct, length, sentAt, sequence, directSamples);
+                    exchange(proxySelector, proxied, length, sentAt, sequence, proxySamples);
+                } else {
+                    exchange(proxySelector, proxied, length, sentAt, sequence, proxySamples);
+                    exchange(directSelector, direct, length, sentAt, sequence, directSamples);
                 }
             }
-            String logs = "";
-            boolean complete = true;
+            for (DatagramChannel channel : direct) {
+                channel.close();
+            }
+            for (DatagramChannel channel : proxied) {
+                channel.close();
+            }
+            String logs;
+            boolean complete;
             if (external) {
                 awaitLogs(out, server);
                 complete = logsComplete(out, server);
                 logs = "; logs " + (complete ? "complete" : "INCOMPLETE") + " (external proxy)";
-            } else if (proxy != null) {
+            } else {
                 proxy.close();
                 ProxyStats stats = proxy.stats();
                 complete = logsComplete(out, server);
                 logs = String.format(Locale.ROOT, "; logs %s (%d messages, not forwarded %d, log buffer peak %.1f MB, %d waits)",
                         complete ? "complete" : "INCOMPLETE", stats.logged(), stats.notForwarded(),
                         stats.logBufferHighWater() / 1e6, stats.logBufferWaits());
-            }
-            if (!external) {
                 deleteTree(out);
             }
-            Arrays.sort(rtt);
-            long sent = counts[0];
-            return new Result(throughProxy ? "proxy" : "direct", sent, counts[2] - counts[3], percentile(rtt, 0.50),
-                    percentile(rtt, 0.99), rtt.length == 0 ? 0 : rtt[rtt.length - 1], logs, complete);
+            return new Result[] {directSamples.result("direct", "", true), proxySamples.result("proxy", logs, complete)};
         }
     }
 
@@ -183,7 +226,7 @@ public final class ProxyBench {
         long deadline = System.nanoTime() + 120_000_000_000L;
         for (FakeSoccerServer.Client client : server.clients()) {
             Path file = out.resolve(client.team + "_" + client.unum + ".log");
-            while (!Files.exists(file) && System.nanoTime() < deadline) {
+            while (client.team.startsWith("Bench") && !Files.exists(file) && System.nanoTime() < deadline) {
                 Thread.sleep(100);
             }
         }
@@ -203,14 +246,14 @@ public final class ProxyBench {
         return ("(see " + sequence + " " + seeBody + "\0").getBytes(StandardCharsets.US_ASCII);
     }
 
-    private DatagramChannel[] connect(Selector selector, InetSocketAddress server) throws IOException {
+    private DatagramChannel[] connect(Selector selector, InetSocketAddress server, String team) throws IOException {
         DatagramChannel[] channels = new DatagramChannel[clients];
         ByteBuffer buffer = ByteBuffer.allocate(1 << 16);
         for (int i = 0; i < clients; i++) {
             DatagramChannel channel = DatagramChannel.open();
             channel.setOption(StandardSocketOptions.SO_RCVBUF, 1 << 20);
             channel.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
-            channel.send(ByteBuffer.wrap(("(init Bench" + (i / 11) + " (version 9))\0").getBytes(StandardCharsets.US_ASCII)), server);
+            channel.send(ByteBuffer.wrap(("(init " + team + (i / 11) + " (version 9))\0").getBytes(StandardCharsets.US_ASCII)), server);
             buffer.clear();
             SocketAddress replyFrom = channel.receive(buffer); // blocking: the init reply
             channel.connect(replyFrom); // the server's port for this client from now on
@@ -222,28 +265,29 @@ public final class ProxyBench {
     }
 
     /**
-     * Sends every client's messages on schedule and measures replies.
-     *
-     * @return {sent, measured round trips, all sent, all received}
+     * Sends {@code cycles} cycles of every client's messages on schedule and waits for the
+     * replies (2 s at most for stragglers); round trips go to {@code samples} unless null.
+     * Sequence numbers are unique over the whole run, so a late reply is never mistaken.
      */
-    private long[] exchange(Selector selector, DatagramChannel[] channels, long[] measured) throws IOException {
+    private void exchange(Selector selector, DatagramChannel[] channels, int cycles, long[] sentAt, int[] sequence,
+            Samples samples) throws IOException {
         int perCycle = clients * messages;
-        int total = perCycle * (cycles + warmup);
-        long[] sentAt = new long[total];
+        int total = perCycle * cycles;
         long spacing = CYCLE_NANOS / perCycle;
         ByteBuffer in = ByteBuffer.allocate(1 << 16);
-        long start = System.nanoTime() + 10_000_000L;
+        int first = sequence[0];
+        long start = System.nanoTime() + 1_000_000L;
         int next = 0;
         int received = 0;
-        int count = 0;
         long endWait = Long.MAX_VALUE;
         while (received < total && System.nanoTime() < endWait) {
             long now = System.nanoTime();
-            // Message k of the run is due at start + k * spacing; clients take turns.
+            // Message k of the block is due at start + k * spacing; clients take turns.
             while (next < total && start + next * spacing <= now) {
                 DatagramChannel channel = channels[next % clients];
-                byte[] command = ("(turn 30 " + next + ")\0").getBytes(StandardCharsets.US_ASCII);
-                sentAt[next] = System.nanoTime();
+                int number = first + next;
+                byte[] command = ("(turn 30 " + number + ")\0").getBytes(StandardCharsets.US_ASCII);
+                sentAt[number] = System.nanoTime();
                 channel.write(ByteBuffer.wrap(command));
                 next++;
                 if (next == total) {
@@ -259,16 +303,22 @@ public final class ProxyBench {
                         break;
                     }
                     long arrived = System.nanoTime();
-                    int sequence = sequence(in);
-                    received++;
-                    if (sequence >= warmup * perCycle) {
-                        measured[count++] = arrived - sentAt[sequence];
+                    int number = sequence(in);
+                    if (number >= first) {
+                        received++;
+                        if (samples != null) {
+                            samples.add(arrived - sentAt[number]);
+                        }
                     }
                 }
             }
             selector.selectedKeys().clear();
         }
-        return new long[] {(long) cycles * perCycle, count, total, received};
+        sequence[0] = first + total;
+        if (samples != null) {
+            samples.sent += total;
+            samples.received += received;
+        }
     }
 
     private static int sequence(ByteBuffer reply) {
@@ -283,6 +333,9 @@ public final class ProxyBench {
     private static boolean logsComplete(Path out, FakeSoccerServer server) throws IOException {
         boolean complete = true;
         for (FakeSoccerServer.Client client : server.clients()) {
+            if (!client.team.startsWith("Bench")) {
+                continue; // a direct client
+            }
             Path file = out.resolve(client.team + "_" + client.unum + ".log");
             List<byte[]> toServer = new ArrayList<>();
             List<byte[]> toClient = new ArrayList<>();
