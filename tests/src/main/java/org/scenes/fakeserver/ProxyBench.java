@@ -3,6 +3,7 @@ package org.scenes.fakeserver;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
+import java.lang.management.ManagementFactory;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.SocketAddress;
@@ -102,7 +103,10 @@ public final class ProxyBench {
         System.out.printf(Locale.ROOT, "%d clients x %d messages per 100 ms cycle, %d cycles (+%d warm-up), "
                 + "replies %d bytes; Java %s, %d CPUs%n", clients, messages, cycles, warmup, body.length() + 12,
                 System.getProperty("java.version"), Runtime.getRuntime().availableProcessors());
+        double loadBefore = ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage();
         Result[] results = bench.run();
+        System.out.printf(Locale.ROOT, "machine load average (1 min) %.2f before, %.2f after%n", loadBefore,
+                ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
         Result direct = results[0];
         Result proxied = results[1];
         System.out.println(direct);
