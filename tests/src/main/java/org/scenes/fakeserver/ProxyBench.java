@@ -122,7 +122,7 @@ public final class ProxyBench {
                 + "\nusage: ProxyBench [--clients N] [--messages N] [--cycles N] [--warmup N]"
                 + " [--external-proxy PORT --external-out DIR [--server-port 6000]]"
                 + "\n  --external-proxy: measure a proxy running in another process, started as"
-                + "\n  scenes proxy --server 127.0.0.1:6000 --listen PORT --out DIR --idle-timeout 2;"
+                + "\n  scenes proxy --server 127.0.0.1:6000 --listen PORT --out DIR --idle-timeout 10;"
                 + "\n  the benchmark's fake server then listens on 127.0.0.1:--server-port for it.");
         System.exit(2);
     }
@@ -225,7 +225,7 @@ public final class ProxyBench {
         }
     }
 
-    /** An external proxy completes the logs once the clients fall silent (its idle timeout). */
+    /** An external proxy completes the logs once the clients fall silent (its idle timeout, above the 5 s pauses of the turns). */
     private static void awaitLogs(Path out, FakeSoccerServer server) throws InterruptedException {
         long deadline = System.nanoTime() + 120_000_000_000L;
         for (FakeSoccerServer.Client client : server.clients()) {
