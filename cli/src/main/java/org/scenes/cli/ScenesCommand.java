@@ -13,7 +13,8 @@ import picocli.CommandLine.Spec;
 @Command(name = "scenes", mixinStandardHelpOptions = true, versionProvider = ScenesCommand.Version.class,
         description = "Learn to play RoboCup 2D soccer by watching another agent: record, convert, validate, play.",
         subcommands = {CommandLine.HelpCommand.class, PluginsCommand.class, ConvertCommand.class,
-                ShowCommand.class, StatsCommand.class, ExportCommand.class, ProxyCommand.class})
+                ShowCommand.class, StatsCommand.class, ExportCommand.class,
+                ValidateCommand.class, TuneCommand.class, ExperimentCommand.class, ProxyCommand.class})
 final class ScenesCommand implements Runnable {
     @Spec
     CommandLine.Model.CommandSpec spec;

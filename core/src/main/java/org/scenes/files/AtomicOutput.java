@@ -27,8 +27,11 @@ public final class AtomicOutput implements AutoCloseable {
         this.target = target.toAbsolutePath();
         Path directory = this.target.getParent();
         Files.createDirectories(directory);
-        this.temporary = Files.createTempFile(directory, "." + this.target.getFileName(), ".tmp");
-        OutputStream out = new BufferedOutputStream(Files.newOutputStream(temporary), 1 << 16);
+        // Not Files.createTempFile: its owner-only permissions would carry over to the target.
+        this.temporary = directory.resolve("." + this.target.getFileName() + "." + Long.toUnsignedString(
+                java.util.concurrent.ThreadLocalRandom.current().nextLong(), 36) + ".tmp");
+        OutputStream out = new BufferedOutputStream(
+                Files.newOutputStream(temporary, java.nio.file.StandardOpenOption.CREATE_NEW), 1 << 16);
         this.file = target.getFileName().toString().endsWith(".gz") ? new GZIPOutputStream(out, 1 << 16) : out;
         // Writers wrapping the stream may close it; only commit() or close() may end the file.
         this.stream = new FilterOutputStream(file) {

@@ -11,9 +11,17 @@ import java.util.List;
  * @param observer the player who saw
  * @param objects the seen objects, in server order
  * @param actions at most two actions, primary first
+ * @param previous the same player's scene before this one, carried by the {@code memory}
+ *                 transform so metrics can weigh it; null when not remembered. Never written to
+ *                 scene files: it is rebuilt from the order of the scenes when they are read.
  */
-public record Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions) {
+public record Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions, Scene previous) {
     public static final int MAX_ACTIONS = 2;
+
+    /** A scene without memory. */
+    public Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions) {
+        this(cycle, observer, objects, actions, null);
+    }
 
     public Scene {
         observer = observer == null ? Observer.UNKNOWN : observer;
@@ -22,6 +30,15 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
         if (actions.size() > MAX_ACTIONS) {
             throw new IllegalArgumentException("a scene holds at most " + MAX_ACTIONS + " actions, not " + actions.size());
         }
+        // one step of memory only: a chain through every earlier scene would keep a whole game alive
+        if (previous != null && previous.previous != null) {
+            previous = previous.withPrevious(null);
+        }
+    }
+
+    /** The same scene remembering {@code earlier} (its own memory dropped), or forgetting when null. */
+    public Scene withPrevious(Scene earlier) {
+        return new Scene(cycle, observer, objects, actions, earlier == null ? null : earlier.withPrevious(null));
     }
 
     /** The primary action, or null for a scene without action. */
@@ -37,6 +54,7 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
     /** The same scene with objects re-assigned to the cells of another grid. */
     public Scene regrid(Grid grid) {
         return new Scene(cycle, observer,
-                objects.stream().map(o -> o.withCell(grid.cell(o.distance(), o.direction()))).toList(), actions);
+                objects.stream().map(o -> o.withCell(grid.cell(o.distance(), o.direction()))).toList(), actions,
+                previous == null ? null : previous.regrid(grid));
     }
 }

@@ -159,6 +159,14 @@ class SceneFileRoundTripTest {
         }
     }
 
+    @Test
+    void writtenFilesGetTheUsualPermissionsNotOwnerOnly() throws IOException {
+        Path file = dir.resolve("shared.json");
+        SceneFileWriter.write(file, new SceneFile(header, List.of()));
+        Path plain = Files.writeString(dir.resolve("plain.txt"), "x");
+        assertEquals(Files.getPosixFilePermissions(plain), Files.getPosixFilePermissions(file));
+    }
+
     private List<Path> listDir() throws IOException {
         try (var files = Files.list(dir)) {
             return files.toList();

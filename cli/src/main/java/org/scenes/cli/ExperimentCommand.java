@@ -1,0 +1,176 @@
+package org.scenes.cli;
+
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.PrintWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.stream.Stream;
+import me.tongfei.progressbar.ConsoleProgressBarConsumer;
+import me.tongfei.progressbar.ProgressBar;
+import me.tongfei.progressbar.ProgressBarBuilder;
+import org.scenes.experiment.Configuration;
+import org.scenes.experiment.Experiment;
+import org.scenes.experiment.FoldValidation;
+import org.scenes.experiment.ResultTable;
+import org.scenes.experiment.Sweep;
+import org.scenes.files.AtomicOutput;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.SceneFile;
+import org.scenes.scene.SceneFileReader;
+import org.scenes.script.ScriptFailure;
+import org.scenes.script.Sweeps;
+import org.scenes.validate.Folds;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.Spec;
+
+/** {@code scenes experiment}: a parameter sweep described by a Groovy script, validated configuration by configuration. */
+@Command(name = "experiment", mixinStandardHelpOptions = true, sortOptions = false,
+        description = {"Run the parameter sweep a Groovy script describes (metrics x object weights x k x selectors x action",
+                "weights), cross-validating each configuration on the sweep's scene files as 'scenes validate --folds' does,",
+                "and write one results table as CSV, JSON, Markdown and an SVG chart. Sweep scripts: docs/scripting.md."})
+final class ExperimentCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @ParentCommand
+    ScenesCommand top;
+
+    @Parameters(paramLabel = "SWEEP.groovy", description = "The sweep script.")
+    Path sweepFile;
+
+    @Option(names = {"-o", "--out-dir"}, paramLabel = "DIR",
+            description = "Where NAME.csv, NAME.json, NAME.md and NAME.svg go (default: the sweep script's directory).")
+    Path outDir;
+
+    @Option(names = "--name", paramLabel = "NAME", description = "Base name of the result files (default: the script's name).")
+    String name;
+
+    @Option(names = "--threads", paramLabel = "N",
+            description = "Configurations validated at once (default: the number of cores).")
+    Integer threads;
+
+    @Override
+    public Integer call() throws IOException {
+        int workers = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
+        if (workers < 1) {
+            throw new UsageException("--threads must be at least 1, not " + workers);
+        }
+        Sweep sweep = load();
+        List<SceneFile> files = read(sweep.data());
+        PluginRegistry registry = top.global.registry();
+        List<Configuration> configurations = sweep.configurations();
+        // Few configurations: each spreads its queries over the cores; many: one per core.
+        boolean parallelQueries = configurations.size() < workers;
+        long queries = configurations.size() * files.stream().mapToLong(f -> f.scenes().size()).sum();
+        PrintWriter out = spec.commandLine().getOut();
+        ResultTable table;
+        try (ProgressBar bar = progress(queries)) {
+            Runnable tick = bar == null ? () -> { } : bar::step;
+            FoldValidation validation = new FoldValidation(sweep, files, registry, parallelQueries, tick);
+            validation.check(configurations);
+            table = Experiment.run(sweep, validation, parallelQueries ? 1 : workers, () -> { });
+        }
+        table.checkMeasures();
+        String base = name != null ? name : sweepFile.getFileName().toString().replaceFirst("\\.groovy$", "");
+        Path directory = outDir != null ? outDir : sweepFile.toAbsolutePath().getParent();
+        String command = "scenes experiment " + sweepFile + (outDir == null ? "" : " --out-dir " + outDir)
+                + (name == null ? "" : " --name " + name);
+        Path csv = directory.resolve(base + ".csv");
+        Path json = directory.resolve(base + ".json");
+        Path markdown = directory.resolve(base + ".md");
+        Path chart = directory.resolve(base + ".svg");
+        table.writeCsv(csv);
+        table.writeJson(json, command);
+        writeMarkdown(markdown, table, command, chart.getFileName().toString());
+        ExperimentChart.writeSvg(table, chart);
+        out.printf("%s (%d configurations, %d folds, seed %d)%n%n", sweep.title().isEmpty() ? base : sweep.title(),
+                configurations.size(), files.size(), sweep.seed());
+        out.print(table.markdown());
+        out.printf("%nWritten %s, %s, %s, %s%n", csv, json, markdown, chart);
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    private Sweep load() {
+        try {
+            return Sweeps.load(sweepFile.toString());
+        } catch (ScriptFailure e) {
+            // a sweep script describes the run: its failure is a bad command line, like a bad option
+            throw new UsageException(e.getMessage());
+        }
+    }
+
+    /** The scene files, a directory standing for the .json and .json.gz files in it, sorted. */
+    private static List<SceneFile> read(List<String> data) throws IOException {
+        List<Path> paths = new ArrayList<>();
+        for (String entry : data) {
+            Path path = Path.of(entry);
+            if (Files.isDirectory(path)) {
+                try (Stream<Path> listing = Files.list(path)) {
+                    paths.addAll(listing.filter(f -> f.toString().endsWith(".json") || f.toString().endsWith(".json.gz"))
+                            .sorted().toList());
+                }
+            } else if (Files.isRegularFile(path)) {
+                paths.add(path);
+            } else {
+                throw new UsageException("the sweep's scene file " + entry + " does not exist (looked in "
+                        + path.toAbsolutePath().normalize() + "); convert logs first with 'scenes convert'");
+            }
+        }
+        if (paths.size() < 2) {
+            throw new UsageException("the sweep's data hold " + paths.size() + " scene file(s); cross-validation needs "
+                    + "at least two, one per fold");
+        }
+        List<SceneFile> files = new ArrayList<>();
+        for (Path path : paths) {
+            SceneFile file = SceneFileReader.read(path);
+            if (!files.isEmpty() && !file.grid().equals(files.get(0).grid())) {
+                throw new UsageException(path + ": grid " + file.grid().describe() + " differs from "
+                        + files.get(0).grid().describe() + " of " + paths.get(0) + "; convert them with the same grid");
+            }
+            files.add(file);
+        }
+        return files;
+    }
+
+    private static void writeMarkdown(Path file, ResultTable table, String command, String chart) throws IOException {
+        Sweep sweep = table.sweep();
+        StringBuilder text = new StringBuilder();
+        text.append("# ").append(sweep.title().isEmpty() ? file.getFileName() : sweep.title()).append("\n\n");
+        text.append("Regenerate with `").append(command).append("` (sweep script, data and protocol: ")
+                .append("docs/scripting.md). Cross-validation over ").append(sweep.data().size())
+                .append(" scene files, each tested against ")
+                .append(sweep.protocol() == Folds.Protocol.NEXT ? "the next one" : "all the others")
+                .append("; seed ").append(sweep.seed());
+        if (!sweep.transforms().isEmpty()) {
+            text.append("; transforms ").append(String.join(", ", sweep.transforms()));
+        }
+        text.append(". Values are means over the folds of ").append(String.join(", ", sweep.layout().measures()))
+                .append("; every measure of every configuration is in the CSV and JSON files beside this one.\n\n");
+        text.append(table.markdown()).append("\n![").append(sweep.title()).append("](").append(chart).append(")\n");
+        try (AtomicOutput output = AtomicOutput.create(file);
+             Writer writer = new OutputStreamWriter(output.stream(), StandardCharsets.UTF_8)) {
+            writer.write(text.toString());
+            writer.flush();
+            output.commit();
+        }
+    }
+
+    private static ProgressBar progress(long total) {
+        if (System.console() == null || total < 20_000) {
+            return null;
+        }
+        return new ProgressBarBuilder().setTaskName("Sweeping").setInitialMax(total)
+                .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build();
+    }
+}

@@ -1,0 +1,100 @@
+package org.scenes.cli;
+
+import java.io.PrintWriter;
+import java.util.List;
+import java.util.Map;
+import java.util.function.ToDoubleFunction;
+import org.scenes.scene.ActionType;
+import org.scenes.validate.Folds;
+import org.scenes.validate.ValidationReport;
+
+/** The terminal form of validation results. */
+final class ReportTables {
+    private ReportTables() {
+    }
+
+    static void print(PrintWriter out, List<ValidateCommand.Outcome> outcomes) {
+        for (ValidateCommand.Outcome outcome : outcomes) {
+            out.println("== " + outcome.label());
+            if (outcome.report() != null) {
+                printRun(out, outcome.report());
+            } else {
+                printFolds(out, outcome.folds());
+            }
+            out.println();
+        }
+        if (outcomes.size() > 1) {
+            out.printf("%-60s %9s %9s%n", "Configuration", "Action%", "Kick%");
+            for (ValidateCommand.Outcome outcome : outcomes) {
+                out.printf("%-60s %9.3f %9.3f%n", outcome.label(), 100 * outcome.accuracy(), 100 * outcome.kickRecall());
+            }
+        }
+    }
+
+    static void printRun(PrintWriter out, ValidationReport report) {
+        out.printf("Scenes                   train %d, test %d%n", report.trainScenes(), report.testScenes());
+        out.printf("Action accuracy          %.3f %% (%d of %d)%n", 100 * report.accuracy(), report.correct(), report.testScenes());
+        out.printf("Action with direction    %.3f %% (turns count only with the right sign)%n", 100 * report.directionAccuracy());
+        out.printf("Kicks                    %d of %d recalled (%.3f %%), %d predicted, precision %.3f, F1 %.3f%n",
+                report.truePositives(ActionType.KICK), report.support(ActionType.KICK),
+                100 * nanToZero(report.recall(ActionType.KICK)), report.predictedCount(ActionType.KICK),
+                report.precision(ActionType.KICK), report.f1(ActionType.KICK));
+        out.printf("Macro F1                 %.4f%n", report.macroF1());
+        out.println();
+        out.printf("  %-10s %8s %9s %9s %9s %9s%n", "action", "support", "predicted", "precision", "recall", "F1");
+        for (ActionType type : report.types()) {
+            out.printf("  %-10s %8d %9d %9.4f %9.4f %9.4f%n", type.key(), report.support(type), report.predictedCount(type),
+                    report.precision(type), nanToZero(report.recall(type)), report.f1(type));
+        }
+        out.println();
+        out.println("  Confusion (rows: recorded, columns: predicted)");
+        StringBuilder header = new StringBuilder(String.format("  %-10s", ""));
+        for (ActionType type : report.types()) {
+            header.append(String.format(" %9s", type.key()));
+        }
+        out.println(header);
+        for (ActionType truth : report.types()) {
+            StringBuilder row = new StringBuilder(String.format("  %-10s", truth.key()));
+            for (ActionType predicted : report.types()) {
+                row.append(String.format(" %9d", report.confusion(truth, predicted)));
+            }
+            out.println(row);
+        }
+        out.println();
+        out.println("Parameters where the types agree:");
+        out.printf("  turn sign agreement    %s%n", percent(report.turnSignAgreement()));
+        out.printf("  turn moment error      %s%n", number(report.turnMomentError()));
+        out.printf("  dash power error       %s%n", number(report.dashPowerError()));
+        out.printf("  kick power error       %s%n", number(report.kickPowerError()));
+        out.printf("  kick direction error   %s%n", number(report.kickDirectionError()));
+        out.printf("Decision time            mean %.1f us, p99 %.1f us%n", report.meanDecisionMicros(), report.p99DecisionMicros());
+        out.printf("Scenes per 100 ms        %d (stored scenes one decision could scan)%n", report.scenesPer100ms());
+    }
+
+    static void printFolds(PrintWriter out, Folds folds) {
+        out.printf("Folds                    %d (each file tested against %s)%n", folds.reports().size(),
+                folds.protocol() == Folds.Protocol.NEXT ? "the next one" : "all the others");
+        out.printf("  %-22s %10s %10s%n", "figure", "mean", "std");
+        for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : Folds.figures().entrySet()) {
+            boolean time = figure.getKey().contains("Micros");
+            double scale = time ? 1 : 100;
+            out.printf("  %-22s %10.3f %10.3f%s%n", figure.getKey(), scale * folds.mean(figure.getValue()),
+                    scale * folds.std(figure.getValue()), time ? " us" : " %");
+        }
+        out.println();
+        out.println("Pooled over the decisions of all folds:");
+        printRun(out, folds.pooled());
+    }
+
+    private static double nanToZero(double value) {
+        return Double.isNaN(value) ? 0 : value;
+    }
+
+    private static String percent(double value) {
+        return Double.isNaN(value) ? "-" : String.format("%.3f %%", 100 * value);
+    }
+
+    private static String number(double value) {
+        return Double.isNaN(value) ? "-" : String.format("%.3f", value);
+    }
+}

@@ -1,0 +1,183 @@
+package org.scenes.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import me.tongfei.progressbar.ConsoleProgressBarConsumer;
+import me.tongfei.progressbar.ProgressBar;
+import me.tongfei.progressbar.ProgressBarBuilder;
+import org.scenes.match.KnowledgeBase;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.ActionType;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SceneFile;
+import org.scenes.scene.SceneFileReader;
+import org.scenes.validate.Folds;
+import org.scenes.validate.MatchConfig;
+import org.scenes.validate.ValidationReport;
+import org.scenes.validate.Validator;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.Spec;
+
+/** {@code scenes validate}: how often matching picks the action the recorded player took. */
+@Command(name = "validate", mixinStandardHelpOptions = true, sortOptions = false,
+        description = {"Predict the action of every test scene from the training scenes and compare with the recorded one.",
+                "Reports action accuracy, kicks, per-action precision/recall/F1, parameter errors and decision time."})
+final class ValidateCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @ParentCommand
+    ScenesCommand top;
+
+    @Option(names = "--train", arity = "1..*", paramLabel = "FILE", description = "Training scene files (the knowledge base).")
+    List<Path> train = new ArrayList<>();
+
+    @Option(names = "--test", arity = "1..*", paramLabel = "FILE", description = "Test scene files.")
+    List<Path> test = new ArrayList<>();
+
+    @Option(names = "--self", description = "Test against the training scenes themselves.")
+    boolean self;
+
+    @Option(names = "--folds", arity = "2..*", paramLabel = "FILE",
+            description = "Cross-validate: each file is tested against the next one (cyclically); mean and standard deviation.")
+    List<Path> folds = new ArrayList<>();
+
+    @Option(names = "--protocol", paramLabel = "next|leave-one-out",
+            description = "With --folds: train on the next file (the thesis' protocol, default) or on all other files.")
+    String protocol = "next";
+
+    @Mixin
+    MatchOptions match;
+
+    @Option(names = "--json", description = "Print one JSON object instead of tables.")
+    boolean json;
+
+    @Option(names = "--chart", paramLabel = "FILE.png|svg", description = "Draw accuracy and kick recall per configuration.")
+    Path chart;
+
+    @Option(names = "--label", paramLabel = "TEXT", description = "Labels of the configurations in tables and the chart (repeatable, in order).")
+    List<String> labels = new ArrayList<>();
+
+    @Option(names = "--sequential", description = "Run queries on one thread (same results, for timing comparisons).")
+    boolean sequential;
+
+    /** One configuration's result: a single run, or folds. */
+    record Outcome(String label, MatchConfig config, ValidationReport report, Folds folds) {
+        double accuracy() {
+            return report != null ? report.accuracy() : folds.mean(ValidationReport::accuracy);
+        }
+
+        double kickRecall() {
+            return report != null ? report.recall(ActionType.KICK) : folds.mean(r -> r.recall(ActionType.KICK));
+        }
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        boolean split = !train.isEmpty() || !test.isEmpty();
+        if (!folds.isEmpty() && (split || self)) {
+            throw new UsageException("--folds replaces --train/--test/--self; give one or the other");
+        }
+        if (folds.isEmpty()) {
+            if (train.isEmpty()) {
+                throw new UsageException("give --train FILE... with --test FILE... or --self, or --folds FILE...");
+            }
+            if (test.isEmpty() == !self) {
+                throw new UsageException(self ? "--self tests against the training files; drop --test"
+                        : "give --test FILE... or --self");
+            }
+        }
+        Folds.Protocol foldProtocol = switch (protocol) {
+            case "next" -> Folds.Protocol.NEXT;
+            case "leave-one-out" -> Folds.Protocol.LEAVE_ONE_OUT;
+            default -> throw new UsageException("--protocol must be next or leave-one-out, not " + protocol);
+        };
+        List<MatchConfig> configs = match.configs();
+        PluginRegistry registry = top.global.registry();
+        for (MatchConfig config : configs) {
+            config.check(registry);
+        }
+        if (!labels.isEmpty() && labels.size() != configs.size()) {
+            throw new UsageException(labels.size() + " --label for " + configs.size() + " configurations");
+        }
+        List<SceneFile> trainFiles = read(folds.isEmpty() ? train : folds);
+        List<SceneFile> testFiles = self ? trainFiles : read(test);
+        long queries = (long) configs.size() * testFiles.stream().mapToLong(f -> f.scenes().size()).sum();
+        List<Outcome> outcomes = new ArrayList<>();
+        try (ProgressBar bar = progress(queries)) {
+            Runnable tick = bar == null ? null : bar::step;
+            for (int i = 0; i < configs.size(); i++) {
+                MatchConfig config = configs.get(i);
+                String label = labels.isEmpty() ? config.describe() : labels.get(i);
+                if (!folds.isEmpty()) {
+                    outcomes.add(new Outcome(label, config, null, Folds.run(trainFiles, config, registry, !sequential, tick, foldProtocol)));
+                } else {
+                    KnowledgeBase knowledge = KnowledgeBase.fromFiles(trainFiles, config.transformFactory(registry));
+                    List<Scene> queriesOf = new ArrayList<>();
+                    for (SceneFile file : testFiles) {
+                        queriesOf.addAll(KnowledgeBase.transform(file.scenes(), config.transformFactory(registry).get()));
+                    }
+                    ValidationReport report = Validator.run(knowledge, queriesOf, config, registry, !sequential, tick);
+                    outcomes.add(new Outcome(label, config, report, null));
+                }
+            }
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        if (json) {
+            printJson(out, outcomes);
+        } else {
+            ReportTables.print(out, outcomes);
+        }
+        if (chart != null) {
+            Charts.write(chart, outcomes);
+            if (!json) {
+                out.println("Chart written to " + chart);
+            }
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    private static List<SceneFile> read(List<Path> paths) {
+        List<SceneFile> files = new ArrayList<>();
+        for (Path path : paths) {
+            SceneFile file = SceneFileReader.read(path);
+            if (!files.isEmpty() && !file.grid().equals(files.get(0).grid())) {
+                throw new UsageException(path + ": grid " + file.grid().describe() + " differs from "
+                        + files.get(0).grid().describe() + " of " + paths.get(0) + "; convert them with the same grid");
+            }
+            files.add(file);
+        }
+        return files;
+    }
+
+    private static ProgressBar progress(long total) {
+        if (System.console() == null || total < 20_000) {
+            return null;
+        }
+        return new ProgressBarBuilder().setTaskName("Validating").setInitialMax(total)
+                .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build();
+    }
+
+    private static void printJson(PrintWriter out, List<Outcome> outcomes) throws Exception {
+        List<Map<String, Object>> maps = new ArrayList<>();
+        for (Outcome outcome : outcomes) {
+            Map<String, Object> map = new LinkedHashMap<>();
+            map.put("label", outcome.label());
+            map.put("config", ConfigFiles.toMap(outcome.config()));
+            map.putAll(outcome.report() != null ? outcome.report().toMap() : outcome.folds().toMap());
+            maps.add(map);
+        }
+        Object result = maps.size() == 1 ? maps.get(0) : Map.of("configurations", maps);
+        out.println(ConfigFiles.JSON.writeValueAsString(result));
+    }
+}

@@ -1,0 +1,164 @@
+package org.scenes.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scenes.scene.Action;
+import org.scenes.scene.Grid;
+import org.scenes.scene.ObjectKind;
+import org.scenes.scene.Observer;
+import org.scenes.scene.Relation;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SceneFileHeader;
+import org.scenes.scene.SceneFileWriter;
+import org.scenes.scene.SceneSource;
+import org.scenes.scene.SeenObject;
+import org.scenes.scene.Side;
+import picocli.CommandLine;
+
+/** Drives validate and tune through the real command line on small generated scene files. */
+class ValidateCommandTest {
+    @TempDir
+    Path dir;
+
+    private final StringWriter out = new StringWriter();
+    private final StringWriter err = new StringWriter();
+
+    private int run(Object... args) {
+        CommandLine commandLine = ScenesCommand.commandLine();
+        commandLine.setOut(new PrintWriter(out, true));
+        commandLine.setErr(new PrintWriter(err, true));
+        String[] strings = new String[args.length];
+        for (int i = 0; i < args.length; i++) {
+            strings[i] = args[i].toString();
+        }
+        return commandLine.execute(strings);
+    }
+
+    /** A Krislet-like player: kicks near the ball, dashes when it faces it, turns otherwise. */
+    private Path player(String name, long seed, int count) throws Exception {
+        Random random = new Random(seed);
+        Observer observer = new Observer("T", Side.LEFT, (int) seed);
+        Path file = dir.resolve(name + ".json");
+        try (SceneFileWriter writer = SceneFileWriter.create(file, SceneFileHeader.of(Grid.DEFAULT, new SceneSource(name, observer)))) {
+            for (int i = 0; i < count; i++) {
+                double distance = random.nextInt(8) == 0 ? 0.5 : 2 + random.nextInt(30);
+                double direction = random.nextInt(3) == 0 ? 0 : random.nextInt(61) - 30;
+                double goal = random.nextInt(41) - 20;
+                Action action = distance <= 1 ? Action.kick(100, goal) : direction == 0 ? Action.dash(10 * distance) : Action.turn(direction);
+                writer.write(new Scene(i, observer, List.of(
+                        SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, distance, direction, Grid.DEFAULT),
+                        SeenObject.simple(ObjectKind.GOAL, "g r", Relation.OPPONENT, 30, goal, Grid.DEFAULT)), List.of(action)));
+            }
+            writer.commit();
+        }
+        return file;
+    }
+
+    private JsonNode json() throws Exception {
+        return ConfigFiles.JSON.readTree(out.toString());
+    }
+
+    @Test
+    void selfValidationIsPerfectAndJsonHasTheDocumentedKeys() throws Exception {
+        Path train = player("a", 1, 300);
+        assertEquals(0, run("validate", "--train", train, "--self", "--metric", "ball-goal", "--json"), err.toString());
+        JsonNode result = json();
+        assertEquals(1.0, result.get("accuracy").asDouble());
+        for (String key : List.of("macroF1", "perAction", "confusion", "scenesPer100ms")) {
+            assertTrue(result.has(key), key);
+        }
+        assertEquals(result.get("kick").get("total").asInt(), result.get("kick").get("correct").asInt());
+        assertTrue(result.get("kick").get("total").asInt() > 10);
+        assertTrue(result.get("decisionMicros").has("p99"));
+    }
+
+    @Test
+    void trainTestTablesSeveralMetricsAndAChart() throws Exception {
+        Path a = player("a", 1, 300);
+        Path b = player("b", 2, 200);
+        Path chart = dir.resolve("chart.png");
+        assertEquals(0, run("validate", "--train", a, "--test", b, "--metric", "random,ball-goal",
+                "--chart", chart), err.toString());
+        String table = out.toString();
+        assertTrue(table.contains("Action accuracy"), table);
+        assertTrue(table.contains("Confusion"), table);
+        assertTrue(table.contains("Scenes                   train 300, test 200"), table);
+        assertTrue(Files.size(chart) > 1000);
+        byte[] head = Files.readAllBytes(chart);
+        assertEquals((byte) 0x89, head[0]);
+        assertEquals('P', head[1]);
+        Path svg = dir.resolve("chart.svg");
+        assertEquals(0, run("validate", "--train", a, "--test", b, "--metric", "ball-goal", "--chart", svg, "--json"));
+        assertTrue(Files.readString(svg).contains("<svg"));
+    }
+
+    @Test
+    void foldsTuneAndConfigWorkTogether() throws Exception {
+        List<Path> files = new ArrayList<>();
+        for (int i = 1; i <= 3; i++) {
+            files.add(player("p" + i, i, 150));
+        }
+        List<Object> args = new ArrayList<>(List.of("validate", "--folds"));
+        args.addAll(files);
+        args.addAll(List.of("--metric", "ball-goal", "--json"));
+        assertEquals(0, run(args.toArray()), err.toString());
+        JsonNode folds = json();
+        assertEquals(3, folds.get("folds").asInt());
+        assertTrue(folds.get("accuracy").asDouble() > 0.5);
+
+        Path config = dir.resolve("best.json");
+        List<Object> tune = new ArrayList<>(List.of("tune", "--quiet", "-o", config, "--sweeps", "1", "--train"));
+        tune.addAll(files);
+        out.getBuffer().setLength(0);
+        assertEquals(0, run(tune.toArray()), err.toString());
+        JsonNode written = ConfigFiles.JSON.readTree(config.toFile());
+        assertTrue(written.has("metric") && written.has("crossValidation") && written.has("objectWeights"));
+
+        out.getBuffer().setLength(0);
+        assertEquals(0, run("validate", "--config", config, "--train", files.get(0), "--test", files.get(1), "--json"), err.toString());
+        assertEquals(written.get("metric").asText(), json().get("config").get("metric").asText());
+    }
+
+    @Test
+    void realKrisletLogsAreImitatedFarAboveChance() throws Exception {
+        Path data = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "krislet");
+        Path train = dir.resolve("train.json.gz");
+        Path test = dir.resolve("test.json.gz");
+        assertEquals(0, run("convert", data.resolve("classic-game1/Carleton_1.lsf.gz"), "-o", train), err.toString());
+        assertEquals(0, run("convert", data.resolve("classic-game2/Carleton_1.lsf.gz"), "-o", test), err.toString());
+        out.getBuffer().setLength(0);
+        assertEquals(0, run("validate", "--train", train, "--self", "--metric", "continuous", "--json"), err.toString());
+        assertEquals(1.0, json().get("accuracy").asDouble(), "each scene finds itself");
+        out.getBuffer().setLength(0);
+        assertEquals(0, run("validate", "--train", train, "--test", test, "--metric", "random,ball-goal", "--json"), err.toString());
+        JsonNode runs = json().get("configurations");
+        double random = runs.get(0).get("accuracy").asDouble();
+        double ballGoal = runs.get(1).get("accuracy").asDouble();
+        assertTrue(random < 0.75, "random: " + random);
+        assertTrue(ballGoal > 0.95, "ball-goal: " + ballGoal);
+    }
+
+    @Test
+    void badUsageIsReportedClearly() throws Exception {
+        Path a = player("a", 1, 20);
+        assertEquals(ExitCodes.USAGE, run("validate", "--train", a));
+        assertTrue(err.toString().contains("--test"), err.toString());
+        assertEquals(ExitCodes.USAGE, run("validate", "--train", a, "--self", "--metric", "nonesuch"));
+        assertTrue(err.toString().contains("Available metrics"), err.toString());
+        assertEquals(ExitCodes.USAGE, run("validate", "--train", a, "--self", "--metric", "ball-goal", "--option", "speed=3"));
+        assertTrue(err.toString().contains("no option 'speed'"), err.toString());
+        assertFalse(Files.exists(dir.resolve("x.png")));
+    }
+}

@@ -1,0 +1,81 @@
+package org.scenes.experiment;
+
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.ToDoubleFunction;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.SceneFile;
+import org.scenes.validate.Folds;
+import org.scenes.validate.MatchConfig;
+import org.scenes.validate.ValidationReport;
+
+/**
+ * A sweep configuration validated as {@code scenes validate --folds} validates it: the same
+ * {@link Folds} run on the same scene files with the same matching configuration, so a row
+ * of a sweep's table is exactly what that command prints for the configuration alone.
+ */
+public final class FoldValidation implements Experiment.Validation {
+    /** Decision time depends on the machine and on what else runs; a sweep's numbers must not. */
+    private static final String TIMING = "meanDecisionMicros";
+
+    private final List<SceneFile> files;
+    private final List<String> transforms;
+    private final Folds.Protocol protocol;
+    private final long seed;
+    private final PluginRegistry registry;
+    private final boolean parallelQueries;
+    private final Runnable query;
+
+    /**
+     * @param parallelQueries whether each validation spreads its queries over the cores (worth it
+     *                        when fewer configurations than cores run at once)
+     * @param query called once per query validated, from any thread (progress)
+     */
+    public FoldValidation(Sweep sweep, List<SceneFile> files, PluginRegistry registry, boolean parallelQueries,
+                          Runnable query) {
+        this.files = List.copyOf(files);
+        this.transforms = sweep.transforms();
+        this.protocol = sweep.protocol();
+        this.seed = sweep.seed();
+        this.registry = registry;
+        this.parallelQueries = parallelQueries;
+        this.query = query;
+    }
+
+    /** The matching configuration {@code scenes validate} would run for this sweep point. */
+    public static MatchConfig matchConfig(Configuration configuration, List<String> transforms, long seed) {
+        return MatchConfig.DEFAULT.withMetric(configuration.metric(), Map.of()).withObjectWeights(configuration.weights())
+                .withK(configuration.k()).withSelector(configuration.selector(), Map.of())
+                .withActionWeights(configuration.actionWeights()).withTransforms(transforms).withSeed(seed);
+    }
+
+    /** Fails early, naming the plugin, when a configuration cannot be built (unknown name, script error). */
+    public void check(List<Configuration> configurations) {
+        for (Configuration configuration : configurations) {
+            matchConfig(configuration, transforms, seed).check(registry);
+        }
+    }
+
+    @Override
+    public Map<String, Double> validate(Configuration configuration) {
+        Folds folds = Folds.run(files, matchConfig(configuration, transforms, seed), registry, parallelQueries, query,
+                protocol);
+        return measures(folds);
+    }
+
+    /** Each figure's mean over the folds, and the accuracy's standard deviation; no timing. */
+    public static Map<String, Double> measures(Folds folds) {
+        Map<String, Double> measures = new LinkedHashMap<>();
+        for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : Folds.figures().entrySet()) {
+            if (figure.getKey().equals(TIMING)) {
+                continue;
+            }
+            measures.put(figure.getKey(), folds.mean(figure.getValue()));
+            if (figure.getKey().equals("accuracy")) {
+                measures.put("accuracyStd", folds.std(figure.getValue()));
+            }
+        }
+        return measures;
+    }
+}

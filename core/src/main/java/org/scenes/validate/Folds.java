@@ -1,0 +1,131 @@
+package org.scenes.validate;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.ToDoubleFunction;
+import org.scenes.match.KnowledgeBase;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.ActionType;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SceneFile;
+
+/**
+ * Cross-validation over scene files: each file in turn is the test set. With the thesis'
+ * protocol ({@link Protocol#NEXT}) the next file (cyclically) is the training set; with
+ * {@link Protocol#LEAVE_ONE_OUT} all the other files are. Figures are averaged over the folds
+ * with their standard deviation, and also pooled over all decisions ({@link #pooled()}).
+ */
+public final class Folds {
+    /** Which files train each fold. */
+    public enum Protocol {
+        NEXT, LEAVE_ONE_OUT
+    }
+
+    private final List<ValidationReport> reports;
+    private final Protocol protocol;
+
+    private Folds(List<ValidationReport> reports, Protocol protocol) {
+        this.reports = List.copyOf(reports);
+        this.protocol = protocol;
+    }
+
+    public static Folds run(List<SceneFile> files, MatchConfig config, PluginRegistry registry, boolean parallel,
+                            Runnable progress) {
+        return run(files, config, registry, parallel, progress, Protocol.NEXT);
+    }
+
+    public static Folds run(List<SceneFile> files, MatchConfig config, PluginRegistry registry, boolean parallel,
+                            Runnable progress, Protocol protocol) {
+        if (files.size() < 2) {
+            throw new IllegalArgumentException("--folds needs at least two scene files, not " + files.size());
+        }
+        List<List<Scene>> sequences = new ArrayList<>();
+        for (SceneFile file : files) {
+            sequences.add(KnowledgeBase.transform(file.scenes(), config.transformFactory(registry).get()));
+        }
+        List<ValidationReport> reports = new ArrayList<>();
+        for (SceneFile file : files) {
+            if (!file.grid().equals(files.get(0).grid())) {
+                throw new IllegalArgumentException("scene files use different grids (" + files.get(0).grid().describe()
+                        + " and " + file.grid().describe() + "); convert them with the same grid");
+            }
+        }
+        for (int i = 0; i < files.size(); i++) {
+            List<Scene> trainScenes = new ArrayList<>();
+            if (protocol == Protocol.NEXT) {
+                trainScenes.addAll(sequences.get((i + 1) % files.size()));
+            } else {
+                for (int j = 0; j < files.size(); j++) {
+                    if (j != i) {
+                        trainScenes.addAll(sequences.get(j));
+                    }
+                }
+            }
+            KnowledgeBase train = KnowledgeBase.of(files.get(0).grid(), trainScenes);
+            reports.add(Validator.run(train, sequences.get(i), config, registry, parallel, progress));
+        }
+        return new Folds(reports, protocol);
+    }
+
+    public Protocol protocol() {
+        return protocol;
+    }
+
+    /** One report over the decisions of every fold. */
+    public ValidationReport pooled() {
+        return ValidationReport.pooled(reports);
+    }
+
+    public List<ValidationReport> reports() {
+        return reports;
+    }
+
+    public double mean(ToDoubleFunction<ValidationReport> figure) {
+        return reports.stream().mapToDouble(figure).filter(v -> !Double.isNaN(v)).average().orElse(Double.NaN);
+    }
+
+    /** Sample standard deviation over the folds where the figure is defined. */
+    public double std(ToDoubleFunction<ValidationReport> figure) {
+        double[] values = reports.stream().mapToDouble(figure).filter(v -> !Double.isNaN(v)).toArray();
+        if (values.length < 2) {
+            return 0;
+        }
+        double mean = java.util.Arrays.stream(values).average().orElse(0);
+        double squares = java.util.Arrays.stream(values).map(v -> (v - mean) * (v - mean)).sum();
+        return Math.sqrt(squares / (values.length - 1));
+    }
+
+    /** The figures the tables and the tuner use, by name. */
+    public static Map<String, ToDoubleFunction<ValidationReport>> figures() {
+        Map<String, ToDoubleFunction<ValidationReport>> figures = new LinkedHashMap<>();
+        figures.put("accuracy", ValidationReport::accuracy);
+        figures.put("directionAccuracy", ValidationReport::directionAccuracy);
+        figures.put("macroF1", ValidationReport::macroF1);
+        figures.put("kickRecall", r -> r.recall(ActionType.KICK));
+        figures.put("turnSignAgreement", ValidationReport::turnSignAgreement);
+        figures.put("meanDecisionMicros", ValidationReport::meanDecisionMicros);
+        return figures;
+    }
+
+    public Map<String, Object> toMap() {
+        Map<String, Object> map = new LinkedHashMap<>();
+        map.put("folds", reports.size());
+        map.put("protocol", protocol == Protocol.NEXT ? "next" : "leave-one-out");
+        // the single-run keys, as means over the folds, so scripts read --folds output like a plain run
+        map.put("accuracy", ValidationReport.number(mean(ValidationReport::accuracy)));
+        map.put("macroF1", ValidationReport.number(mean(ValidationReport::macroF1)));
+        Map<String, Object> all = new LinkedHashMap<>();
+        for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : figures().entrySet()) {
+            Map<String, Object> entry = new LinkedHashMap<>();
+            entry.put("mean", ValidationReport.number(mean(figure.getValue())));
+            entry.put("std", ValidationReport.number(std(figure.getValue())));
+            all.put(figure.getKey(), entry);
+        }
+        map.put("figures", all);
+        map.put("pooled", pooled().toMap());
+        map.put("runs", reports.stream().map(ValidationReport::toMap).toList());
+        return map;
+    }
+}

@@ -1,0 +1,72 @@
+package org.scenes.validate;
+
+import java.util.List;
+import java.util.SplittableRandom;
+import java.util.function.Supplier;
+import java.util.stream.IntStream;
+import org.scenes.match.ActionSelector;
+import org.scenes.match.KnowledgeBase;
+import org.scenes.match.Neighbour;
+import org.scenes.match.Recognizer;
+import org.scenes.scene.Action;
+import org.scenes.scene.Scene;
+
+/**
+ * Asks the recognizer and selector for an action on every test scene and compares it with
+ * the action recorded there. Queries run in parallel over the cores; each query draws its
+ * random numbers from its own generator seeded by the run's seed and the query's index, so
+ * a parallel run gives exactly the results of a sequential one.
+ */
+public final class Validator {
+    private Validator() {
+    }
+
+    /**
+     * @param progress called once per finished query (from any thread); may be null
+     */
+    public static ValidationReport run(Recognizer recognizer, Supplier<ActionSelector> selectors, List<Scene> test,
+                                       long seed, boolean parallel, Runnable progress) {
+        int n = test.size();
+        Action[] predicted = new Action[n];
+        long[] nanos = new long[n];
+        ThreadLocal<ActionSelector> selector = ThreadLocal.withInitial(selectors);
+        IntStream indices = IntStream.range(0, n);
+        (parallel ? indices.parallel() : indices).forEach(i -> {
+            long start = System.nanoTime();
+            try {
+                List<Neighbour> nearest = recognizer.nearest(test.get(i));
+                predicted[i] = selector.get().select(nearest, queryRandom(seed, i));
+            } catch (RuntimeException e) {
+                // a plugin's or script's error, located by the query it failed on
+                throw new QueryFailure(i, test.get(i).cycle(), e);
+            }
+            nanos[i] = System.nanoTime() - start;
+            if (progress != null) {
+                progress.run();
+            }
+        });
+        Action[] truth = new Action[n];
+        for (int i = 0; i < n; i++) {
+            truth[i] = test.get(i).primaryAction();
+        }
+        return ValidationReport.of(recognizer.knowledge().size(), truth, predicted, nanos);
+    }
+
+    /** A whole run from a configuration: knowledge base from {@code train}, queries from {@code test}. */
+    public static ValidationReport run(KnowledgeBase train, List<Scene> test, MatchConfig config,
+                                       org.scenes.plugin.PluginRegistry registry, boolean parallel, Runnable progress) {
+        Recognizer recognizer = new Recognizer(train, config.metricFactory(registry), config.k());
+        return run(recognizer, config.selectorFactory(registry), test, config.seed(), parallel, progress);
+    }
+
+    /** The generator of query {@code index}: independent of thread and order. */
+    public static SplittableRandom queryRandom(long seed, int index) {
+        return new SplittableRandom(mix(seed * 0x9E3779B97F4A7C15L + index));
+    }
+
+    private static long mix(long z) {
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
+    }
+}

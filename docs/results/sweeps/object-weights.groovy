@@ -1,0 +1,21 @@
+// Object weights on the shared Krislet data, laid out like the thesis' table of weights: one
+// row per weight vector (ball/goal/flag/line/players/teammates/opponents/unknown), one column
+// per metric, action accuracy in the cells. Regenerate (see docs/results/README.md):
+//   scenes experiment docs/results/sweeps/object-weights.groovy --out-dir docs/results
+title 'Object weights (Krislet classic game 1, 5 folds, k = 1, first-valid): accuracy'
+
+for (int player = 1; player <= 5; player++) {
+    data "build/krislet/classic-game1/Carleton_${player}.json.gz".toString()
+}
+metrics 'continuous', 'cell'
+weights '1/1/1/1/0/1/1/1',          // everything, players by team
+        '1/1/1/1/1/0/0/0',          // everything, players regardless of team
+        'ball=1',
+        'ball=1,goal=1',
+        'ball=1,goal=1,flag=1',
+        'ball=1,goal=1,line=1',
+        'ball=1,goal=1,teammates=1,opponents=1,unknown=1',
+        'flag=1,line=1'             // the field alone: where the player is
+k 1
+selectors 'first-valid'
+table rows: 'weights', columns: 'metric', measure: 'accuracy'

@@ -1,0 +1,155 @@
+package org.scenes.plugins.ballgoal;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.scenes.match.EncodedMetric;
+import org.scenes.match.MetricProvider;
+import org.scenes.match.ObjectSetMetric;
+import org.scenes.match.SceneMetric;
+import org.scenes.plugin.PluginConfig;
+import org.scenes.plugin.PluginException;
+import org.scenes.scene.ObjectKind;
+import org.scenes.scene.Relation;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SeenObject;
+
+/**
+ * {@code ball-goal}: only the ball and the opponent goal count, each compared by its cell
+ * (rows weigh more than columns) and its direction; an object seen in one scene only costs a
+ * fixed amount. The thesis' best metric for Krislet, which decides on these two objects alone.
+ */
+public final class BallGoalMetricProvider implements MetricProvider {
+    @Override
+    public String name() {
+        return "ball-goal";
+    }
+
+    @Override
+    public String description() {
+        return "ball and opponent goal only: cells (distance row weighted more) and directions";
+    }
+
+    @Override
+    public Map<String, String> options() {
+        Map<String, String> options = new LinkedHashMap<>();
+        options.put("row-weight", "cost per row (distance ring) of difference (default 3)");
+        options.put("column-weight", "cost per column of difference (default 1)");
+        options.put("angle-weight", "cost per 10 degrees of direction difference (default 0.5)");
+        options.put("missing", "cost of a ball or goal seen in one scene only (default 10)");
+        options.put("memory", "weight of the remembered previous scene's ball and goal (needs the memory transform; default 0)");
+        options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
+        return options;
+    }
+
+    @Override
+    public SceneMetric create(PluginConfig config) {
+        double row = config.doubleOption("row-weight", 3);
+        double column = config.doubleOption("column-weight", 1);
+        double angle = config.doubleOption("angle-weight", 0.5);
+        double missing = config.doubleOption("missing", 10);
+        double memory = config.doubleOption("memory", 0);
+        double memoryAction = config.doubleOption("memory-action", 0);
+        for (double value : new double[] {row, column, angle, missing, memory, memoryAction}) {
+            if (!(value >= 0) || Double.isInfinite(value)) {
+                throw new PluginException("ball-goal weights must be finite and not negative");
+            }
+        }
+        return new BallGoalMetric(row, column, angle / 10, missing,
+                config.objectWeights().ball(), config.objectWeights().goal(), memory, memoryAction);
+    }
+
+    /**
+     * Per object, {@code min(2M, rw |row1 - row2| + cw |col1 - col2| + aw |dir1 - dir2|)} when
+     * both scenes hold it, {@code M} when one does, 0 when neither; weighted by the ball and goal
+     * object weights. Each term is a metric (a missing object is a point at M from all others), so the sum is too.
+     */
+    static final class BallGoalMetric implements EncodedMetric<double[]> {
+        private final double rowWeight;
+        private final double columnWeight;
+        private final double anglePerDegree;
+        private final double missing;
+        private final double ballWeight;
+        private final double goalWeight;
+        private final double memory;
+        private final double memoryAction;
+
+        BallGoalMetric(double rowWeight, double columnWeight, double anglePerDegree, double missing,
+                       double ballWeight, double goalWeight, double memory, double memoryAction) {
+            this.memory = memory;
+            this.memoryAction = memoryAction;
+            this.rowWeight = rowWeight;
+            this.columnWeight = columnWeight;
+            this.anglePerDegree = anglePerDegree;
+            this.missing = missing;
+            this.ballWeight = ballWeight;
+            this.goalWeight = goalWeight;
+        }
+
+        @Override
+        public boolean isTrueMetric() {
+            return true;
+        }
+
+        /**
+         * [present, column, row, direction] for the ball, then for the opponent goal; then the
+         * same for the remembered previous scene, and the previous action's class (-1 for none).
+         */
+        @Override
+        public double[] encode(Scene scene) {
+            double[] features = new double[17];
+            place(scene, features, 0);
+            Scene previous = scene.previous();
+            if (previous != null) {
+                place(previous, features, 8);
+            }
+            features[16] = previous == null ? -1 : ObjectSetMetric.actionClass(previous);
+            return features;
+        }
+
+        private static void place(Scene scene, double[] features, int start) {
+            for (SeenObject object : scene.objects()) {
+                int offset;
+                if (object.kind() == ObjectKind.BALL) {
+                    offset = start;
+                } else if (object.kind() == ObjectKind.GOAL && object.relation() == Relation.OPPONENT) {
+                    offset = start + 4;
+                } else {
+                    continue;
+                }
+                if (features[offset] == 0) { // the first one the server listed, should it list two
+                    features[offset] = 1;
+                    features[offset + 1] = object.cell().column();
+                    features[offset + 2] = object.cell().row();
+                    features[offset + 3] = Double.isNaN(object.direction()) ? 0 : object.direction();
+                }
+            }
+        }
+
+        @Override
+        public double distance(double[] query, double[] stored, double bound) {
+            double distance = ballWeight * objectDistance(query, stored, 0) + goalWeight * objectDistance(query, stored, 4);
+            if (memory > 0) {
+                distance += memory * (ballWeight * objectDistance(query, stored, 8) + goalWeight * objectDistance(query, stored, 12));
+            }
+            if (memoryAction > 0 && query[16] != stored[16]) {
+                distance += memoryAction;
+            }
+            return distance;
+        }
+
+        private double objectDistance(double[] x, double[] y, int offset) {
+            boolean inX = x[offset] != 0;
+            boolean inY = y[offset] != 0;
+            if (inX != inY) {
+                return missing;
+            }
+            if (!inX) {
+                return 0;
+            }
+            double cost = columnWeight * Math.abs(x[offset + 1] - y[offset + 1])
+                    + rowWeight * Math.abs(x[offset + 2] - y[offset + 2])
+                    + anglePerDegree * Math.abs(x[offset + 3] - y[offset + 3]);
+            return Math.min(cost, 2 * missing);
+        }
+    }
+}

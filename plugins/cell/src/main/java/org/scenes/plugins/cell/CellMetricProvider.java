@@ -1,0 +1,41 @@
+package org.scenes.plugins.cell;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.scenes.match.MetricProvider;
+import org.scenes.match.ObjectSetMetric;
+import org.scenes.match.SceneMetric;
+import org.scenes.plugin.PluginConfig;
+
+/** {@code cell}: objects compared by type at the grid cells they fall in (docs/metrics.md). */
+public final class CellMetricProvider implements MetricProvider {
+    @Override
+    public String name() {
+        return "cell";
+    }
+
+    @Override
+    public String description() {
+        return "objects matched by type at their grid cells (column, row), weighted sum per object class";
+    }
+
+    @Override
+    public Map<String, String> options() {
+        Map<String, String> options = new LinkedHashMap<>(ObjectSetMetric.options(false));
+        options.remove("space");
+        options.remove("log-distance");
+        options.remove("distance-weight");
+        options.remove("direction-weight");
+        options.put("penalty", "cost of an unmatched object in the nearest row (default 1)");
+        options.put("penalty-scale", "row at which the unmatched penalty halves (default 1)");
+        return options;
+    }
+
+    @Override
+    public SceneMetric create(PluginConfig config) {
+        Map<String, String> options = new LinkedHashMap<>(config.options());
+        options.putIfAbsent("penalty", "1");
+        options.putIfAbsent("penalty-scale", "1");
+        return new ObjectSetMetric(ObjectSetMetric.settings(config.withOptions(options), ObjectSetMetric.Space.CELL, 0));
+    }
+}

@@ -1,0 +1,30 @@
+package org.scenes.plugins.continuous;
+
+import java.util.Map;
+import org.scenes.match.MetricProvider;
+import org.scenes.match.ObjectSetMetric;
+import org.scenes.match.SceneMetric;
+import org.scenes.plugin.PluginConfig;
+
+/** {@code continuous}: objects compared by type at their exact positions (docs/metrics.md). */
+public final class ContinuousMetricProvider implements MetricProvider {
+    @Override
+    public String name() {
+        return "continuous";
+    }
+
+    @Override
+    public String description() {
+        return "objects matched by type at their seen positions, weighted sum per object class";
+    }
+
+    @Override
+    public Map<String, String> options() {
+        return ObjectSetMetric.options(false);
+    }
+
+    @Override
+    public SceneMetric create(PluginConfig config) {
+        return new ObjectSetMetric(ObjectSetMetric.settings(config, ObjectSetMetric.Space.CARTESIAN, 0));
+    }
+}

@@ -1,0 +1,40 @@
+package org.scenes.plugins.memory;
+
+import org.scenes.match.SceneTransform;
+import org.scenes.match.TransformProvider;
+import org.scenes.plugin.PluginConfig;
+import org.scenes.scene.Scene;
+
+/**
+ * {@code memory}: each scene also carries the scene before it (its objects and the action taken
+ * then), so metrics can weigh what the player saw and did a moment ago. Recorded agents often
+ * act on the {@code see} before the latest one, which makes this matter even for stateless agents.
+ */
+public final class MemoryTransformProvider implements TransformProvider {
+    @Override
+    public String name() {
+        return "memory";
+    }
+
+    @Override
+    public String description() {
+        return "each scene remembers the previous scene and action of the same player";
+    }
+
+    @Override
+    public SceneTransform create(PluginConfig config) {
+        return new Memory();
+    }
+
+    /** Remembers the last scene it saw; a new instance for each player's sequence. */
+    static final class Memory implements SceneTransform {
+        private Scene last;
+
+        @Override
+        public Scene apply(Scene scene) {
+            Scene remembered = scene.withPrevious(last);
+            last = scene.withPrevious(null);
+            return remembered;
+        }
+    }
+}

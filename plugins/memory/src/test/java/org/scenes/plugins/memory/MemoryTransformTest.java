@@ -1,0 +1,34 @@
+package org.scenes.plugins.memory;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.scenes.match.SceneTransform;
+import org.scenes.plugin.PluginConfig;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.Action;
+import org.scenes.scene.Observer;
+import org.scenes.scene.Scene;
+
+class MemoryTransformTest {
+    private static Scene scene(int cycle, Action action) {
+        return new Scene(cycle, Observer.UNKNOWN, List.of(), List.of(action));
+    }
+
+    @Test
+    void eachSceneRemembersTheOneBeforeOnly() {
+        SceneTransform memory = PluginRegistry.load().transform("memory", PluginConfig.DEFAULT);
+        Scene first = memory.apply(scene(1, Action.turn(40)));
+        Scene second = memory.apply(scene(2, Action.dash(50)));
+        Scene third = memory.apply(scene(3, Action.kick(100, 5)));
+        assertNull(first.previous());
+        assertEquals(1, second.previous().cycle());
+        assertEquals(Action.turn(40), second.previous().primaryAction());
+        assertEquals(2, third.previous().cycle());
+        assertNull(third.previous().previous(), "one step of memory, not a chain");
+        SceneTransform fresh = PluginRegistry.load().transform("memory", PluginConfig.DEFAULT);
+        assertNull(fresh.apply(scene(9, Action.dash(1))).previous(), "a new sequence starts without memory");
+    }
+}

@@ -1,0 +1,37 @@
+package org.scenes.plugins.projection;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.scenes.match.MetricProvider;
+import org.scenes.match.ObjectSetMetric;
+import org.scenes.match.SceneMetric;
+import org.scenes.plugin.PluginConfig;
+
+/**
+ * {@code projection}: like {@code continuous}, but each object is first moved n cycles forward
+ * (or back) by the distance and direction change the server reported for it, so scenes are
+ * compared as they will look (or looked) rather than as they are.
+ */
+public final class ProjectionMetricProvider implements MetricProvider {
+    @Override
+    public String name() {
+        return "projection";
+    }
+
+    @Override
+    public String description() {
+        return "continuous matching after projecting objects n cycles by their distance/direction change";
+    }
+
+    @Override
+    public Map<String, String> options() {
+        Map<String, String> options = new LinkedHashMap<>(ObjectSetMetric.options(true));
+        options.put("space", "cartesian or polar (default cartesian)");
+        return options;
+    }
+
+    @Override
+    public SceneMetric create(PluginConfig config) {
+        return new ObjectSetMetric(ObjectSetMetric.settings(config, ObjectSetMetric.Space.CARTESIAN, 1));
+    }
+}

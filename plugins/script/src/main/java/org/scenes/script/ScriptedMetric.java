@@ -1,0 +1,73 @@
+package org.scenes.script;
+
+import org.scenes.match.EncodedMetric;
+import org.scenes.match.SceneMetric;
+import org.scenes.scene.Scene;
+
+/** A metric script instance, with exceptions it throws located in the script. */
+class ScriptedMetric implements SceneMetric {
+    final MetricScript script;
+    final String path;
+    final String fileName;
+
+    ScriptedMetric(MetricScript script, String path, String fileName) {
+        this.script = script;
+        this.path = path;
+        this.fileName = fileName;
+    }
+
+    /** The wrapper for a script: with the encoded fast path when the script defines it. */
+    static SceneMetric of(MetricScript script, String path, String fileName) {
+        return script.encodes() ? new Encoded(script, path, fileName) : new ScriptedMetric(script, path, fileName);
+    }
+
+    @Override
+    public double distance(Scene query, Scene stored) {
+        try {
+            return script.distance(query, stored);
+        } catch (RuntimeException | StackOverflowError | AssertionError e) {
+            throw ScriptFailure.of(path, fileName, "comparing the query scene of cycle " + query.cycle()
+                    + " with the stored scene of cycle " + stored.cycle(), e);
+        }
+    }
+
+    @Override
+    public boolean isTrueMetric() {
+        return script.isTrueMetric();
+    }
+
+    @Override
+    public String toString() {
+        return "script:" + path;
+    }
+
+    /** A script of the fast form: scenes are encoded once, distances computed between arrays. */
+    static final class Encoded extends ScriptedMetric implements EncodedMetric<double[]> {
+        Encoded(MetricScript script, String path, String fileName) {
+            super(script, path, fileName);
+        }
+
+        @Override
+        public double[] encode(Scene scene) {
+            try {
+                return script.encode(scene);
+            } catch (RuntimeException | StackOverflowError | AssertionError e) {
+                throw ScriptFailure.of(path, fileName, "encoding the scene of cycle " + scene.cycle(), e);
+            }
+        }
+
+        @Override
+        public double distance(double[] query, double[] stored, double bound) {
+            try {
+                return script.distance(query, stored, bound);
+            } catch (RuntimeException | StackOverflowError | AssertionError e) {
+                throw ScriptFailure.of(path, fileName, "comparing two encoded scenes", e);
+            }
+        }
+
+        @Override
+        public double distance(Scene query, Scene stored) {
+            return distance(encode(query), encode(stored), Double.POSITIVE_INFINITY);
+        }
+    }
+}

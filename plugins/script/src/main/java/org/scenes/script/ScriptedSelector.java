@@ -1,0 +1,35 @@
+package org.scenes.script;
+
+import java.util.List;
+import java.util.random.RandomGenerator;
+import org.scenes.match.ActionSelector;
+import org.scenes.match.Neighbour;
+import org.scenes.scene.Action;
+
+/** A selector script instance, with exceptions it throws located in the script. */
+final class ScriptedSelector implements ActionSelector {
+    private final SelectorScript script;
+    private final String path;
+    private final String fileName;
+
+    ScriptedSelector(SelectorScript script, String path, String fileName) {
+        this.script = script;
+        this.path = path;
+        this.fileName = fileName;
+    }
+
+    @Override
+    public Action select(List<Neighbour> nearest, RandomGenerator random) {
+        try {
+            return script.select(nearest, random);
+        } catch (RuntimeException | StackOverflowError | AssertionError e) {
+            throw ScriptFailure.of(path, fileName, "selecting among " + nearest.size() + " neighbours, the nearest "
+                    + "being the stored scene of cycle " + nearest.get(0).scene().cycle(), e);
+        }
+    }
+
+    @Override
+    public String toString() {
+        return "script:" + path;
+    }
+}

@@ -1,0 +1,40 @@
+package org.scenes.script;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.scenes.scene.Action;
+import org.scenes.scene.Grid;
+import org.scenes.scene.ObjectKind;
+import org.scenes.scene.Observer;
+import org.scenes.scene.Relation;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SeenObject;
+import org.scenes.scene.Side;
+
+/** Small synthetic scenes for script tests. */
+final class Fixtures {
+    static final Observer OBSERVER = new Observer("Carleton", Side.LEFT, 3);
+
+    private Fixtures() {
+    }
+
+    static SeenObject ball(double distance, double direction) {
+        return SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, distance, direction, Grid.DEFAULT);
+    }
+
+    static SeenObject opponentGoal(double distance, double direction) {
+        return SeenObject.simple(ObjectKind.GOAL, "g r", Relation.OPPONENT, distance, direction, Grid.DEFAULT);
+    }
+
+    static SeenObject flag(double distance, double direction) {
+        return SeenObject.simple(ObjectKind.FLAG, "f c", Relation.NONE, distance, direction, Grid.DEFAULT);
+    }
+
+    static Scene scene(int cycle, Action action, SeenObject... objects) {
+        List<Action> actions = new ArrayList<>();
+        if (action != null) {
+            actions.add(action);
+        }
+        return new Scene(cycle, OBSERVER, List.of(objects), actions);
+    }
+}

@@ -1,0 +1,217 @@
+package org.scenes.plugins.selectors;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.random.RandomGenerator;
+import org.scenes.match.ActionSelector;
+import org.scenes.match.ActionWeights;
+import org.scenes.match.Neighbour;
+import org.scenes.match.SelectorProvider;
+import org.scenes.plugin.PluginConfig;
+import org.scenes.plugin.PluginException;
+import org.scenes.scene.Action;
+import org.scenes.scene.ActionType;
+
+/**
+ * The built-in selectors. A neighbour is usable when it holds a primary action whose type has
+ * a positive action weight. Parameters come from the chosen neighbour ({@code params=copy}) or
+ * are averaged over the usable neighbours of the chosen type ({@code params=average}).
+ */
+public final class Selectors {
+    private Selectors() {
+    }
+
+    enum Params { COPY, AVERAGE }
+
+    static Map<String, String> options(boolean random) {
+        Map<String, String> options = new LinkedHashMap<>();
+        options.put("params", "copy (from the chosen neighbour; default) or average (over neighbours of the chosen type)");
+        if (random) {
+            options.put("percent", "share of decisions, in percent, taken from a random neighbour (default 10)");
+        }
+        return options;
+    }
+
+    static Params params(PluginConfig config) {
+        return switch (config.option("params", "copy").toLowerCase(Locale.ROOT)) {
+            case "copy" -> Params.COPY;
+            case "average" -> Params.AVERAGE;
+            default -> throw new PluginException("option params=" + config.option("params", "")
+                    + " is unknown; use copy or average");
+        };
+    }
+
+    static boolean usable(Neighbour neighbour, ActionWeights weights) {
+        Action action = neighbour.scene().primaryAction();
+        return action != null && weights.weight(action.type()) > 0;
+    }
+
+    static List<Neighbour> usable(List<Neighbour> nearest, ActionWeights weights) {
+        List<Neighbour> usable = new ArrayList<>(nearest.size());
+        for (Neighbour neighbour : nearest) {
+            if (usable(neighbour, weights)) {
+                usable.add(neighbour);
+            }
+        }
+        return usable;
+    }
+
+    /** The action of {@code chosen}, its parameters averaged over same-type neighbours when asked. */
+    static Action withParameters(Neighbour chosen, List<Neighbour> usable, Params params) {
+        Action action = chosen.scene().primaryAction();
+        if (params == Params.COPY) {
+            return action;
+        }
+        double[] sum = new double[2];
+        int[] count = new int[2];
+        for (Neighbour neighbour : usable) {
+            Action other = neighbour.scene().primaryAction();
+            if (other.type() != action.type()) {
+                continue;
+            }
+            for (int p = 0; p < 2; p++) {
+                if (!Double.isNaN(other.parameter(p))) {
+                    sum[p] += other.parameter(p);
+                    count[p]++;
+                }
+            }
+        }
+        return new Action(action.type(), count[0] == 0 ? action.first() : sum[0] / count[0],
+                count[1] == 0 ? action.second() : sum[1] / count[1]);
+    }
+
+    /** Weighted majority vote by type; ties go to the type of the nearest neighbour among them. */
+    static Action vote(List<Neighbour> usable, ActionWeights weights, Params params) {
+        if (usable.isEmpty()) {
+            return null;
+        }
+        double[] score = new double[ActionType.values().length];
+        for (Neighbour neighbour : usable) {
+            ActionType type = neighbour.scene().primaryAction().type();
+            score[type.ordinal()] += weights.weight(type);
+        }
+        Neighbour best = null;
+        for (Neighbour neighbour : usable) { // nearest first, so the first of a tied type wins
+            ActionType type = neighbour.scene().primaryAction().type();
+            if (best == null || score[type.ordinal()] > score[best.scene().primaryAction().type().ordinal()]) {
+                best = neighbour;
+            }
+        }
+        return withParameters(best, usable, params);
+    }
+
+    public static final class FirstValid implements SelectorProvider {
+        @Override
+        public String name() {
+            return "first-valid";
+        }
+
+        @Override
+        public String description() {
+            return "the nearest neighbour with a usable action";
+        }
+
+        @Override
+        public Map<String, String> options() {
+            return Selectors.options(false);
+        }
+
+        @Override
+        public ActionSelector create(PluginConfig config) {
+            ActionWeights weights = config.actionWeights();
+            Params params = params(config);
+            return (nearest, random) -> {
+                List<Neighbour> usable = usable(nearest, weights);
+                return usable.isEmpty() ? null : withParameters(usable.get(0), usable, params);
+            };
+        }
+    }
+
+    public static final class Random implements SelectorProvider {
+        @Override
+        public String name() {
+            return "random";
+        }
+
+        @Override
+        public String description() {
+            return "a neighbour with a usable action, chosen at random";
+        }
+
+        @Override
+        public Map<String, String> options() {
+            return Selectors.options(false);
+        }
+
+        @Override
+        public ActionSelector create(PluginConfig config) {
+            ActionWeights weights = config.actionWeights();
+            Params params = params(config);
+            return (nearest, random) -> pickRandom(usable(nearest, weights), random, params);
+        }
+    }
+
+    static Action pickRandom(List<Neighbour> usable, RandomGenerator random, Params params) {
+        return usable.isEmpty() ? null : withParameters(usable.get(random.nextInt(usable.size())), usable, params);
+    }
+
+    public static final class Vote implements SelectorProvider {
+        @Override
+        public String name() {
+            return "vote";
+        }
+
+        @Override
+        public String description() {
+            return "majority vote by action type, each neighbour counting its type's action weight";
+        }
+
+        @Override
+        public Map<String, String> options() {
+            return Selectors.options(false);
+        }
+
+        @Override
+        public ActionSelector create(PluginConfig config) {
+            ActionWeights weights = config.actionWeights();
+            Params params = params(config);
+            return (nearest, random) -> vote(usable(nearest, weights), weights, params);
+        }
+    }
+
+    public static final class VoteRandom implements SelectorProvider {
+        @Override
+        public String name() {
+            return "vote-random";
+        }
+
+        @Override
+        public String description() {
+            return "vote, except a random neighbour for a given percentage of decisions";
+        }
+
+        @Override
+        public Map<String, String> options() {
+            return Selectors.options(true);
+        }
+
+        @Override
+        public ActionSelector create(PluginConfig config) {
+            ActionWeights weights = config.actionWeights();
+            Params params = params(config);
+            double percent = config.doubleOption("percent", 10);
+            if (!(percent >= 0 && percent <= 100)) {
+                throw new PluginException("option percent=" + percent + " must lie between 0 and 100");
+            }
+            return (nearest, random) -> {
+                List<Neighbour> usable = usable(nearest, weights);
+                // always draw, so the random stream does not depend on the outcome
+                boolean randomPick = random.nextDouble() * 100 < percent;
+                return randomPick ? pickRandom(usable, random, params) : vote(usable, weights, params);
+            };
+        }
+    }
+}
