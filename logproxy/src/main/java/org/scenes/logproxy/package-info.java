@@ -1,0 +1,12 @@
+/**
+ * The UDP logging proxy that records agents playing ({@code scenes proxy}).
+ *
+ * <p>Public surface: {@link org.scenes.logproxy.LogProxy} (start, ports, stats, close),
+ * {@link org.scenes.logproxy.ProxyConfig}, {@link org.scenes.logproxy.Route},
+ * {@link org.scenes.logproxy.ClientKind}, {@link org.scenes.logproxy.LogFormat} and
+ * {@link org.scenes.logproxy.ProxyStats}. Inside, a forwarding thread (one selector, one socket
+ * towards the server per client) hands copies of datagrams to a log writer thread through a
+ * fixed byte ring; the file format is {@code docs/proxy-log-format.md}, read back with
+ * {@code org.scenes.proxylog}.
+ */
+package org.scenes.logproxy;
