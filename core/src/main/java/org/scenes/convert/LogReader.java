@@ -7,6 +7,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Arrays;
 import org.scenes.files.Inputs;
+import org.scenes.proxylog.MessageEscapes;
 
 /**
  * Streams the messages of one player log, whatever its {@link LogFormat} (detected from the first
@@ -246,7 +247,7 @@ public final class LogReader implements AutoCloseable {
         messageLength = length;
     }
 
-    /** Undoes the proxy's escaping ({@code \\ \n \r \t \0 \xHH}) when the message has any. */
+    /** Undoes the proxy's escaping when the message has any; a bad escape makes the line malformed. */
     private void unescape(int from) {
         if (LogFormat.indexOf(line, from, lineLength, (byte) '\\') < 0) {
             setMessage(line, from, lineLength - from);
@@ -255,34 +256,12 @@ public final class LogReader implements AutoCloseable {
         if (unescaped.length < lineLength) {
             unescaped = new byte[line.length];
         }
-        int out = 0;
-        for (int i = from; i < lineLength; i++) {
-            byte c = line[i];
-            if (c != '\\' || i + 1 >= lineLength) {
-                unescaped[out++] = c;
-                continue;
-            }
-            byte escape = line[++i];
-            switch (escape) {
-                case 'n' -> unescaped[out++] = '\n';
-                case 'r' -> unescaped[out++] = '\r';
-                case 't' -> unescaped[out++] = '\t';
-                case '0' -> unescaped[out++] = 0;
-                case 'x' -> {
-                    int high = i + 1 < lineLength ? Character.digit(line[i + 1], 16) : -1;
-                    int low = i + 2 < lineLength ? Character.digit(line[i + 2], 16) : -1;
-                    if (high < 0 || low < 0) {
-                        problem = "bad escape \\x at column " + (i + 1);
-                        unescaped[out++] = escape;
-                    } else {
-                        unescaped[out++] = (byte) (high * 16 + low);
-                        i += 2;
-                    }
-                }
-                default -> unescaped[out++] = escape;
-            }
+        try {
+            setMessage(unescaped, 0, MessageEscapes.unescape(line, from, lineLength, unescaped));
+        } catch (IllegalArgumentException e) {
+            problem = "bad escape in the message, " + e.getMessage();
+            setMessage(line, from, lineLength - from);
         }
-        setMessage(unescaped, 0, out);
     }
 
     private static double decimal(byte[] bytes, int from, int to) {

@@ -1,6 +1,5 @@
 package org.scenes.proxylog;
 
-import java.io.ByteArrayOutputStream;
 import java.nio.charset.StandardCharsets;
 
 /**
@@ -149,49 +148,50 @@ public final class MessageEscapes {
      *     above, naming the column (1-based)
      */
     public static byte[] unescape(CharSequence escaped) {
-        ByteArrayOutputStream out = new ByteArrayOutputStream(escaped.length());
-        int length = escaped.length();
-        int runStart = 0;
-        int i = 0;
-        while (i < length) {
-            char c = escaped.charAt(i);
+        byte[] bytes = escaped.toString().getBytes(StandardCharsets.UTF_8);
+        byte[] target = new byte[bytes.length];
+        int length = unescape(bytes, 0, bytes.length, target);
+        return java.util.Arrays.copyOf(target, length);
+    }
+
+    /**
+     * Unescapes {@code source[from, to)} into {@code target} (which needs {@code to - from} bytes)
+     * and returns the number of bytes written. Escapes are ASCII, so working on the UTF-8
+     * bytes of a line is the same as working on its characters, without decoding it.
+     *
+     * @throws IllegalArgumentException on a bad escape, naming its column counted from {@code from} (1-based)
+     */
+    public static int unescape(byte[] source, int from, int to, byte[] target) {
+        int out = 0;
+        for (int i = from; i < to; i++) {
+            byte c = source[i];
             if (c != '\\') {
-                i++;
+                target[out++] = c;
                 continue;
             }
-            writeUtf8(out, escaped, runStart, i);
-            if (i + 1 >= length) {
-                throw new IllegalArgumentException("column " + (i + 1) + ": backslash at end of message");
+            if (i + 1 >= to) {
+                throw new IllegalArgumentException("column " + (i - from + 1) + ": backslash at end of message");
             }
-            char kind = escaped.charAt(i + 1);
+            byte kind = source[++i];
             switch (kind) {
-                case '\\' -> out.write('\\');
-                case 'n' -> out.write('\n');
-                case 'r' -> out.write('\r');
-                case 't' -> out.write('\t');
-                case '0' -> out.write(0);
+                case '\\' -> target[out++] = '\\';
+                case 'n' -> target[out++] = '\n';
+                case 'r' -> target[out++] = '\r';
+                case 't' -> target[out++] = '\t';
+                case '0' -> target[out++] = 0;
                 case 'x' -> {
-                    int value = i + 3 < length ? hexByte(escaped.charAt(i + 2), escaped.charAt(i + 3)) : -1;
+                    int value = i + 2 < to ? hexByte((char) source[i + 1], (char) source[i + 2]) : -1;
                     if (value < 0) {
-                        throw new IllegalArgumentException("column " + (i + 1) + ": \\x needs two hex digits");
+                        throw new IllegalArgumentException("column " + (i - from) + ": \\x needs two hex digits");
                     }
-                    out.write(value);
+                    target[out++] = (byte) value;
                     i += 2;
                 }
                 default -> throw new IllegalArgumentException(
-                        "column " + (i + 1) + ": unknown escape \\" + kind);
+                        "column " + (i - from) + ": unknown escape \\" + (char) kind);
             }
-            i += 2;
-            runStart = i;
         }
-        writeUtf8(out, escaped, runStart, length);
-        return out.toByteArray();
-    }
-
-    private static void writeUtf8(ByteArrayOutputStream out, CharSequence text, int from, int to) {
-        if (from < to) {
-            out.writeBytes(text.subSequence(from, to).toString().getBytes(StandardCharsets.UTF_8));
-        }
+        return out;
     }
 
     private static int hexByte(char high, char low) {

@@ -225,6 +225,16 @@ class SceneConverterTest {
     }
 
     @Test
+    void aBadEscapeInAProxyLogIsAMalformedLine() throws IOException {
+        ConversionReport report = convert(log("escapes.log", "#scenes-proxy-log 1", "0.1 s2c (see 0 ((b) 1 0))",
+                "0.2 c2s (say \\q)", "0.3 c2s (say \\x4)", "0.4 c2s (turn 10)"));
+        assertEquals(2, report.malformed());
+        assertTrue(warnings.get(0).problem().contains("unknown escape \\q"), warnings.get(0).problem());
+        assertTrue(warnings.get(1).problem().contains("two hex digits"), warnings.get(1).problem());
+        assertEquals(List.of(Action.turn(10)), scenes.get(0).actions());
+    }
+
+    @Test
     void anUnknownFormatIsRejectedWithTheFileName() throws IOException {
         Path file = log("notes.txt", "hello there");
         LogException error = assertThrows(LogException.class, () -> LogReader.open(file));
