@@ -22,7 +22,6 @@ import org.scenes.experiment.Sweep;
 import org.scenes.files.AtomicOutput;
 import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.SceneFile;
-import org.scenes.scene.SceneFileReader;
 import org.scenes.script.ScriptFailure;
 import org.scenes.script.Sweeps;
 import org.scenes.validate.Folds;
@@ -131,16 +130,7 @@ final class ExperimentCommand implements Callable<Integer> {
             throw new UsageException("the sweep's data hold " + paths.size() + " scene file(s); cross-validation needs "
                     + "at least two, one per fold");
         }
-        List<SceneFile> files = new ArrayList<>();
-        for (Path path : paths) {
-            SceneFile file = SceneFileReader.read(path);
-            if (!files.isEmpty() && !file.grid().equals(files.get(0).grid())) {
-                throw new UsageException(path + ": grid " + file.grid().describe() + " differs from "
-                        + files.get(0).grid().describe() + " of " + paths.get(0) + "; convert them with the same grid");
-            }
-            files.add(file);
-        }
-        return files;
+        return ValidateCommand.readSameGrid(paths);
     }
 
     private static void writeMarkdown(Path file, ResultTable table, String command, String chart) throws IOException {

@@ -109,8 +109,8 @@ final class ValidateCommand implements Callable<Integer> {
         if (!labels.isEmpty() && labels.size() != configs.size()) {
             throw new UsageException(labels.size() + " --label for " + configs.size() + " configurations");
         }
-        List<SceneFile> trainFiles = read(folds.isEmpty() ? train : folds);
-        List<SceneFile> testFiles = self ? trainFiles : read(test);
+        List<SceneFile> trainFiles = readSameGrid(folds.isEmpty() ? train : folds);
+        List<SceneFile> testFiles = self ? trainFiles : readSameGrid(test);
         long queries = (long) configs.size() * testFiles.stream().mapToLong(f -> f.scenes().size()).sum();
         List<Outcome> outcomes = new ArrayList<>();
         try (ProgressBar bar = progress(queries)) {
@@ -147,7 +147,8 @@ final class ValidateCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
-    private static List<SceneFile> read(List<Path> paths) {
+    /** Reads scene files that must share one grid (matching never mixes grids). */
+    static List<SceneFile> readSameGrid(List<Path> paths) {
         List<SceneFile> files = new ArrayList<>();
         for (Path path : paths) {
             SceneFile file = SceneFileReader.read(path);
