@@ -24,7 +24,7 @@ import org.scenes.scene.SeenObject;
  * sum over groups, plus, with memory, the same over the remembered previous scenes and a cost
  * for differing previous actions.
  */
-public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Encoded> {
+public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Encoded>, PackedMetric {
     public enum Matching { GREEDY, OPTIMAL }
 
     /** Where objects are placed before being compared. */
@@ -312,8 +312,11 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     }
 
     private double groupDistance(double[] x, double[] y) {
-        int n = x.length / STRIDE;
-        int m = y.length / STRIDE;
+        return groupDistance(x, 0, x.length / STRIDE, y, 0, y.length / STRIDE);
+    }
+
+    /** Distance between n objects of x from offset xs and m objects of y from offset ys. */
+    private double groupDistance(double[] x, int xs, int n, double[] y, int ys, int m) {
         if (n == 0 && m == 0) {
             return 0;
         }
@@ -321,17 +324,17 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             double total = 0;
             int paired = Math.min(n, m);
             for (int i = 0; i < paired; i++) {
-                double cost = pairCost(x, i * STRIDE, y, i * STRIDE);
+                double cost = pairCost(x, xs + i * STRIDE, y, ys + i * STRIDE);
                 if (settings.matching() == Matching.OPTIMAL) {
-                    cost = Math.min(cost, x[i * STRIDE + 3] + y[i * STRIDE + 3]);
+                    cost = Math.min(cost, x[xs + i * STRIDE + 3] + y[ys + i * STRIDE + 3]);
                 }
                 total += cost;
             }
             for (int i = paired; i < n; i++) {
-                total += x[i * STRIDE + 3];
+                total += x[xs + i * STRIDE + 3];
             }
             for (int j = paired; j < m; j++) {
-                total += y[j * STRIDE + 3];
+                total += y[ys + j * STRIDE + 3];
             }
             return total;
         }
@@ -342,11 +345,11 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             for (int j = 0; j < size; j++) {
                 double value;
                 if (i < n && j < m) {
-                    value = Math.min(pairCost(x, i * STRIDE, y, j * STRIDE), x[i * STRIDE + 3] + y[j * STRIDE + 3]);
+                    value = Math.min(pairCost(x, xs + i * STRIDE, y, ys + j * STRIDE), x[xs + i * STRIDE + 3] + y[ys + j * STRIDE + 3]);
                 } else if (i < n) {
-                    value = x[i * STRIDE + 3];
+                    value = x[xs + i * STRIDE + 3];
                 } else if (j < m) {
-                    value = y[j * STRIDE + 3];
+                    value = y[ys + j * STRIDE + 3];
                 } else {
                     value = 0;
                 }
@@ -354,5 +357,70 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             }
         }
         return Assignment.minimumCost(cost, size);
+    }
+
+    /**
+     * The knowledge base as one flat array per group (objects of all scenes back to back, each
+     * scene's nearest first) and per group the offset where each scene starts: no object per
+     * scene or per object. Not for memory terms, which compare previous scenes too.
+     */
+    @Override
+    public PackedScenes pack(List<Scene> scenes) {
+        if (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0) {
+            return null;
+        }
+        int n = scenes.size();
+        int[][] starts = new int[GROUPS][n + 1];
+        double[][][] perScene = new double[n][][];
+        for (int i = 0; i < n; i++) {
+            perScene[i] = encode(scenes.get(i), false).groups();
+            for (int group = 0; group < GROUPS; group++) {
+                starts[group][i + 1] = starts[group][i] + perScene[i][group].length;
+            }
+        }
+        double[][] data = new double[GROUPS][];
+        for (int group = 0; group < GROUPS; group++) {
+            data[group] = new double[starts[group][n]];
+            for (int i = 0; i < n; i++) {
+                System.arraycopy(perScene[i][group], 0, data[group], starts[group][i], perScene[i][group].length);
+            }
+        }
+        return new Packed(data, starts, n);
+    }
+
+    /** Scans like {@link #distance(Encoded, Encoded, double)}: same group order, same sums, same abandoning. */
+    private final class Packed implements PackedScenes {
+        private final double[][] data;
+        private final int[][] starts;
+        private final int size;
+        private final int[] activeGroups;
+
+        Packed(double[][] data, int[][] starts, int size) {
+            this.data = data;
+            this.starts = starts;
+            this.size = size;
+            activeGroups = java.util.stream.IntStream.range(0, GROUPS).filter(g -> groupWeight[g] != 0).toArray();
+        }
+
+        @Override
+        public void scan(Scene query, TopK top) {
+            double[][] q = encode(query, false).groups();
+            double bound = top.bound();
+            for (int i = 0; i < size; i++) {
+                double total = 0;
+                for (int group : activeGroups) {
+                    int start = starts[group][i];
+                    int count = (starts[group][i + 1] - start) / STRIDE;
+                    total += groupWeight[group] * groupDistance(q[group], 0, q[group].length / STRIDE, data[group], start, count);
+                    if (total > bound) {
+                        break;
+                    }
+                }
+                if (!(total > bound)) { // NaN too, which the heap ranks farthest
+                    top.offer(total, i);
+                    bound = top.bound();
+                }
+            }
+        }
     }
 }
