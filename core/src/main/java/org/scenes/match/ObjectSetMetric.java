@@ -128,9 +128,14 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
 
     private final Settings settings;
     private final double[] groupWeight = new double[GROUPS];
+    // read on every pair: plain fields rather than record accessors and enum compares
+    private final boolean polar;
+    private final boolean greedy;
 
     public ObjectSetMetric(Settings settings) {
         this.settings = settings;
+        polar = settings.space() == Space.POLAR;
+        greedy = settings.matching() == Matching.GREEDY;
         double[] classWeights = settings.weights().toArray();
         for (int group = 0; group < GROUPS; group++) {
             groupWeight[group] = classWeights[CLASS_OF_GROUP[group]];
@@ -308,24 +313,30 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         double da = x[i] - y[j];
         double db = x[i + 1] - y[j + 1];
         double rows = Math.abs(x[i + 2] - y[j + 2]);
-        return rows + (settings.space() == Space.POLAR ? Math.abs(da) + Math.abs(db) : Math.sqrt(da * da + db * db));
+        return rows + (polar ? Math.abs(da) + Math.abs(db) : Math.sqrt(da * da + db * db));
     }
 
     private double groupDistance(double[] x, double[] y) {
-        return groupDistance(x, 0, x.length / STRIDE, y, 0, y.length / STRIDE);
+        return groupDistance(x, 0, x.length / STRIDE, y, 0, y.length / STRIDE, 0, 1, Double.POSITIVE_INFINITY);
     }
 
-    /** Distance between n objects of x from offset xs and m objects of y from offset ys. */
-    private double groupDistance(double[] x, int xs, int n, double[] y, int ys, int m) {
+    /**
+     * Distance between n objects of x from offset xs and m objects of y from offset ys. For
+     * optimal matching, when a lower bound of the assignment (the larger of the sums of row and
+     * of column minima of the cost matrix) already makes {@code before + weight * cost} exceed
+     * {@code bound}, that bound is returned without solving the assignment: the caller then
+     * computes the same sum, above the bound, and drops the scene as the exact cost would.
+     */
+    private double groupDistance(double[] x, int xs, int n, double[] y, int ys, int m, double before, double weight, double bound) {
         if (n == 0 && m == 0) {
             return 0;
         }
-        if (settings.matching() == Matching.GREEDY || n <= 1 && m <= 1) {
+        if (greedy || n <= 1 && m <= 1) {
             double total = 0;
             int paired = Math.min(n, m);
             for (int i = 0; i < paired; i++) {
                 double cost = pairCost(x, xs + i * STRIDE, y, ys + i * STRIDE);
-                if (settings.matching() == Matching.OPTIMAL) {
+                if (!greedy) {
                     cost = Math.min(cost, x[xs + i * STRIDE + 3] + y[ys + i * STRIDE + 3]);
                 }
                 total += cost;
@@ -356,7 +367,39 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 cost[i * size + j] = value;
             }
         }
+        if (bound < Double.POSITIVE_INFINITY) {
+            double lower = Math.max(rowMinima(cost, size), columnMinima(cost, size));
+            // shaved so rounding in the solver's own sum can never put the true cost below it
+            lower *= 1 - 1e-9;
+            if (before + weight * lower > bound) {
+                return lower;
+            }
+        }
         return Assignment.minimumCost(cost, size);
+    }
+
+    private static double rowMinima(double[] cost, int size) {
+        double sum = 0;
+        for (int i = 0; i < size; i++) {
+            double min = Double.POSITIVE_INFINITY;
+            for (int j = 0; j < size; j++) {
+                min = Math.min(min, cost[i * size + j]);
+            }
+            sum += min;
+        }
+        return sum;
+    }
+
+    private static double columnMinima(double[] cost, int size) {
+        double sum = 0;
+        for (int j = 0; j < size; j++) {
+            double min = Double.POSITIVE_INFINITY;
+            for (int i = 0; i < size; i++) {
+                min = Math.min(min, cost[i * size + j]);
+            }
+            sum += min;
+        }
+        return sum;
     }
 
     /**
@@ -411,7 +454,8 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 for (int group : activeGroups) {
                     int start = starts[group][i];
                     int count = (starts[group][i + 1] - start) / STRIDE;
-                    total += groupWeight[group] * groupDistance(q[group], 0, q[group].length / STRIDE, data[group], start, count);
+                    double weight = groupWeight[group];
+                    total += weight * groupDistance(q[group], 0, q[group].length / STRIDE, data[group], start, count, total, weight, bound);
                     if (total > bound) {
                         break;
                     }
