@@ -378,6 +378,35 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         return Assignment.minimumCost(cost, size);
     }
 
+    /**
+     * A lower bound of the optimal group distance without building the cost matrix: each object
+     * of the larger side costs at least its cheapest option (a partner or going unmatched).
+     */
+    private double lowerBound(double[] x, int n, double[] y, int ys, int m) {
+        if (n <= 1 && m <= 1) {
+            return groupDistance(x, 0, n, y, ys, m, 0, 1, Double.POSITIVE_INFINITY);
+        }
+        double sum = 0;
+        if (n >= m) {
+            for (int i = 0; i < n; i++) {
+                double min = x[i * STRIDE + 3];
+                for (int j = 0; j < m; j++) {
+                    min = Math.min(min, pairCost(x, i * STRIDE, y, ys + j * STRIDE));
+                }
+                sum += min;
+            }
+        } else {
+            for (int j = 0; j < m; j++) {
+                double min = y[ys + j * STRIDE + 3];
+                for (int i = 0; i < n; i++) {
+                    min = Math.min(min, pairCost(x, i * STRIDE, y, ys + j * STRIDE));
+                }
+                sum += min;
+            }
+        }
+        return sum;
+    }
+
     private static double rowMinima(double[] cost, int size) {
         double sum = 0;
         for (int i = 0; i < size; i++) {
@@ -448,23 +477,47 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         @Override
         public void scan(Scene query, TopK top) {
             double[][] q = encode(query, false).groups();
-            double bound = top.bound();
+            if (greedy) {
+                for (int i = 0; i < size; i++) {
+                    offer(q, i, top);
+                }
+                return;
+            }
+            // optimal: scenes in order of a cheap lower bound, stopping once it exceeds the k-th best
+            double[] lower = new double[size];
+            Integer[] order = new Integer[size];
             for (int i = 0; i < size; i++) {
-                double total = 0;
+                double sum = 0;
                 for (int group : activeGroups) {
                     int start = starts[group][i];
-                    int count = (starts[group][i + 1] - start) / STRIDE;
-                    double weight = groupWeight[group];
-                    total += weight * groupDistance(q[group], 0, q[group].length / STRIDE, data[group], start, count, total, weight, bound);
-                    if (total > bound) {
-                        break;
-                    }
+                    sum += groupWeight[group] * lowerBound(q[group], q[group].length / STRIDE, data[group], start,
+                            (starts[group][i + 1] - start) / STRIDE);
                 }
-                if (!(total > bound)) { // NaN too, which the heap ranks farthest
-                    top.offer(total, i);
-                    bound = top.bound();
+                lower[i] = sum * (1 - 1e-9); // shaved: the exact sums round differently
+                order[i] = i;
+            }
+            java.util.Arrays.sort(order, (a, b) -> Double.compare(lower[a], lower[b]));
+            for (int i : order) {
+                if (lower[i] > top.bound()) {
+                    return;
+                }
+                offer(q, i, top);
+            }
+        }
+
+        private void offer(double[][] q, int i, TopK top) {
+            double bound = top.bound();
+            double total = 0;
+            for (int group : activeGroups) {
+                int start = starts[group][i];
+                int count = (starts[group][i + 1] - start) / STRIDE;
+                double weight = groupWeight[group];
+                total += weight * groupDistance(q[group], 0, q[group].length / STRIDE, data[group], start, count, total, weight, bound);
+                if (total > bound) {
+                    return;
                 }
             }
+            top.offer(total, i); // NaN too, which the heap ranks farthest
         }
     }
 }
