@@ -14,8 +14,8 @@ import picocli.CommandLine.Spec;
         description = "Learn to play RoboCup 2D soccer by watching another agent: record, convert, validate, play.",
         subcommands = {CommandLine.HelpCommand.class, PluginsCommand.class, ConvertCommand.class,
                 ShowCommand.class, StatsCommand.class, ExportCommand.class,
-                ValidateCommand.class, TuneCommand.class, ExperimentCommand.class, SimulateCommand.class,
-                PlayCommand.class, DemoCommand.class, ProxyCommand.class})
+                ValidateCommand.class, TuneCommand.class, ExperimentCommand.class, BenchCommand.class,
+                SimulateCommand.class, PlayCommand.class, DemoCommand.class, ProxyCommand.class})
 final class ScenesCommand implements Runnable {
     @Spec
     CommandLine.Model.CommandSpec spec;

@@ -24,7 +24,7 @@ import org.scenes.scene.SeenObject;
  * sum over groups, plus, with memory, the same over the remembered previous scenes and a cost
  * for differing previous actions.
  */
-public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Encoded> {
+public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Encoded>, PackedMetric {
     public enum Matching { GREEDY, OPTIMAL }
 
     /** Where objects are placed before being compared. */
@@ -128,9 +128,14 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
 
     private final Settings settings;
     private final double[] groupWeight = new double[GROUPS];
+    // read on every pair: plain fields rather than record accessors and enum compares
+    private final boolean polar;
+    private final boolean greedy;
 
     public ObjectSetMetric(Settings settings) {
         this.settings = settings;
+        polar = settings.space() == Space.POLAR;
+        greedy = settings.matching() == Matching.GREEDY;
         double[] classWeights = settings.weights().toArray();
         for (int group = 0; group < GROUPS; group++) {
             groupWeight[group] = classWeights[CLASS_OF_GROUP[group]];
@@ -308,30 +313,39 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         double da = x[i] - y[j];
         double db = x[i + 1] - y[j + 1];
         double rows = Math.abs(x[i + 2] - y[j + 2]);
-        return rows + (settings.space() == Space.POLAR ? Math.abs(da) + Math.abs(db) : Math.sqrt(da * da + db * db));
+        return rows + (polar ? Math.abs(da) + Math.abs(db) : Math.sqrt(da * da + db * db));
     }
 
     private double groupDistance(double[] x, double[] y) {
-        int n = x.length / STRIDE;
-        int m = y.length / STRIDE;
+        return groupDistance(x, 0, x.length / STRIDE, y, 0, y.length / STRIDE, 0, 1, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * Distance between n objects of x from offset xs and m objects of y from offset ys. For
+     * optimal matching, when a lower bound of the assignment (the larger of the sums of row and
+     * of column minima of the cost matrix) already makes {@code before + weight * cost} exceed
+     * {@code bound}, that bound is returned without solving the assignment: the caller then
+     * computes the same sum, above the bound, and drops the scene as the exact cost would.
+     */
+    private double groupDistance(double[] x, int xs, int n, double[] y, int ys, int m, double before, double weight, double bound) {
         if (n == 0 && m == 0) {
             return 0;
         }
-        if (settings.matching() == Matching.GREEDY || n <= 1 && m <= 1) {
+        if (greedy || n <= 1 && m <= 1) {
             double total = 0;
             int paired = Math.min(n, m);
             for (int i = 0; i < paired; i++) {
-                double cost = pairCost(x, i * STRIDE, y, i * STRIDE);
-                if (settings.matching() == Matching.OPTIMAL) {
-                    cost = Math.min(cost, x[i * STRIDE + 3] + y[i * STRIDE + 3]);
+                double cost = pairCost(x, xs + i * STRIDE, y, ys + i * STRIDE);
+                if (!greedy) {
+                    cost = Math.min(cost, x[xs + i * STRIDE + 3] + y[ys + i * STRIDE + 3]);
                 }
                 total += cost;
             }
             for (int i = paired; i < n; i++) {
-                total += x[i * STRIDE + 3];
+                total += x[xs + i * STRIDE + 3];
             }
             for (int j = paired; j < m; j++) {
-                total += y[j * STRIDE + 3];
+                total += y[ys + j * STRIDE + 3];
             }
             return total;
         }
@@ -342,17 +356,168 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             for (int j = 0; j < size; j++) {
                 double value;
                 if (i < n && j < m) {
-                    value = Math.min(pairCost(x, i * STRIDE, y, j * STRIDE), x[i * STRIDE + 3] + y[j * STRIDE + 3]);
+                    value = Math.min(pairCost(x, xs + i * STRIDE, y, ys + j * STRIDE), x[xs + i * STRIDE + 3] + y[ys + j * STRIDE + 3]);
                 } else if (i < n) {
-                    value = x[i * STRIDE + 3];
+                    value = x[xs + i * STRIDE + 3];
                 } else if (j < m) {
-                    value = y[j * STRIDE + 3];
+                    value = y[ys + j * STRIDE + 3];
                 } else {
                     value = 0;
                 }
                 cost[i * size + j] = value;
             }
         }
+        if (bound < Double.POSITIVE_INFINITY) {
+            double lower = Math.max(rowMinima(cost, size), columnMinima(cost, size));
+            // shaved so rounding in the solver's own sum can never put the true cost below it
+            lower *= 1 - 1e-9;
+            if (before + weight * lower > bound) {
+                return lower;
+            }
+        }
         return Assignment.minimumCost(cost, size);
+    }
+
+    /**
+     * A lower bound of the optimal group distance without building the cost matrix: each object
+     * of the larger side costs at least its cheapest option (a partner or going unmatched).
+     */
+    private double lowerBound(double[] x, int n, double[] y, int ys, int m) {
+        if (n <= 1 && m <= 1) {
+            return groupDistance(x, 0, n, y, ys, m, 0, 1, Double.POSITIVE_INFINITY);
+        }
+        double sum = 0;
+        if (n >= m) {
+            for (int i = 0; i < n; i++) {
+                double min = x[i * STRIDE + 3];
+                for (int j = 0; j < m; j++) {
+                    min = Math.min(min, pairCost(x, i * STRIDE, y, ys + j * STRIDE));
+                }
+                sum += min;
+            }
+        } else {
+            for (int j = 0; j < m; j++) {
+                double min = y[ys + j * STRIDE + 3];
+                for (int i = 0; i < n; i++) {
+                    min = Math.min(min, pairCost(x, i * STRIDE, y, ys + j * STRIDE));
+                }
+                sum += min;
+            }
+        }
+        return sum;
+    }
+
+    private static double rowMinima(double[] cost, int size) {
+        double sum = 0;
+        for (int i = 0; i < size; i++) {
+            double min = Double.POSITIVE_INFINITY;
+            for (int j = 0; j < size; j++) {
+                min = Math.min(min, cost[i * size + j]);
+            }
+            sum += min;
+        }
+        return sum;
+    }
+
+    private static double columnMinima(double[] cost, int size) {
+        double sum = 0;
+        for (int j = 0; j < size; j++) {
+            double min = Double.POSITIVE_INFINITY;
+            for (int i = 0; i < size; i++) {
+                min = Math.min(min, cost[i * size + j]);
+            }
+            sum += min;
+        }
+        return sum;
+    }
+
+    /**
+     * The knowledge base as one flat array per group (objects of all scenes back to back, each
+     * scene's nearest first) and per group the offset where each scene starts: no object per
+     * scene or per object. Not for memory terms, which compare previous scenes too.
+     */
+    @Override
+    public PackedScenes pack(List<Scene> scenes) {
+        if (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0) {
+            return null;
+        }
+        int n = scenes.size();
+        int[][] starts = new int[GROUPS][n + 1];
+        double[][][] perScene = new double[n][][];
+        for (int i = 0; i < n; i++) {
+            perScene[i] = encode(scenes.get(i), false).groups();
+            for (int group = 0; group < GROUPS; group++) {
+                starts[group][i + 1] = starts[group][i] + perScene[i][group].length;
+            }
+        }
+        double[][] data = new double[GROUPS][];
+        for (int group = 0; group < GROUPS; group++) {
+            data[group] = new double[starts[group][n]];
+            for (int i = 0; i < n; i++) {
+                System.arraycopy(perScene[i][group], 0, data[group], starts[group][i], perScene[i][group].length);
+            }
+        }
+        return new Packed(data, starts, n);
+    }
+
+    /** Scans like {@link #distance(Encoded, Encoded, double)}: same group order, same sums, same abandoning. */
+    private final class Packed implements PackedScenes {
+        private final double[][] data;
+        private final int[][] starts;
+        private final int size;
+        private final int[] activeGroups;
+
+        Packed(double[][] data, int[][] starts, int size) {
+            this.data = data;
+            this.starts = starts;
+            this.size = size;
+            activeGroups = java.util.stream.IntStream.range(0, GROUPS).filter(g -> groupWeight[g] != 0).toArray();
+        }
+
+        @Override
+        public void scan(Scene query, TopK top) {
+            double[][] q = encode(query, false).groups();
+            if (greedy) {
+                for (int i = 0; i < size; i++) {
+                    offer(q, i, top);
+                }
+                return;
+            }
+            // optimal: scenes in order of a cheap lower bound, stopping once it exceeds the k-th best
+            double[] lower = new double[size];
+            Integer[] order = new Integer[size];
+            for (int i = 0; i < size; i++) {
+                double sum = 0;
+                for (int group : activeGroups) {
+                    int start = starts[group][i];
+                    sum += groupWeight[group] * lowerBound(q[group], q[group].length / STRIDE, data[group], start,
+                            (starts[group][i + 1] - start) / STRIDE);
+                }
+                lower[i] = sum * (1 - 1e-9); // shaved: the exact sums round differently
+                order[i] = i;
+            }
+            java.util.Arrays.sort(order, (a, b) -> Double.compare(lower[a], lower[b]));
+            for (int i : order) {
+                if (lower[i] > top.bound()) {
+                    return;
+                }
+                offer(q, i, top);
+            }
+        }
+
+        private void offer(double[][] q, int i, TopK top) {
+            double bound = top.bound();
+            double total = 0;
+            for (int group : activeGroups) {
+                int start = starts[group][i];
+                int count = (starts[group][i + 1] - start) / STRIDE;
+                double weight = groupWeight[group];
+                total += weight * groupDistance(q[group], 0, q[group].length / STRIDE, data[group], start, count, total, weight, bound);
+                if (total > bound) {
+                    return;
+                }
+            }
+            top.offer(total, i); // NaN too, which the heap ranks farthest
+        }
     }
 }

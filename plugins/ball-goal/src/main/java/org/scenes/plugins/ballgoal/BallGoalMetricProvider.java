@@ -1,10 +1,12 @@
 package org.scenes.plugins.ballgoal;
 
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import org.scenes.match.EncodedMetric;
 import org.scenes.match.MetricProvider;
 import org.scenes.match.ObjectSetMetric;
+import org.scenes.match.PackedMetric;
 import org.scenes.match.SceneMetric;
 import org.scenes.plugin.PluginConfig;
 import org.scenes.plugin.PluginException;
@@ -63,7 +65,7 @@ public final class BallGoalMetricProvider implements MetricProvider {
      * both scenes hold it, {@code M} when one does, 0 when neither; weighted by the ball and goal
      * object weights. Each term is a metric (a missing object is a point at M from all others), so the sum is too.
      */
-    static final class BallGoalMetric implements EncodedMetric<double[]> {
+    static final class BallGoalMetric implements EncodedMetric<double[]>, PackedMetric {
         private final double rowWeight;
         private final double columnWeight;
         private final double anglePerDegree;
@@ -83,6 +85,36 @@ public final class BallGoalMetricProvider implements MetricProvider {
             this.missing = missing;
             this.ballWeight = ballWeight;
             this.goalWeight = goalWeight;
+        }
+
+        /** Packed columns of the current scene's ball and goal; none with memory terms. */
+        @Override
+        public PackedScenes pack(List<Scene> scenes) {
+            return memory > 0 || memoryAction > 0 ? null : PackedBallGoal.pack(this, scenes);
+        }
+
+        double rowWeight() {
+            return rowWeight;
+        }
+
+        double columnWeight() {
+            return columnWeight;
+        }
+
+        double anglePerDegree() {
+            return anglePerDegree;
+        }
+
+        double missing() {
+            return missing;
+        }
+
+        double ballWeight() {
+            return ballWeight;
+        }
+
+        double goalWeight() {
+            return goalWeight;
         }
 
         @Override

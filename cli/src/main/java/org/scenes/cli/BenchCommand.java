@@ -1,0 +1,99 @@
+package org.scenes.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.scenes.match.KnowledgeBase;
+import org.scenes.match.Recognizer;
+import org.scenes.plugin.PluginConfig;
+import org.scenes.plugin.PluginKind;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.Scene;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code scenes bench}: a short measurement of matching speed from the installed tool, one query
+ * at a time scanned over the whole knowledge base on one thread, as the agent decides. The JMH
+ * suite ({@code gradle :tests:jmh}) is the careful measurement; this is the quick look.
+ */
+@Command(name = "bench", mixinStandardHelpOptions = true,
+        description = "Measure how many stored scenes each metric compares per 100 ms cycle (k=1, one thread).")
+final class BenchCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @ParentCommand
+    ScenesCommand top;
+
+    @Parameters(arity = "1..*", paramLabel = "FILE", description = "Scene files (.json or .json.gz): the knowledge base; queries are spread over it.")
+    List<Path> files;
+
+    @Option(names = "--metric", paramLabel = "NAME", description = "Metric to measure (repeatable; default: every built-in metric, continuous greedy and optimal).")
+    List<String> metrics;
+
+    @Option(names = "--time", paramLabel = "SECONDS", defaultValue = "1", description = "Measuring time per metric, after as long again of warm-up (default ${DEFAULT-VALUE}).")
+    double seconds;
+
+    @Override
+    public Integer call() {
+        if (!(seconds > 0)) {
+            throw new UsageException("--time must be positive, not " + seconds);
+        }
+        PluginRegistry registry = top.global.registry();
+        Map<String, PluginConfig> chosen = new LinkedHashMap<>();
+        if (metrics == null) {
+            for (String name : List.of("ball-goal", "continuous", "cell", "projection")) {
+                if (registry.names(PluginKind.METRIC).contains(name)) {
+                    chosen.put(name, PluginConfig.DEFAULT);
+                }
+            }
+            if (chosen.containsKey("continuous")) {
+                chosen.put("continuous (optimal)", PluginConfig.DEFAULT.withOptions(Map.of("matching", "optimal")));
+            }
+        } else {
+            metrics.forEach(name -> chosen.put(name, PluginConfig.DEFAULT));
+        }
+        KnowledgeBase knowledge = KnowledgeBase.load(files, List::of);
+        List<Scene> queries = new ArrayList<>();
+        for (int i = 0; i < 64; i++) {
+            queries.add(knowledge.scene((int) ((long) i * knowledge.size() / 64)));
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        out.printf(Locale.ROOT, "%d stored scenes, one thread, k=1%n%-24s %18s%n", knowledge.size(), "metric", "scenes per 100 ms");
+        for (Map.Entry<String, PluginConfig> entry : chosen.entrySet()) {
+            String name = entry.getKey().replace(" (optimal)", "");
+            PluginConfig config = entry.getValue();
+            registry.check(PluginKind.METRIC, name, config);
+            Recognizer recognizer = new Recognizer(knowledge, () -> registry.metric(name, config), 1);
+            scans(recognizer, queries, seconds); // warm-up
+            double perSecond = scans(recognizer, queries, seconds) * knowledge.size();
+            out.printf(Locale.ROOT, "%-24s %,18.0f%n", entry.getKey(), perSecond / 10);
+            out.flush();
+        }
+        return ExitCodes.OK;
+    }
+
+    /** Queries answered per second, each scanning the whole knowledge base. */
+    private static double scans(Recognizer recognizer, List<Scene> queries, double seconds) {
+        long start = System.nanoTime();
+        long end = start + (long) (seconds * 1e9);
+        long done = 0;
+        long now;
+        do {
+            recognizer.nearest(queries.get((int) (done % queries.size())));
+            done++;
+            now = System.nanoTime();
+        } while (now < end);
+        return done / ((now - start) / 1e9);
+    }
+}

@@ -1,0 +1,107 @@
+package org.scenes.match;
+
+/**
+ * The k best (distance, index) pairs seen so far, as a bounded max-heap whose root is the worst
+ * kept. Equal distances are ordered by index, so a scan in index order keeps the earliest scene,
+ * whatever the order of offers. NaN distances count as farthest. One per query; not thread-safe.
+ */
+public final class TopK {
+    private final double[] distance;
+    private final int[] index;
+    private int size;
+
+    public TopK(int capacity) {
+        if (capacity < 1) {
+            throw new IllegalArgumentException("capacity must be at least 1, not " + capacity);
+        }
+        distance = new double[capacity];
+        index = new int[capacity];
+    }
+
+    /**
+     * The largest distance that can still enter: the worst kept once full, +Infinity before.
+     * A scan in index order may skip any scene whose distance is not below it.
+     */
+    public double bound() {
+        return size < distance.length ? Double.POSITIVE_INFINITY : distance[0];
+    }
+
+    public int size() {
+        return size;
+    }
+
+    /** Keeps the pair if it is among the k best so far. */
+    public void offer(double newDistance, int newIndex) {
+        if (size < distance.length) {
+            int child = size++;
+            distance[child] = newDistance;
+            index[child] = newIndex;
+            while (child > 0) {
+                int parent = (child - 1) / 2;
+                if (compare(parent, child) >= 0) {
+                    break;
+                }
+                swap(parent, child);
+                child = parent;
+            }
+            return;
+        }
+        if (Recognizer.compare(newDistance, newIndex, distance[0], index[0]) >= 0) {
+            return;
+        }
+        distance[0] = newDistance;
+        index[0] = newIndex;
+        int parent = 0;
+        while (true) {
+            int left = 2 * parent + 1;
+            int right = left + 1;
+            int largest = parent;
+            if (left < size && compare(left, largest) > 0) {
+                largest = left;
+            }
+            if (right < size && compare(right, largest) > 0) {
+                largest = right;
+            }
+            if (largest == parent) {
+                return;
+            }
+            swap(parent, largest);
+            parent = largest;
+        }
+    }
+
+    /** Slots in order nearest first (ties by index). */
+    int[] sortedSlots() {
+        Integer[] order = new Integer[size];
+        for (int i = 0; i < size; i++) {
+            order[i] = i;
+        }
+        java.util.Arrays.sort(order, (a, b) -> compare(a, b));
+        int[] slots = new int[size];
+        for (int i = 0; i < size; i++) {
+            slots[i] = order[i];
+        }
+        return slots;
+    }
+
+    double distance(int slot) {
+        return distance[slot];
+    }
+
+    int index(int slot) {
+        return index[slot];
+    }
+
+    private int compare(int a, int b) {
+        return Recognizer.compare(distance[a], index[a], distance[b], index[b]);
+    }
+
+    private void swap(int a, int b) {
+        double d = distance[a];
+        distance[a] = distance[b];
+        distance[b] = d;
+        int i = index[a];
+        index[a] = index[b];
+        index[b] = i;
+    }
+}

@@ -1,0 +1,145 @@
+package org.scenes.plugins.ballgoal;
+
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.scenes.match.PackedMetric;
+import org.scenes.match.TopK;
+import org.scenes.scene.Scene;
+
+/**
+ * The knowledge base for {@code ball-goal} as small keys: per scene and object (ball, goal) one
+ * byte naming its cell (or its absence) and one char naming its direction, each an index into a
+ * dictionary of the distinct values the knowledge base holds (real scenes have 15 cells and a few
+ * hundred integer directions). A query turns the dictionaries into cost tables, so the scan is
+ * table look-ups and one addition per object: {@code min(cellCost[cell] + directionCost[dir],
+ * cap[cell])}. The tables hold the very partial sums {@link BallGoalMetricProvider.BallGoalMetric}
+ * computes ({@code (cw |dc| + rw |dr|) + aw |dd|}, summed in that order), so every distance is
+ * identical to the exhaustive scan's; absence is folded into the tables (an infinite cell cost
+ * and a cap of M or 0), so the loop has no branch but the rare offer.
+ */
+final class PackedBallGoal implements PackedMetric.PackedScenes {
+    private static final int MAX_CELLS = 255;
+    private static final int MAX_DIRECTIONS = 65536;
+
+    private final BallGoalMetricProvider.BallGoalMetric metric;
+    private final int size;
+    /** per object (0 ball, 1 goal): cell key of each scene; the last key means absent */
+    private final byte[][] cellKeys = new byte[2][];
+    private final char[][] directionKeys = new char[2][];
+    private final double[][] cellColumn = new double[2][];
+    private final double[][] cellRow = new double[2][];
+    private final double[][] directions = new double[2][];
+
+    private PackedBallGoal(BallGoalMetricProvider.BallGoalMetric metric, int size) {
+        this.metric = metric;
+        this.size = size;
+    }
+
+    /** The packed form, or null when the scenes hold too many distinct cells or directions for the keys. */
+    static PackedBallGoal pack(BallGoalMetricProvider.BallGoalMetric metric, List<Scene> scenes) {
+        PackedBallGoal packed = new PackedBallGoal(metric, scenes.size());
+        double[][] features = new double[scenes.size()][];
+        for (int i = 0; i < features.length; i++) {
+            features[i] = metric.encode(scenes.get(i));
+        }
+        for (int object = 0; object < 2; object++) {
+            int offset = 4 * object;
+            Map<Long, Integer> cells = new HashMap<>();
+            Map<Double, Integer> directionIndex = new HashMap<>();
+            for (double[] f : features) {
+                if (f[offset] != 0) {
+                    cells.putIfAbsent(Double.doubleToLongBits(f[offset + 1]) * 31 + Double.doubleToLongBits(f[offset + 2]), cells.size());
+                    directionIndex.putIfAbsent(f[offset + 3], directionIndex.size());
+                }
+            }
+            if (cells.size() > MAX_CELLS || directionIndex.size() > MAX_DIRECTIONS) {
+                return null;
+            }
+            int absent = cells.size();
+            packed.cellColumn[object] = new double[absent];
+            packed.cellRow[object] = new double[absent];
+            packed.directions[object] = new double[Math.max(1, directionIndex.size())];
+            byte[] cellKey = new byte[features.length];
+            char[] directionKey = new char[features.length];
+            for (int i = 0; i < features.length; i++) {
+                double[] f = features[i];
+                if (f[offset] == 0) {
+                    cellKey[i] = (byte) absent;
+                    continue;
+                }
+                int cell = cells.get(Double.doubleToLongBits(f[offset + 1]) * 31 + Double.doubleToLongBits(f[offset + 2]));
+                int direction = directionIndex.get(f[offset + 3]);
+                cellKey[i] = (byte) cell;
+                directionKey[i] = (char) direction;
+                packed.cellColumn[object][cell] = f[offset + 1];
+                packed.cellRow[object][cell] = f[offset + 2];
+                packed.directions[object][direction] = f[offset + 3];
+            }
+            packed.cellKeys[object] = cellKey;
+            packed.directionKeys[object] = directionKey;
+        }
+        return packed;
+    }
+
+    @Override
+    public void scan(Scene query, TopK top) {
+        double[] q = metric.encode(query);
+        double[] ballCell = new double[256];
+        double[] ballCap = new double[256];
+        double[] ballDirection = tables(q, 0, ballCell, ballCap);
+        double[] goalCell = new double[256];
+        double[] goalCap = new double[256];
+        double[] goalDirection = tables(q, 1, goalCell, goalCap);
+        double ballWeight = metric.ballWeight();
+        double goalWeight = metric.goalWeight();
+        byte[] ballCells = cellKeys[0];
+        char[] ballDirections = directionKeys[0];
+        byte[] goalCells = cellKeys[1];
+        char[] goalDirections = directionKeys[1];
+        double bound = top.bound();
+        for (int i = 0; i < size; i++) {
+            int bc = ballCells[i] & 0xff;
+            int gc = goalCells[i] & 0xff;
+            double ball = Math.min(ballCell[bc] + ballDirection[ballDirections[i]], ballCap[bc]);
+            double goal = Math.min(goalCell[gc] + goalDirection[goalDirections[i]], goalCap[gc]);
+            double distance = ballWeight * ball + goalWeight * goal;
+            if (distance < bound) {
+                top.offer(distance, i);
+                bound = top.bound();
+            }
+        }
+    }
+
+    /**
+     * Fills the cell tables of one object for this query and returns its direction table. With
+     * the query's object present: cost {@code cw |dc| + rw |dr|} and cap 2M for a present cell,
+     * infinite cost and cap M for absent; with it absent: infinite cost, cap M or 0.
+     */
+    private double[] tables(double[] q, int object, double[] cellCost, double[] cap) {
+        int offset = 4 * object;
+        boolean present = q[offset] != 0;
+        double missing = metric.missing();
+        double[] columns = cellColumn[object];
+        double[] rows = cellRow[object];
+        int absent = columns.length;
+        for (int cell = 0; cell < absent; cell++) {
+            if (present) {
+                cellCost[cell] = metric.columnWeight() * Math.abs(q[offset + 1] - columns[cell])
+                        + metric.rowWeight() * Math.abs(q[offset + 2] - rows[cell]);
+                cap[cell] = 2 * missing;
+            } else {
+                cellCost[cell] = Double.POSITIVE_INFINITY;
+                cap[cell] = missing;
+            }
+        }
+        cellCost[absent] = Double.POSITIVE_INFINITY;
+        cap[absent] = present ? missing : 0;
+        double[] values = directions[object];
+        double[] directionCost = new double[values.length];
+        for (int d = 0; d < values.length; d++) {
+            directionCost[d] = present ? metric.anglePerDegree() * Math.abs(q[offset + 3] - values[d]) : 0;
+        }
+        return directionCost;
+    }
+}

@@ -1,0 +1,226 @@
+package org.scenes.match;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OperationsPerInvocation;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Warmup;
+import org.scenes.convert.SceneConverter;
+import org.scenes.plugin.PluginConfig;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.Grid;
+import org.scenes.scene.Relation;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SeenObject;
+
+/**
+ * Scenes compared per second when one query is scanned over the whole knowledge base (k = 1),
+ * as each decision of the agent does. The knowledge base is the first {@value #SCENES} scenes of
+ * the Krislet classic game 1 players other than Carleton_2, converted in the setup; queries are
+ * Carleton_2's scenes, one per operation, in turn. Scores are scenes per second: divide by 10
+ * for scenes per 100 ms cycle.
+ * <ul>
+ *   <li>{@code scan}: the {@link Recognizer} with the metric named by {@code metric}
+ *       ({@code continuous-optimal} is {@code continuous} with {@code matching=optimal};
+ *       {@code script-ball-goal} is the shipped example script);</li>
+ *   <li>{@code plainReference}: the thesis' design on the same data: scenes as lists of objects,
+ *       each comparison filtering and re-sorting every class's objects, greedy pairing of all
+ *       objects in cartesian space (what {@code continuous} computes), so the ratio to
+ *       {@code scan} with {@code continuous} is measured in the same run;</li>
+ *   <li>{@code memoryBandwidth}: a sequential sum over an int array of 8 bytes per scene (the
+ *       packed ball-goal data takes 6), the hardware reference for a one-pass scan.</li>
+ * </ul>
+ */
+@State(Scope.Benchmark)
+@BenchmarkMode(Mode.Throughput)
+@OutputTimeUnit(TimeUnit.SECONDS)
+@Warmup(iterations = 3, time = 2)
+@Measurement(iterations = 5, time = 2)
+@Fork(value = 1, jvmArgsAppend = "-Xmx1g")
+public class MatchBench {
+    static final int SCENES = 16384;
+    private static final int QUERIES = 256;
+    private static final String[] STORED = {"Carleton_1", "Carleton_3", "Carleton_4", "Carleton_5",
+        "University_1", "University_2", "University_3", "University_4", "University_5"};
+
+    /** The knowledge base and queries, converted once per fork. */
+    @State(Scope.Benchmark)
+    public static class Data {
+        List<Scene> stored;
+        List<Scene> queries;
+        List<PlainScene> plainStored;
+        List<PlainScene> plainQueries;
+        int[] bandwidthData;
+        int next;
+
+        @Setup
+        public void load() throws IOException {
+            Path game = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "krislet", "classic-game1");
+            stored = new ArrayList<>();
+            for (String player : STORED) {
+                for (Scene scene : scenes(game.resolve(player + ".lsf.gz"))) {
+                    if (stored.size() < SCENES) {
+                        stored.add(scene);
+                    }
+                }
+            }
+            if (stored.size() < SCENES) {
+                throw new IllegalStateException("game 1 holds only " + stored.size() + " scenes, fewer than " + SCENES);
+            }
+            List<Scene> test = scenes(game.resolve("Carleton_2.lsf.gz"));
+            queries = new ArrayList<>();
+            for (int i = 0; i < QUERIES; i++) {
+                queries.add(test.get(i * test.size() / QUERIES));
+            }
+            plainStored = stored.stream().map(PlainScene::of).toList();
+            plainQueries = queries.stream().map(PlainScene::of).toList();
+            bandwidthData = new int[SCENES * 2];
+            for (int i = 0; i < bandwidthData.length; i++) {
+                bandwidthData[i] = i * 31;
+            }
+        }
+
+        int nextQuery() {
+            next = (next + 1) % QUERIES;
+            return next;
+        }
+    }
+
+    /** A recognizer over the data with the metric named by {@code metric}. */
+    @State(Scope.Benchmark)
+    public static class Matcher {
+        @Param({"ball-goal", "continuous", "continuous-optimal", "cell", "projection", "random", "script-ball-goal"})
+        public String metric;
+
+        Recognizer recognizer;
+
+        @Setup
+        public void build(Data data) {
+            PluginRegistry registry = PluginRegistry.load();
+            String spec = switch (metric) {
+                case "script-ball-goal" -> "script:" + Path.of(System.getProperty("scenes.examples", "../examples/scripts"), "ball-goal.groovy");
+                case "continuous-optimal" -> "continuous";
+                default -> metric;
+            };
+            PluginConfig config = metric.equals("continuous-optimal")
+                    ? PluginConfig.DEFAULT.withOptions(Map.of("matching", "optimal")) : PluginConfig.DEFAULT;
+            recognizer = new Recognizer(KnowledgeBase.of(Grid.DEFAULT, data.stored), () -> registry.metric(spec, config), 1);
+        }
+    }
+
+    private static List<Scene> scenes(Path log) throws IOException {
+        List<Scene> scenes = new ArrayList<>();
+        new SceneConverter(Grid.DEFAULT, false, null).convert(log, scenes::add);
+        return scenes;
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(SCENES)
+    public List<Neighbour> scan(Data data, Matcher matcher) {
+        return matcher.recognizer.nearest(data.queries.get(data.nextQuery()));
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(SCENES)
+    public int plainReference(Data data) {
+        PlainScene query = data.plainQueries.get(data.nextQuery());
+        List<PlainScene> plainStored = data.plainStored;
+        double best = Double.POSITIVE_INFINITY;
+        int bestIndex = -1;
+        for (int i = 0; i < plainStored.size(); i++) {
+            double distance = query.distance(plainStored.get(i));
+            if (distance < best) {
+                best = distance;
+                bestIndex = i;
+            }
+        }
+        return bestIndex;
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(SCENES)
+    public int memoryBandwidth(Data data) {
+        int sum = 0;
+        for (int value : data.bandwidthData) {
+            sum += value;
+        }
+        return sum;
+    }
+
+    /** The thesis' object model: an object is its class and position, a scene a list of them. */
+    record PlainObject(int group, double x, double y, double distance) {
+    }
+
+    record PlainScene(List<PlainObject> objects) {
+        static final int GROUPS = 9;
+
+        static PlainScene of(Scene scene) {
+            List<PlainObject> objects = new ArrayList<>();
+            for (SeenObject object : scene.objects()) {
+                double r = Double.isNaN(object.distance()) ? 100 : object.distance();
+                double radians = Math.toRadians(Double.isNaN(object.direction()) ? 0 : object.direction());
+                objects.add(new PlainObject(group(object), r * Math.cos(radians), r * Math.sin(radians), r));
+            }
+            return new PlainScene(objects);
+        }
+
+        private static int group(SeenObject object) {
+            return switch (object.kind()) {
+                case BALL -> 0;
+                case GOAL -> object.relation() == Relation.OWN ? 1 : object.relation() == Relation.OPPONENT ? 2 : 3;
+                case FLAG -> 4;
+                case LINE -> 5;
+                case PLAYER -> object.relation() == Relation.TEAMMATE ? 6 : object.relation() == Relation.OPPONENT ? 7 : 8;
+            };
+        }
+
+        /** Per class: both sides' objects collected and sorted again, paired in order, leftovers penalised. */
+        double distance(PlainScene other) {
+            double total = 0;
+            for (int group = 0; group < GROUPS; group++) {
+                List<PlainObject> mine = inGroup(group);
+                List<PlainObject> theirs = other.inGroup(group);
+                int paired = Math.min(mine.size(), theirs.size());
+                for (int i = 0; i < paired; i++) {
+                    total += Math.hypot(mine.get(i).x() - theirs.get(i).x(), mine.get(i).y() - theirs.get(i).y());
+                }
+                for (int i = paired; i < mine.size(); i++) {
+                    total += penalty(mine.get(i));
+                }
+                for (int i = paired; i < theirs.size(); i++) {
+                    total += penalty(theirs.get(i));
+                }
+            }
+            return total;
+        }
+
+        private List<PlainObject> inGroup(int group) {
+            List<PlainObject> selected = new ArrayList<>();
+            for (PlainObject object : objects) {
+                if (object.group() == group) {
+                    selected.add(object);
+                }
+            }
+            selected.sort(Comparator.comparingDouble(PlainObject::distance));
+            return selected;
+        }
+
+        private static double penalty(PlainObject object) {
+            return 10 * 10 / (10 + object.distance());
+        }
+    }
+}
