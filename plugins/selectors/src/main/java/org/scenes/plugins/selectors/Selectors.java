@@ -103,20 +103,37 @@ public final class Selectors {
         return withParameters(best, usable, params);
     }
 
-    public static final class FirstValid implements SelectorProvider {
-        @Override
-        public String name() {
-            return "first-valid";
+    /** Name, description and options shared by every selector provider here. */
+    abstract static class Provider implements SelectorProvider {
+        private final String name;
+        private final String description;
+        private final boolean takesPercent;
+
+        Provider(String name, String description, boolean takesPercent) {
+            this.name = name;
+            this.description = description;
+            this.takesPercent = takesPercent;
         }
 
         @Override
-        public String description() {
-            return "the nearest neighbour with a usable action";
+        public final String name() {
+            return name;
         }
 
         @Override
-        public Map<String, String> options() {
-            return Selectors.options(false);
+        public final String description() {
+            return description;
+        }
+
+        @Override
+        public final Map<String, String> options() {
+            return Selectors.options(takesPercent);
+        }
+    }
+
+    public static final class FirstValid extends Provider {
+        public FirstValid() {
+            super("first-valid", "the nearest neighbour with a usable action", false);
         }
 
         @Override
@@ -130,20 +147,9 @@ public final class Selectors {
         }
     }
 
-    public static final class Random implements SelectorProvider {
-        @Override
-        public String name() {
-            return "random";
-        }
-
-        @Override
-        public String description() {
-            return "a neighbour with a usable action, chosen at random";
-        }
-
-        @Override
-        public Map<String, String> options() {
-            return Selectors.options(false);
+    public static final class Random extends Provider {
+        public Random() {
+            super("random", "a neighbour with a usable action, chosen at random", false);
         }
 
         @Override
@@ -158,20 +164,9 @@ public final class Selectors {
         return usable.isEmpty() ? null : withParameters(usable.get(random.nextInt(usable.size())), usable, params);
     }
 
-    public static final class Vote implements SelectorProvider {
-        @Override
-        public String name() {
-            return "vote";
-        }
-
-        @Override
-        public String description() {
-            return "majority vote by action type, each neighbour counting its type's action weight";
-        }
-
-        @Override
-        public Map<String, String> options() {
-            return Selectors.options(false);
+    public static final class Vote extends Provider {
+        public Vote() {
+            super("vote", "majority vote by action type, each neighbour counting its type's action weight", false);
         }
 
         @Override
@@ -182,20 +177,9 @@ public final class Selectors {
         }
     }
 
-    public static final class VoteRandom implements SelectorProvider {
-        @Override
-        public String name() {
-            return "vote-random";
-        }
-
-        @Override
-        public String description() {
-            return "vote, except a random neighbour for a given percentage of decisions";
-        }
-
-        @Override
-        public Map<String, String> options() {
-            return Selectors.options(true);
+    public static final class VoteRandom extends Provider {
+        public VoteRandom() {
+            super("vote-random", "vote, except a random neighbour for a given percentage of decisions", true);
         }
 
         @Override
