@@ -5,8 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -15,7 +13,6 @@ import org.junit.jupiter.api.io.TempDir;
 import org.scenes.scene.Grid;
 import org.scenes.scene.SceneFile;
 import org.scenes.scene.SceneFileReader;
-import picocli.CommandLine;
 
 /** Drives convert, show, stats and export through the real command line. */
 class ConvertCommandsTest {
@@ -25,30 +22,22 @@ class ConvertCommandsTest {
     @TempDir
     Path dir;
 
-    private final StringWriter out = new StringWriter();
-    private final StringWriter err = new StringWriter();
+    private final CommandRunner cli = new CommandRunner();
 
     private int run(Object... args) {
-        CommandLine commandLine = ScenesCommand.commandLine();
-        commandLine.setOut(new PrintWriter(out, true));
-        commandLine.setErr(new PrintWriter(err, true));
-        String[] strings = new String[args.length];
-        for (int i = 0; i < args.length; i++) {
-            strings[i] = args[i].toString();
-        }
-        return commandLine.execute(strings);
+        return cli.run(args);
     }
 
     @Test
     void convertWritesTheScenesAndPrintsASummary() {
         Path target = dir.resolve("c1.json.gz");
-        assertEquals(0, run("convert", CARLETON_1, "-o", target), err.toString());
+        assertEquals(0, run("convert", CARLETON_1, "-o", target), cli.err());
         SceneFile file = SceneFileReader.read(target);
         // the number SharedLogsTest derives with awk for this log
         assertEquals(2592, file.scenes().size());
         assertEquals("Carleton", file.header().source().observer().team());
         assertEquals(Grid.DEFAULT, file.grid());
-        String summary = out.toString();
+        String summary = cli.out();
         assertTrue(summary.contains("Scenes written         2592"), summary);
         assertTrue(summary.contains("no action            859"), summary);
         assertTrue(summary.contains("Malformed lines        0"), summary);
@@ -57,16 +46,16 @@ class ConvertCommandsTest {
     @Test
     void convertHonoursTheGridOptions() {
         Path target = dir.resolve("g.json");
-        assertEquals(0, run("convert", CARLETON_1, "-o", target, "--grid", "3x4", "--bounds", "1,5,20"), err.toString());
+        assertEquals(0, run("convert", CARLETON_1, "-o", target, "--grid", "3x4", "--bounds", "1,5,20"), cli.err());
         assertEquals(Grid.of(3, 1, 5, 20), SceneFileReader.read(target).grid());
         assertEquals(2, run("convert", CARLETON_1, "-o", target, "--grid", "3x4"));
-        assertTrue(err.toString().contains("give --bounds with 3 distances"), err.toString());
+        assertTrue(cli.err().contains("give --bounds with 3 distances"), cli.err());
     }
 
     @Test
     void outDirWritesOneFilePerLog() {
         Path second = DATA.resolve("krislet/classic-game1/University_1.lsf.gz");
-        assertEquals(0, run("convert", CARLETON_1, second, "--out-dir", dir.resolve("out")), err.toString());
+        assertEquals(0, run("convert", CARLETON_1, second, "--out-dir", dir.resolve("out")), cli.err());
         assertTrue(Files.exists(dir.resolve("out/Carleton_1.json.gz")));
         assertEquals("University", SceneFileReader.read(dir.resolve("out/University_1.json.gz"))
                 .header().source().observer().team());
@@ -75,11 +64,11 @@ class ConvertCommandsTest {
     @Test
     void outDirKeepsLogsOfTheSameNameApart() {
         Path other = DATA.resolve("krislet/classic-game2/Carleton_1.lsf.gz");
-        assertEquals(0, run("convert", CARLETON_1, other, "--out-dir", dir), err.toString());
+        assertEquals(0, run("convert", CARLETON_1, other, "--out-dir", dir), cli.err());
         assertEquals(2592, SceneFileReader.read(dir.resolve("classic-game1-Carleton_1.json.gz")).scenes().size());
         assertTrue(Files.exists(dir.resolve("classic-game2-Carleton_1.json.gz")));
         assertEquals(2, run("convert", CARLETON_1, CARLETON_1, "--out-dir", dir));
-        assertTrue(err.toString().contains("two logs would both be written"), err.toString());
+        assertTrue(cli.err().contains("two logs would both be written"), cli.err());
     }
 
     @Test
@@ -89,13 +78,13 @@ class ConvertCommandsTest {
                 "(see 1 ((b) 1 2))", "(dash 5)"));
         Path target = dir.resolve("bad.json");
         assertEquals(0, run("convert", log, "-o", target));
-        assertTrue(err.toString().contains("warning: " + log + ":3: column"), err.toString());
-        assertTrue(out.toString().contains("Malformed lines        1"), out.toString());
+        assertTrue(cli.err().contains("warning: " + log + ":3: column"), cli.err());
+        assertTrue(cli.out().contains("Malformed lines        1"), cli.out());
         assertEquals(1, SceneFileReader.read(target).scenes().size());
 
         Path strictTarget = dir.resolve("strict.json");
         assertEquals(1, run("convert", log, "--strict", "-o", strictTarget));
-        assertTrue(err.toString().contains("scenes: " + log + ":3: column"), err.toString());
+        assertTrue(cli.err().contains("scenes: " + log + ":3: column"), cli.err());
         assertFalse(Files.exists(strictTarget), "nothing is half-written");
     }
 
@@ -109,23 +98,20 @@ class ConvertCommandsTest {
     void showStatsAndExport() throws IOException {
         Path scenes = dir.resolve("c1.json");
         assertEquals(0, run("convert", CARLETON_1, "-o", scenes));
-        out.getBuffer().setLength(0);
 
         assertEquals(0, run("show", scenes, "--index", "3"));
-        assertTrue(out.toString().startsWith("#3  Scene cycle 0  Carleton 1 (l)"), out.toString());
-        assertTrue(out.toString().contains("action: dash power=603"), out.toString());
+        assertTrue(cli.out().startsWith("#3  Scene cycle 0  Carleton 1 (l)"), cli.out());
+        assertTrue(cli.out().contains("action: dash power=603"), cli.out());
         assertEquals(2, run("show", scenes, "--cycle", "99999"));
-        assertTrue(err.toString().contains("no scene with cycle 99999"), err.toString());
+        assertTrue(cli.err().contains("no scene with cycle 99999"), cli.err());
 
-        out.getBuffer().setLength(0);
         assertEquals(0, run("stats", scenes));
         // zcat Carleton_1.lsf.gz | grep -c '^(kick ' = 10; every kick follows a see of its own
-        assertTrue(out.toString().matches("(?s).*\\n  kick +10 .*"), out.toString());
-        assertTrue(out.toString().contains("Scenes                   2592"), out.toString());
+        assertTrue(cli.out().matches("(?s).*\\n  kick +10 .*"), cli.out());
+        assertTrue(cli.out().contains("Scenes                   2592"), cli.out());
 
-        out.getBuffer().setLength(0);
         assertEquals(0, run("export", "--format", "csv", scenes));
-        List<String> csv = out.toString().lines().toList();
+        List<String> csv = cli.out().lines().toList();
         assertEquals(2593, csv.size(), "a header and one row per scene");
         assertTrue(csv.get(0).startsWith("cycle,ball_dist,ball_dir,own_goal_dist"));
         assertTrue(csv.get(0).endsWith(",unknown_players,action"));

@@ -3,8 +3,6 @@ package org.scenes.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
@@ -13,14 +11,12 @@ import org.junit.jupiter.api.io.TempDir;
 class DemoCommandTest {
     @Test
     void runsSimulateConvertAndValidateInOrder(@TempDir Path dir) {
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
+        CommandRunner cli = new CommandRunner();
 
-        int status = Main.run(new PrintWriter(out), new PrintWriter(err),
-                "demo", "--cycles", "400", "--out-dir", dir.toString());
+        int status = cli.run("demo", "--cycles", "400", "--out-dir", dir);
 
-        assertEquals(ExitCodes.OK, status, err.toString());
-        String text = out.toString();
+        assertEquals(ExitCodes.OK, status, cli.err());
+        String text = cli.out();
         int simulate = text.indexOf("$ scenes simulate");
         int convert = text.indexOf("$ scenes convert");
         int validate = text.indexOf("$ scenes validate");

@@ -48,11 +48,10 @@ class ExperimentCommandTest {
         }
     }
 
-    private final StringWriter out = new StringWriter();
-    private final StringWriter err = new StringWriter();
+    private final CommandRunner cli = new CommandRunner();
 
-    private int run(String... args) {
-        return Main.run(new PrintWriter(out), new PrintWriter(err), args);
+    private int run(Object... args) {
+        return cli.run(args);
     }
 
     private static String quoted(Path path) {
@@ -73,7 +72,7 @@ class ExperimentCommandTest {
                 """.formatted(quoted(folds.get(0)), quoted(folds.get(1)), quoted(folds.get(2))));
         Path results = work.resolve("results");
         assertEquals(ExitCodes.OK, run("experiment", sweep.toString(), "--out-dir", results.toString(), "--threads", "4"),
-                err.toString());
+                cli.err());
         List<String> csv = Files.readAllLines(results.resolve("random.csv"));
         assertEquals(1 + 8, csv.size());
         assertEquals("metric,weights,k,selector,action-weights,accuracy,accuracyStd,directionAccuracy,macroF1,kickRecall,"
@@ -95,7 +94,7 @@ class ExperimentCommandTest {
                 + sweep + " --out-dir " + results + "\""));
         assertTrue(Files.readString(results.resolve("random.md")).contains("| metric / selector \\ k | 1 | 5 |"));
         assertTrue(Files.readString(results.resolve("random.svg")).startsWith("<?xml"));
-        assertTrue(out.toString().contains("| random / vote-random |"), out.toString());
+        assertTrue(cli.out().contains("| random / vote-random |"), cli.out());
     }
 
     @Test
@@ -107,17 +106,17 @@ class ExperimentCommandTest {
                 selectors 'vote'
                 """.formatted(quoted(folds.get(0)), quoted(folds.get(1))));
         assertEquals(ExitCodes.USAGE, run("experiment", sweep.toString()));
-        assertTrue(err.toString().contains("k must be at least 1, not 0"), err.toString());
+        assertTrue(cli.err().contains("k must be at least 1, not 0"), cli.err());
         Path unknown = Files.writeString(work.resolve("unknown.groovy"), """
                 data %s, %s
                 metrics 'no-such-metric'
                 selectors 'vote'
                 """.formatted(quoted(folds.get(0)), quoted(folds.get(1))));
         assertEquals(ExitCodes.USAGE, run("experiment", unknown.toString()));
-        assertTrue(err.toString().contains("no metric named 'no-such-metric'"), err.toString());
+        assertTrue(cli.err().contains("no metric named 'no-such-metric'"), cli.err());
         Path typo = Files.writeString(work.resolve("typo.groovy"), "selector 'vote'\n");
         assertEquals(ExitCodes.USAGE, run("experiment", typo.toString()));
-        assertTrue(err.toString().contains(typo + ":1:1: [Static type checking]"), err.toString());
+        assertTrue(cli.err().contains(typo + ":1:1: [Static type checking]"), cli.err());
     }
 
     @Test
@@ -128,7 +127,7 @@ class ExperimentCommandTest {
                 selectors 'vote'
                 """);
         assertEquals(ExitCodes.USAGE, run("experiment", sweep.toString()));
-        assertTrue(err.toString().contains("the sweep's scene file nowhere/a.json.gz does not exist"), err.toString());
-        assertTrue(err.toString().contains("scenes convert"), err.toString());
+        assertTrue(cli.err().contains("the sweep's scene file nowhere/a.json.gz does not exist"), cli.err());
+        assertTrue(cli.err().contains("scenes convert"), cli.err());
     }
 }

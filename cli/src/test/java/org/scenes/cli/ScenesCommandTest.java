@@ -4,40 +4,37 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import org.junit.jupiter.api.Test;
 
 class ScenesCommandTest {
-    private final StringWriter out = new StringWriter();
-    private final StringWriter err = new StringWriter();
+    private final CommandRunner cli = new CommandRunner();
 
-    private int run(String... args) {
-        return Main.run(new PrintWriter(out), new PrintWriter(err), args);
+    private int run(Object... args) {
+        return cli.run(args);
     }
 
     @Test
     void anUnknownOptionIsAUsageErrorNamingTheOption() {
         assertEquals(ExitCodes.USAGE, run("--frobnicate"));
-        assertTrue(err.toString().contains("Unknown option: '--frobnicate'"), err.toString());
+        assertTrue(cli.err().contains("Unknown option: '--frobnicate'"), cli.err());
     }
 
     @Test
     void aBadPluginDirectoryIsAUsageErrorWithoutStackTrace() {
         assertEquals(ExitCodes.USAGE, run("plugins", "--plugin-path", "/no/such/dir"));
-        assertTrue(err.toString().contains("/no/such/dir"), err.toString());
-        assertFalse(err.toString().contains("\tat "), "no stack trace without --verbose");
+        assertTrue(cli.err().contains("/no/such/dir"), cli.err());
+        assertFalse(cli.err().contains("\tat "), "no stack trace without --verbose");
     }
 
     @Test
     void verbosePrintsTheStackTrace() {
         run("plugins", "--verbose", "--plugin-path", "/no/such/dir");
-        assertTrue(err.toString().contains("\tat "), err.toString());
+        assertTrue(cli.err().contains("\tat "), cli.err());
     }
 
     @Test
     void helpListsTheSubcommands() {
         assertEquals(ExitCodes.OK, run("--help"));
-        assertTrue(out.toString().contains("plugins"), out.toString());
+        assertTrue(cli.out().contains("plugins"), cli.out());
     }
 }

@@ -5,35 +5,22 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.files.Inputs;
-import picocli.CommandLine;
 
 /** Simulate a game, then convert its logs: the bundled pipeline with no recorded data. */
 class SimulateCommandTest {
     @TempDir
     Path dir;
 
-    private StringWriter out = new StringWriter();
-    private StringWriter err = new StringWriter();
+    private final CommandRunner cli = new CommandRunner();
 
     private int run(Object... args) {
-        out = new StringWriter();
-        err = new StringWriter();
-        CommandLine commandLine = ScenesCommand.commandLine();
-        commandLine.setOut(new PrintWriter(out, true));
-        commandLine.setErr(new PrintWriter(err, true));
-        String[] strings = new String[args.length];
-        for (int i = 0; i < args.length; i++) {
-            strings[i] = args[i].toString();
-        }
-        return commandLine.execute(strings);
+        return cli.run(args);
     }
 
     private static byte[] text(Path log) throws IOException {
@@ -46,8 +33,8 @@ class SimulateCommandTest {
     void simulateThenConvert() throws IOException {
         Path logs = dir.resolve("logs");
         assertEquals(0, run("simulate", "--teams", "krislet:2,krislet:3", "--cycles", "400", "--seed", "5",
-                "--out-dir", logs), err.toString());
-        String summary = out.toString();
+                "--out-dir", logs), cli.err());
+        String summary = cli.out();
         assertTrue(summary.matches("(?s)Score +Teal \\d+ : \\d+ Amber.*"), summary);
         assertTrue(summary.contains("5 player logs in"), summary);
         List<Path> written = List.of(logs.resolve("Teal_1.lsf.gz"), logs.resolve("Teal_2.lsf.gz"),
@@ -56,8 +43,8 @@ class SimulateCommandTest {
             assertTrue(Files.isRegularFile(log), log.toString());
         }
         assertEquals(0, run("convert", logs.resolve("Teal_1.lsf.gz"), logs.resolve("Amber_3.lsf.gz"),
-                "--out-dir", dir.resolve("scenes")), err.toString());
-        assertTrue(out.toString().contains("Malformed lines        0"), out.toString());
+                "--out-dir", dir.resolve("scenes")), cli.err());
+        assertTrue(cli.out().contains("Malformed lines        0"), cli.out());
         assertTrue(Files.isRegularFile(dir.resolve("scenes/Teal_1.json.gz")));
 
         // same seed, same logs
@@ -72,9 +59,9 @@ class SimulateCommandTest {
     @Test
     void badTeamsAreUsageErrors() {
         assertEquals(ExitCodes.USAGE, run("simulate", "--teams", "krislet:5", "--out-dir", dir));
-        assertTrue(err.toString().contains("give two teams"), err.toString());
+        assertTrue(cli.err().contains("give two teams"), cli.err());
         assertEquals(ExitCodes.USAGE, run("simulate", "--teams", "nobody:5,krislet:5", "--out-dir", dir));
-        assertTrue(err.toString().contains("available: krislet"), err.toString());
+        assertTrue(cli.err().contains("available: krislet"), cli.err());
         assertEquals(ExitCodes.USAGE, run("simulate", "--teams", "krislet:12,krislet:5", "--out-dir", dir));
         assertEquals(ExitCodes.USAGE, run("simulate", "--names", "Same,Same", "--out-dir", dir));
         assertEquals(ExitCodes.USAGE, run("simulate", "--cycles", "0", "--out-dir", dir));

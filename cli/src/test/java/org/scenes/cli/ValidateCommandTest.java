@@ -5,8 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -25,25 +23,16 @@ import org.scenes.scene.SceneFileWriter;
 import org.scenes.scene.SceneSource;
 import org.scenes.scene.SeenObject;
 import org.scenes.scene.Side;
-import picocli.CommandLine;
 
 /** Drives validate and tune through the real command line on small generated scene files. */
 class ValidateCommandTest {
     @TempDir
     Path dir;
 
-    private final StringWriter out = new StringWriter();
-    private final StringWriter err = new StringWriter();
+    private final CommandRunner cli = new CommandRunner();
 
     private int run(Object... args) {
-        CommandLine commandLine = ScenesCommand.commandLine();
-        commandLine.setOut(new PrintWriter(out, true));
-        commandLine.setErr(new PrintWriter(err, true));
-        String[] strings = new String[args.length];
-        for (int i = 0; i < args.length; i++) {
-            strings[i] = args[i].toString();
-        }
-        return commandLine.execute(strings);
+        return cli.run(args);
     }
 
     /** A Krislet-like player: kicks near the ball, dashes when it faces it, turns otherwise. */
@@ -67,13 +56,13 @@ class ValidateCommandTest {
     }
 
     private JsonNode json() throws Exception {
-        return ConfigFiles.JSON.readTree(out.toString());
+        return ConfigFiles.JSON.readTree(cli.out());
     }
 
     @Test
     void selfValidationIsPerfectAndJsonHasTheDocumentedKeys() throws Exception {
         Path train = player("a", 1, 300);
-        assertEquals(0, run("validate", "--train", train, "--self", "--metric", "ball-goal", "--json"), err.toString());
+        assertEquals(0, run("validate", "--train", train, "--self", "--metric", "ball-goal", "--json"), cli.err());
         JsonNode result = json();
         assertEquals(1.0, result.get("accuracy").asDouble());
         for (String key : List.of("macroF1", "perAction", "confusion", "scenesPer100ms")) {
@@ -90,8 +79,8 @@ class ValidateCommandTest {
         Path b = player("b", 2, 200);
         Path chart = dir.resolve("chart.png");
         assertEquals(0, run("validate", "--train", a, "--test", b, "--metric", "random,ball-goal",
-                "--chart", chart), err.toString());
-        String table = out.toString();
+                "--chart", chart), cli.err());
+        String table = cli.out();
         assertTrue(table.contains("Action accuracy"), table);
         assertTrue(table.contains("Confusion"), table);
         assertTrue(table.contains("Scenes                   train 300, test 200"), table);
@@ -113,7 +102,7 @@ class ValidateCommandTest {
         List<Object> args = new ArrayList<>(List.of("validate", "--folds"));
         args.addAll(files);
         args.addAll(List.of("--metric", "ball-goal", "--json"));
-        assertEquals(0, run(args.toArray()), err.toString());
+        assertEquals(0, run(args.toArray()), cli.err());
         JsonNode folds = json();
         assertEquals(3, folds.get("folds").asInt());
         assertTrue(folds.get("accuracy").asDouble() > 0.5);
@@ -121,13 +110,11 @@ class ValidateCommandTest {
         Path config = dir.resolve("best.json");
         List<Object> tune = new ArrayList<>(List.of("tune", "--quiet", "-o", config, "--sweeps", "1", "--train"));
         tune.addAll(files);
-        out.getBuffer().setLength(0);
-        assertEquals(0, run(tune.toArray()), err.toString());
+        assertEquals(0, run(tune.toArray()), cli.err());
         JsonNode written = ConfigFiles.JSON.readTree(config.toFile());
         assertTrue(written.has("metric") && written.has("crossValidation") && written.has("objectWeights"));
 
-        out.getBuffer().setLength(0);
-        assertEquals(0, run("validate", "--config", config, "--train", files.get(0), "--test", files.get(1), "--json"), err.toString());
+        assertEquals(0, run("validate", "--config", config, "--train", files.get(0), "--test", files.get(1), "--json"), cli.err());
         assertEquals(written.get("metric").asText(), json().get("config").get("metric").asText());
     }
 
@@ -136,13 +123,11 @@ class ValidateCommandTest {
         Path data = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "krislet");
         Path train = dir.resolve("train.json.gz");
         Path test = dir.resolve("test.json.gz");
-        assertEquals(0, run("convert", data.resolve("classic-game1/Carleton_1.lsf.gz"), "-o", train), err.toString());
-        assertEquals(0, run("convert", data.resolve("classic-game2/Carleton_1.lsf.gz"), "-o", test), err.toString());
-        out.getBuffer().setLength(0);
-        assertEquals(0, run("validate", "--train", train, "--self", "--metric", "continuous", "--json"), err.toString());
+        assertEquals(0, run("convert", data.resolve("classic-game1/Carleton_1.lsf.gz"), "-o", train), cli.err());
+        assertEquals(0, run("convert", data.resolve("classic-game2/Carleton_1.lsf.gz"), "-o", test), cli.err());
+        assertEquals(0, run("validate", "--train", train, "--self", "--metric", "continuous", "--json"), cli.err());
         assertEquals(1.0, json().get("accuracy").asDouble(), "each scene finds itself");
-        out.getBuffer().setLength(0);
-        assertEquals(0, run("validate", "--train", train, "--test", test, "--metric", "random,ball-goal", "--json"), err.toString());
+        assertEquals(0, run("validate", "--train", train, "--test", test, "--metric", "random,ball-goal", "--json"), cli.err());
         JsonNode runs = json().get("configurations");
         double random = runs.get(0).get("accuracy").asDouble();
         double ballGoal = runs.get(1).get("accuracy").asDouble();
@@ -154,11 +139,11 @@ class ValidateCommandTest {
     void badUsageIsReportedClearly() throws Exception {
         Path a = player("a", 1, 20);
         assertEquals(ExitCodes.USAGE, run("validate", "--train", a));
-        assertTrue(err.toString().contains("--test"), err.toString());
+        assertTrue(cli.err().contains("--test"), cli.err());
         assertEquals(ExitCodes.USAGE, run("validate", "--train", a, "--self", "--metric", "nonesuch"));
-        assertTrue(err.toString().contains("Available metrics"), err.toString());
+        assertTrue(cli.err().contains("Available metrics"), cli.err());
         assertEquals(ExitCodes.USAGE, run("validate", "--train", a, "--self", "--metric", "ball-goal", "--option", "speed=3"));
-        assertTrue(err.toString().contains("no option 'speed'"), err.toString());
+        assertTrue(cli.err().contains("no option 'speed'"), cli.err());
         assertFalse(Files.exists(dir.resolve("x.png")));
     }
 }
