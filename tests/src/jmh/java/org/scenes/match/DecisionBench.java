@@ -23,7 +23,7 @@ import org.scenes.scene.Scene;
  * The time of one decision of the imitating agent: the k nearest stored scenes of a query
  * ({@link Recognizer#nearest}) and the selector's choice among them ({@code first-valid} for
  * k = 1, {@code vote} for k = 5 and 15, the selectors plugin), sampled per call so p50 and p99
- * are reported. Knowledge bases ({@code scenes}): {@code krislet}, the recorded Krislet game 1
+ * are reported. Knowledge bases ({@code knowledge}): {@code krislet}, the recorded Krislet game 1
  * without Carleton_2 (Carleton_2's scenes are the queries), or that many synthetic scenes
  * ({@link BenchSets#synthetic}, synthetic queries). Each fork builds its knowledge base once
  * (printed as a {@code [setup]} line with the heap in use).
@@ -36,7 +36,7 @@ import org.scenes.scene.Scene;
 @Fork(value = 1, jvmArgsAppend = "-Xmx2g")
 public class DecisionBench {
     @Param({"krislet", "10000", "100000", "1000000"})
-    public String scenes;
+    public String knowledge;
 
     @Param({"1", "5", "15"})
     public int k;
@@ -52,10 +52,10 @@ public class DecisionBench {
 
     @Setup
     public void build() {
-        boolean recorded = scenes.equals("krislet");
-        KnowledgeBase knowledge = recorded ? BenchSets.krislet() : BenchSets.synthetic(Integer.parseInt(scenes));
+        boolean recorded = knowledge.equals("krislet");
+        KnowledgeBase stored = recorded ? BenchSets.krislet() : BenchSets.synthetic(Integer.parseInt(knowledge));
         queries = recorded ? BenchSets.krisletQueries() : BenchSets.syntheticQueries();
-        recognizer = BenchSets.recognizer(knowledge, metric, k);
+        recognizer = BenchSets.recognizer(stored, metric, k);
         selector = PluginRegistry.load().selector(k == 1 ? "first-valid" : "vote", PluginConfig.DEFAULT);
     }
 

@@ -34,9 +34,11 @@ import org.scenes.match.KnowledgeBase;
 /**
  * Scene files: one operation reads or writes a whole file. Secondary scores per second:
  * {@code scenes} and {@code megabytes} (of JSON text, so plain and gzip files compare by the
- * work done; the setup prints both file sizes). Sets ({@code scenes}): {@code krislet}, the
- * recorded Krislet game 1 converted (about 24,000 scenes), or {@code synthetic}, 10^5 scenes of
- * {@link SyntheticScenes} (seed 1); {@code format}: plain {@code json} or {@code json.gz}.
+ * work done; the setup prints both file sizes). Sets ({@code source}): {@code krislet-player},
+ * one player's converted log (Carleton_1 of the recorded Krislet game 1, about 2,500 scenes: the
+ * file {@code scenes convert} writes per log), {@code krislet-game}, all ten players of that game
+ * in one file (about 24,000 scenes), or {@code synthetic}, 10^5 scenes of {@link SyntheticScenes}
+ * (seed 1); {@code format}: plain {@code json} or {@code json.gz}.
  * <ul>
  *   <li>{@code read}: {@link SceneFileReader} streaming every scene as a {@link Scene};</li>
  *   <li>{@code loadKnowledgeBase}: {@link KnowledgeBase#load}, what validation and the agent do;</li>
@@ -52,8 +54,8 @@ import org.scenes.match.KnowledgeBase;
 public class SceneFileBench {
     static final int SYNTHETIC_SCENES = 100_000;
 
-    @Param({"krislet", "synthetic"})
-    public String scenes;
+    @Param({"krislet-player", "krislet-game", "synthetic"})
+    public String source;
 
     @Param({"json", "json.gz"})
     public String format;
@@ -82,15 +84,19 @@ public class SceneFileBench {
     public void prepare() throws IOException {
         long start = System.nanoTime();
         data = new ArrayList<>();
-        if (scenes.equals("krislet")) {
+        if (source.startsWith("krislet")) {
             Path game = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "krislet", "classic-game1");
             SceneConverter converter = new SceneConverter(Grid.DEFAULT, false, null);
+            String prefix = source.equals("krislet-player") ? "Carleton_1." : "";
             try (Stream<Path> logs = Files.list(game)) {
-                for (Path log : logs.filter(p -> p.toString().endsWith(".lsf.gz")).sorted().toList()) {
+                for (Path log : logs.filter(p -> p.getFileName().toString().startsWith(prefix)
+                        && p.toString().endsWith(".lsf.gz")).sorted().toList()) {
                     converter.convert(log, data::add);
                 }
             }
-            header = SceneFileHeader.of(Grid.DEFAULT, new SceneSource("classic-game1", null));
+            // a player's file names its observer once in the header, as the converter writes it
+            header = SceneFileHeader.of(Grid.DEFAULT,
+                    new SceneSource("classic-game1", prefix.isEmpty() ? null : data.get(0).observer()));
         } else {
             SyntheticScenes.generate(1, SYNTHETIC_SCENES, Grid.DEFAULT, data::add);
             header = SceneFileHeader.of(Grid.DEFAULT, new SceneSource("synthetic seed 1", null));
