@@ -8,11 +8,16 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import me.tongfei.progressbar.ConsoleProgressBarConsumer;
+import me.tongfei.progressbar.ProgressBar;
+import me.tongfei.progressbar.ProgressBarBuilder;
+import org.scenes.agent.sim.SyntheticScenes;
 import org.scenes.match.KnowledgeBase;
 import org.scenes.match.Recognizer;
 import org.scenes.plugin.PluginConfig;
 import org.scenes.plugin.PluginKind;
 import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.Grid;
 import org.scenes.scene.Scene;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -24,7 +29,9 @@ import picocli.CommandLine.Spec;
 /**
  * {@code scenes bench}: a short measurement of matching speed from the installed tool, one query
  * at a time scanned over the whole knowledge base on one thread, as the agent decides. The JMH
- * suite ({@code gradle :tests:jmh}) is the careful measurement; this is the quick look.
+ * suite ({@code gradle :tests:jmh}) is the careful measurement; this is the quick look. With
+ * {@code --synthetic N} the knowledge base is N generated scenes instead of files, so how speed
+ * scales with size can be seen without recorded data.
  */
 @Command(name = "bench", mixinStandardHelpOptions = true,
         description = "Measure how many stored scenes each metric compares per 100 ms cycle (k=1, one thread).")
@@ -35,8 +42,17 @@ final class BenchCommand implements Callable<Integer> {
     @ParentCommand
     ScenesCommand top;
 
-    @Parameters(arity = "1..*", paramLabel = "FILE", description = "Scene files (.json or .json.gz): the knowledge base; queries are spread over it.")
+    /** Seed of synthetic knowledge bases; queries use the next one, so they are other moments. */
+    static final long SYNTHETIC_SEED = 1;
+    private static final int QUERIES = 64;
+
+    @Parameters(arity = "0..*", paramLabel = "FILE", description = "Scene files (.json or .json.gz): the knowledge base; queries are spread over it.")
     List<Path> files;
+
+    @Option(names = "--synthetic", paramLabel = "N", description = "Instead of files, a knowledge base of N synthetic scenes "
+            + "(random moments of 11 v 11 Krislet games as the simulator sees them, seed " + SYNTHETIC_SEED
+            + "), queried with other synthetic scenes.")
+    Integer synthetic;
 
     @Option(names = "--metric", paramLabel = "NAME", description = "Metric to measure (repeatable; default: every built-in metric, continuous greedy and optimal).")
     List<String> metrics;
@@ -48,6 +64,16 @@ final class BenchCommand implements Callable<Integer> {
     public Integer call() {
         if (!(seconds > 0)) {
             throw new UsageException("--time must be positive, not " + seconds);
+        }
+        boolean noFiles = files == null || files.isEmpty();
+        if (synthetic == null && noFiles) {
+            throw new UsageException("give scene files or --synthetic N");
+        }
+        if (synthetic != null && !noFiles) {
+            throw new UsageException("--synthetic measures generated scenes; give it without scene files");
+        }
+        if (synthetic != null && synthetic < 1) {
+            throw new UsageException("--synthetic needs at least 1 scene, not " + synthetic);
         }
         PluginRegistry registry = top.global.registry();
         Map<String, PluginConfig> chosen = new LinkedHashMap<>();
@@ -63,13 +89,23 @@ final class BenchCommand implements Callable<Integer> {
         } else {
             metrics.forEach(name -> chosen.put(name, PluginConfig.DEFAULT));
         }
-        KnowledgeBase knowledge = KnowledgeBase.load(files, List::of);
+        KnowledgeBase knowledge;
         List<Scene> queries = new ArrayList<>();
-        for (int i = 0; i < 64; i++) {
-            queries.add(knowledge.scene((int) ((long) i * knowledge.size() / 64)));
+        String made = "";
+        if (synthetic != null) {
+            long start = System.nanoTime();
+            knowledge = generate(synthetic);
+            made = String.format(Locale.ROOT, " (generated in %.1f s)", (System.nanoTime() - start) / 1e9);
+            SyntheticScenes.generate(SYNTHETIC_SEED + 1, QUERIES, Grid.DEFAULT, queries::add);
+        } else {
+            knowledge = KnowledgeBase.load(files, List::of);
+            for (int i = 0; i < QUERIES; i++) {
+                queries.add(knowledge.scene((int) ((long) i * knowledge.size() / QUERIES)));
+            }
         }
         PrintWriter out = spec.commandLine().getOut();
-        out.printf(Locale.ROOT, "%d stored scenes, one thread, k=1%n%-24s %18s%n", knowledge.size(), "metric", "scenes per 100 ms");
+        out.printf(Locale.ROOT, "%d stored %sscenes%s, one thread, k=1%n%-24s %18s%n", knowledge.size(),
+                synthetic != null ? "synthetic " : "", made, "metric", "scenes per 100 ms");
         for (Map.Entry<String, PluginConfig> entry : chosen.entrySet()) {
             String name = entry.getKey().replace(" (optimal)", "");
             PluginConfig config = entry.getValue();
@@ -81,6 +117,22 @@ final class BenchCommand implements Callable<Integer> {
             out.flush();
         }
         return ExitCodes.OK;
+    }
+
+    /** Synthetic scenes streamed into a knowledge base, with a progress bar on a terminal. */
+    private static KnowledgeBase generate(int count) {
+        KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
+        try (ProgressBar bar = System.console() == null || count < 50_000 ? null
+                : new ProgressBarBuilder().setTaskName("Generating").setInitialMax(count).setUnit(" scenes", 1)
+                        .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build()) {
+            SyntheticScenes.generate(SYNTHETIC_SEED, count, Grid.DEFAULT, scene -> {
+                builder.add(scene);
+                if (bar != null) {
+                    bar.step();
+                }
+            });
+        }
+        return builder.build();
     }
 
     /** Queries answered per second, each scanning the whole knowledge base. */

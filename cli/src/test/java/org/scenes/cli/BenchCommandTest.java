@@ -38,6 +38,24 @@ class BenchCommandTest {
     }
 
     @Test
+    void syntheticKnowledgeBaseOfTheGivenSize() {
+        assertEquals(0, run("bench", "--time", "0.05", "--metric", "ball-goal", "--synthetic", 3000), cli.err());
+        String[] lines = cli.out().split("\n");
+        assertTrue(lines[0].startsWith("3000 stored synthetic scenes"), cli.out());
+        String row = lines[2];
+        assertTrue(row.startsWith("ball-goal"), cli.out());
+        assertTrue(Long.parseLong(row.substring(row.lastIndexOf(' ') + 1).replace(",", "")) > 0, row);
+    }
+
+    @Test
+    void knowledgeBaseFromFilesOrSyntheticExactlyOne() {
+        assertEquals(ExitCodes.USAGE, run("bench", "--time", "0.05"));
+        assertTrue(cli.err().contains("--synthetic"), cli.err());
+        assertEquals(ExitCodes.USAGE, run("bench", "--synthetic", 100, "x.json"));
+        assertEquals(ExitCodes.USAGE, run("bench", "--synthetic", 0));
+    }
+
+    @Test
     void nonPositiveTimeIsAUsageError() {
         assertEquals(ExitCodes.USAGE, run("bench", "--time", "0", "x.json"));
     }
