@@ -3,7 +3,9 @@ package org.scenes.agent.teacher;
 import java.util.Random;
 import java.util.function.Consumer;
 import org.scenes.agent.Brain;
+import org.scenes.protocol.See;
 import org.scenes.protocol.VisualObject;
+import org.scenes.scene.Side;
 
 /**
  * The classic Krislet rules, applied to the latest {@code see}: no ball in sight, turn 40; ball far
@@ -47,7 +49,12 @@ final class Krislet implements Brain {
     }
 
     static String decide(Perception perception) {
-        VisualObject ball = perception.ball();
+        return decide(perception.see, perception.side);
+    }
+
+    /** The rules on one see, for a player of {@code side}. */
+    static String decide(See see, Side side) {
+        VisualObject ball = Perception.find(see, "b");
         if (ball == null) {
             return Commands.turn(40);
         }
@@ -57,7 +64,7 @@ final class Krislet implements Brain {
             }
             return Commands.dash(10 * ball.distance());
         }
-        VisualObject goal = perception.opponentGoal();
+        VisualObject goal = Perception.opponentGoal(see, side);
         if (goal == null) {
             return Commands.turn(40);
         }

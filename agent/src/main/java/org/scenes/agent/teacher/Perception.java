@@ -36,6 +36,11 @@ final class Perception {
 
     /** A visible object by short name ({@code b}, {@code g r}), null when not in the last see. */
     VisualObject find(String name) {
+        return find(see, name);
+    }
+
+    /** An object of {@code see} by short name, null when not seen or when there is no see. */
+    static VisualObject find(See see, String name) {
         if (see == null) {
             return null;
         }
@@ -52,7 +57,11 @@ final class Perception {
     }
 
     VisualObject opponentGoal() {
-        return find(side == Side.LEFT ? "g r" : "g l");
+        return opponentGoal(see, side);
+    }
+
+    static VisualObject opponentGoal(See see, Side side) {
+        return find(see, side == Side.LEFT ? "g r" : "g l");
     }
 
     VisualObject ownGoal() {

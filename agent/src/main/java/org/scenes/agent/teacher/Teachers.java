@@ -34,9 +34,6 @@ public final class Teachers {
      * {@code (dash 90.0)}: its rules without its clock, for labelling scenes made without a game.
      */
     public static String krisletCommand(See see, Side side) {
-        Perception perception = new Perception();
-        perception.side = side;
-        perception.see = see;
-        return Krislet.decide(perception);
+        return Krislet.decide(see, side);
     }
 }
