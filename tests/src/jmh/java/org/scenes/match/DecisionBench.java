@@ -33,7 +33,8 @@ import org.scenes.scene.Scene;
 @OutputTimeUnit(TimeUnit.MICROSECONDS)
 @Warmup(iterations = 3, time = 2)
 @Measurement(iterations = 5, time = 2)
-@Fork(value = 1, jvmArgsAppend = "-Xmx2g")
+// 10^6 scenes packed for continuous peak at about 3 GB (ScaleBench)
+@Fork(value = 1, jvmArgsAppend = "-Xmx6g")
 public class DecisionBench {
     @Param({"krislet", "10000", "100000", "1000000"})
     public String knowledge;
