@@ -30,14 +30,19 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
     private final double[][] cellColumn = new double[2][];
     private final double[][] cellRow = new double[2][];
     private final double[][] directions = new double[2][];
+    /** the exact index, or null when disabled or not applicable: then every query scans */
+    private BallGoalIndex index;
 
     private PackedBallGoal(BallGoalMetricProvider.BallGoalMetric metric, int size) {
         this.metric = metric;
         this.size = size;
     }
 
-    /** The packed form, or null when the scenes hold too many distinct cells or directions for the keys. */
-    static PackedBallGoal pack(BallGoalMetricProvider.BallGoalMetric metric, List<Scene> scenes) {
+    /**
+     * The packed form, with the index when {@code indexed} and it applies, or null when the scenes
+     * hold too many distinct cells or directions for the keys.
+     */
+    static PackedBallGoal pack(BallGoalMetricProvider.BallGoalMetric metric, List<Scene> scenes, boolean indexed) {
         PackedBallGoal packed = new PackedBallGoal(metric, scenes.size());
         double[][] features = new double[scenes.size()][];
         for (int i = 0; i < features.length; i++) {
@@ -49,7 +54,7 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
             Map<Double, Integer> directionIndex = new HashMap<>();
             for (double[] f : features) {
                 if (f[offset] != 0) {
-                    cells.putIfAbsent(Double.doubleToLongBits(f[offset + 1]) * 31 + Double.doubleToLongBits(f[offset + 2]), cells.size());
+                    cells.putIfAbsent(cellKey(f, offset), cells.size());
                     directionIndex.putIfAbsent(f[offset + 3], directionIndex.size());
                 }
             }
@@ -68,7 +73,7 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
                     cellKey[i] = (byte) absent;
                     continue;
                 }
-                int cell = cells.get(Double.doubleToLongBits(f[offset + 1]) * 31 + Double.doubleToLongBits(f[offset + 2]));
+                int cell = cells.get(cellKey(f, offset));
                 int direction = directionIndex.get(f[offset + 3]);
                 cellKey[i] = (byte) cell;
                 directionKey[i] = (char) direction;
@@ -79,12 +84,33 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
             packed.cellKeys[object] = cellKey;
             packed.directionKeys[object] = directionKey;
         }
+        packed.index = indexed ? BallGoalIndex.build(metric, features) : null;
         return packed;
     }
 
+    /** Column and row (small non-negative integers) in one long, one key per cell. */
+    private static long cellKey(double[] features, int offset) {
+        return ((long) features[offset + 1] << 32) | (long) features[offset + 2];
+    }
+
+    /** Whether queries go through the index (else every one scans). */
+    boolean indexed() {
+        return index != null;
+    }
+
+    /** Through the index when it covers the query, else the scan of every scene. */
     @Override
     public void scan(Scene query, TopK top) {
         double[] q = metric.encode(query);
+        if (index != null && index.covers(q)) {
+            index.search(q, top);
+        } else {
+            scanAll(q, top);
+        }
+    }
+
+    /** Offers every scene's distance that is below the bound, in index order. */
+    void scanAll(double[] q, TopK top) {
         double[] ballCell = new double[256];
         double[] ballCap = new double[256];
         double[] ballDirection = tables(q, 0, ballCell, ballCap);
