@@ -16,7 +16,9 @@ import org.scenes.scene.Scene;
  * cap[cell])}. The tables hold the very partial sums {@link BallGoalMetricProvider.BallGoalMetric}
  * computes ({@code (cw |dc| + rw |dr|) + aw |dd|}, summed in that order), so every distance is
  * identical to the exhaustive scan's; absence is folded into the tables (an infinite cell cost
- * and a cap of M or 0), so the loop has no branch but the rare offer.
+ * and a cap of M or 0), so the loop has no branch but the rare offer. Unless disabled
+ * ({@code index=false}), queries go through a {@link BallGoalIndex} built alongside, with the
+ * same sums; the scan stays for queries the index does not cover.
  */
 final class PackedBallGoal implements PackedMetric.PackedScenes {
     private static final int MAX_CELLS = 255;
