@@ -119,6 +119,10 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
         double[] goalCell = new double[256];
         double[] goalCap = new double[256];
         double[] goalDirection = tables(q, 1, goalCell, goalCap);
+        if (!finiteSums(ballDirection, goalDirection)) {
+            scanExactly(q, top);
+            return;
+        }
         double ballWeight = metric.ballWeight();
         double goalWeight = metric.goalWeight();
         byte[] ballCells = cellKeys[0];
@@ -136,6 +140,46 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
                 top.offer(distance, i);
                 bound = top.bound();
             }
+        }
+    }
+
+    /**
+     * Whether every distance of this query is finite, as the table scan needs: a NaN direction
+     * cost (0 times an infinite difference) would spread to absent objects through the tables,
+     * and a NaN or infinite distance is never below an infinite bound, so it would not be offered.
+     */
+    private boolean finiteSums(double[] ballDirection, double[] goalDirection) {
+        double cap = 2 * metric.missing();
+        if (!Double.isFinite(metric.ballWeight() * cap + metric.goalWeight() * cap)) {
+            return false;
+        }
+        for (double[] costs : new double[][] {ballDirection, goalDirection}) {
+            for (double cost : costs) {
+                if (Double.isNaN(cost)) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /**
+     * The rare queries the tables cannot serve (directions that are not finite, overflowing
+     * weights): each scene's features rebuilt from the dictionaries and measured by the metric itself.
+     */
+    private void scanExactly(double[] q, TopK top) {
+        double[] stored = new double[q.length];
+        for (int i = 0; i < size; i++) {
+            for (int object = 0; object < 2; object++) {
+                int offset = 4 * object;
+                int cell = cellKeys[object][i] & 0xff;
+                boolean present = cell < cellColumn[object].length;
+                stored[offset] = present ? 1 : 0;
+                stored[offset + 1] = present ? cellColumn[object][cell] : 0;
+                stored[offset + 2] = present ? cellRow[object][cell] : 0;
+                stored[offset + 3] = present ? directions[object][directionKeys[object][i]] : 0;
+            }
+            top.offer(metric.distance(q, stored, Double.POSITIVE_INFINITY), i);
         }
     }
 

@@ -126,6 +126,33 @@ class PackedBallGoalTest {
         }
     }
 
+    /**
+     * Directions so large that a difference could overflow: a stored one leaves the knowledge base
+     * to the scan, a query's sends that query to the scan; and distances that overflow. All stay exact.
+     */
+    @Test
+    void sameNeighboursWhereTheIndexDoesNotApply() {
+        Random random = new Random(13);
+        List<Scene> ordinary = new ArrayList<>();
+        for (int i = 0; i < 2000; i++) {
+            ordinary.add(randomScene(random));
+        }
+        List<Scene> farQueries = List.of(scene(3.0, 2e300, 12.0, 4), scene(3.0, 4, 12.0, -1e9), scene(null, 0, 40.0, 5e6),
+                scene(3.0, Double.POSITIVE_INFINITY, 12.0, Double.NEGATIVE_INFINITY));
+        List<Scene> withFarScene = new ArrayList<>(ordinary);
+        withFarScene.add(scene(0.5, -3e6, 12.0, 0));
+        for (PluginConfig config : List.of(PluginConfig.DEFAULT, PluginConfig.DEFAULT.withOptions(Map.of("angle-weight", "0")))) {
+            assertSameNeighbours(ordinary, farQueries, config, true);
+            assertSameNeighbours(withFarScene, ordinary.subList(0, 30), config, false);
+        }
+        // distances that overflow: 2M itself (no index), or weight times cost (the index keeps infinite distances in order)
+        assertSameNeighbours(ordinary, ordinary.subList(0, 30), PluginConfig.DEFAULT.withOptions(Map.of("missing", "1e308")), false);
+        assertSameNeighbours(ordinary, ordinary.subList(0, 30), PluginConfig.DEFAULT.withObjectWeights(
+                withBallGoal(PluginConfig.DEFAULT.objectWeights(), 1e300, 1e300)).withOptions(Map.of("missing", "1e10")), true);
+        assertSameNeighbours(ordinary, ordinary.subList(0, 30), PluginConfig.DEFAULT.withObjectWeights(
+                withBallGoal(PluginConfig.DEFAULT.objectWeights(), 1e300, 1e300)).withOptions(Map.of("missing", "1e10", "index", "false")), false);
+    }
+
     /** Default, each option changed, zero weights, both objects left out, and uneven weights. */
     private static List<PluginConfig> configs() {
         PluginConfig base = PluginConfig.DEFAULT;
@@ -188,8 +215,11 @@ class PackedBallGoalTest {
      * exhaustive scan at k = 1, 5, 15: same indices, same distances bit for bit.
      */
     private static void assertSameNeighbours(List<Scene> base, List<Scene> someQueries, PluginConfig config) {
+        assertSameNeighbours(base, someQueries, config, !"false".equals(config.option("index", "true")));
+    }
+
+    private static void assertSameNeighbours(List<Scene> base, List<Scene> someQueries, PluginConfig config, boolean indexed) {
         BallGoalMetricProvider.BallGoalMetric metric = (BallGoalMetricProvider.BallGoalMetric) PluginRegistry.load().metric("ball-goal", config);
-        boolean indexed = !"false".equals(config.option("index", "true"));
         assertEquals(indexed, ((PackedBallGoal) metric.pack(base)).indexed(), "index built for " + config);
         List<double[]> encoded = base.stream().map(metric::encode).toList();
         KnowledgeBase knowledge = KnowledgeBase.of(Grid.DEFAULT, base);
