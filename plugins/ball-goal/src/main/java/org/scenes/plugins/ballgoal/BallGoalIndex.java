@@ -83,7 +83,7 @@ final class BallGoalIndex {
     /**
      * The index over the encoded scenes (as {@link BallGoalMetricProvider.BallGoalMetric#encode}
      * gives them), or null when a stored direction is far out of range, {@code 2 missing} overflows or
-     * there are too many distinct keys.
+     * there are too many distinct keys (then the scan is as good).
      */
     static BallGoalIndex build(BallGoalMetricProvider.BallGoalMetric metric, double[][] features) {
         if (!Double.isFinite(2 * metric.missing())) {
@@ -127,6 +127,9 @@ final class BallGoalIndex {
             if (g == 0 || (distinct[g] >>> 24) != (distinct[g - 1] >>> 24)) {
                 ballKeys++;
             }
+        }
+        if ((long) ballKeys * (goalCells + 1) > 2L * size + 65536) {
+            return null; // nearly every scene its own ball key over a fine grid: the per-key cell table would outweigh the scenes
         }
         double[] ballDirection = new double[ballKeys];
         int[] ballGroupStart = new int[ballKeys + 1];

@@ -153,6 +153,19 @@ class PackedBallGoalTest {
                 withBallGoal(PluginConfig.DEFAULT.objectWeights(), 1e300, 1e300)).withOptions(Map.of("missing", "1e10", "index", "false")), false);
     }
 
+    /** Nearly every scene its own ball key, over a grid of many cells: not worth an index, the scan answers. */
+    @Test
+    void sameNeighboursWithoutIndexWhenKeysAreAlmostAllDistinct() {
+        Grid fine = new Grid(40, -45, 45, new double[] {1, 3, 6, 10, 20});
+        Random random = new Random(17);
+        List<Scene> distinct = new ArrayList<>();
+        for (int i = 0; i < 4000; i++) {
+            distinct.add(scene(fine, 0.5 + 30 * random.nextDouble(), 90 * random.nextDouble() - 45,
+                    0.5 + 50 * random.nextDouble(), 90 * random.nextDouble() - 45));
+        }
+        assertSameNeighbours(distinct, distinct.subList(0, 40), PluginConfig.DEFAULT, false);
+    }
+
     /** Default, each option changed, zero weights, both objects left out, and uneven weights. */
     private static List<PluginConfig> configs() {
         PluginConfig base = PluginConfig.DEFAULT;
@@ -198,14 +211,18 @@ class PackedBallGoalTest {
 
     /** A scene with the given ball and opponent goal (null: not seen), an own goal and a flag, which ball-goal ignores. */
     private static Scene scene(Double ballDistance, double ballDirection, Double goalDistance, double goalDirection) {
+        return scene(Grid.DEFAULT, ballDistance, ballDirection, goalDistance, goalDirection);
+    }
+
+    private static Scene scene(Grid grid, Double ballDistance, double ballDirection, Double goalDistance, double goalDirection) {
         List<SeenObject> objects = new ArrayList<>();
-        objects.add(SeenObject.simple(ObjectKind.FLAG, "f c", Relation.NONE, 20, 3, Grid.DEFAULT));
+        objects.add(SeenObject.simple(ObjectKind.FLAG, "f c", Relation.NONE, 20, 3, grid));
         if (ballDistance != null) {
-            objects.add(SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, ballDistance, ballDirection, Grid.DEFAULT));
+            objects.add(SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, ballDistance, ballDirection, grid));
         }
-        objects.add(SeenObject.simple(ObjectKind.GOAL, "g l", Relation.OWN, 50, -10, Grid.DEFAULT));
+        objects.add(SeenObject.simple(ObjectKind.GOAL, "g l", Relation.OWN, 50, -10, grid));
         if (goalDistance != null) {
-            objects.add(SeenObject.simple(ObjectKind.GOAL, "g r", Relation.OPPONENT, goalDistance, goalDirection, Grid.DEFAULT));
+            objects.add(SeenObject.simple(ObjectKind.GOAL, "g r", Relation.OPPONENT, goalDistance, goalDirection, grid));
         }
         return new Scene(1, Observer.UNKNOWN, objects, List.of(Action.dash(50)));
     }
