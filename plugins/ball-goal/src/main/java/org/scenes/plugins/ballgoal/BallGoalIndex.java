@@ -40,7 +40,6 @@ final class BallGoalIndex {
     /** per object and cell: column and row as keyed (0 where the weight is 0); the last cell is "absent" */
     private final int[][] cellColumn = new int[2][];
     private final int[][] cellRow = new int[2][];
-    private final boolean[] directionsKept = new boolean[2];
 
     /** ball keys, ordered by cell then direction: cell c owns keys ballCellStart[c] until ballCellStart[c + 1] */
     private final int[] ballCellStart;
@@ -165,7 +164,6 @@ final class BallGoalIndex {
                 goalCells, goalDirection, groupStart, members);
         for (int object = 0; object < 2; object++) {
             index.dropped[object] = keys[object].dropped;
-            index.directionsKept[object] = keys[object].directionsKept;
             index.cellColumn[object] = keys[object].cellColumn;
             index.cellRow[object] = keys[object].cellRow;
         }
