@@ -52,8 +52,17 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
     private final Map<Shape, Integer> shapeIndex = new HashMap<>();
     private final List<Observer> observers = new ArrayList<>();
     private final Map<Observer, Integer> observerIndex = new HashMap<>();
-    private byte[] bytes = new byte[1 << 12];
+    // scenes in chunks, so growing never needs a second copy of everything; no scene spans two.
+    // 256 KB: below the size at which G1 gives an array whole regions of its own
+    private static final int CHUNK_BITS = 18;
+    private static final int CHUNK = 1 << CHUNK_BITS;
+    private final List<byte[]> chunks = new ArrayList<>();
+    private int chunkLength = CHUNK;
+    private long storedBytes;
+    /** the scene being written, copied into a chunk once whole */
+    private byte[] pending = new byte[1 << 12];
     private int length;
+    /** per scene: chunk index and offset in it, as chunk << CHUNK_BITS | offset */
     private int[] starts = new int[64];
     private int size;
 
@@ -72,19 +81,37 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
         if (size == starts.length) {
             starts = Arrays.copyOf(starts, starts.length * 2);
         }
-        starts[size] = length;
+        length = 0;
         writeScene(scene);
+        if (length > CHUNK) {
+            throw new IllegalArgumentException("scene " + scene.cycle() + " is too large to store: "
+                    + scene.objects().size() + " objects");
+        }
+        if (chunkLength + length > CHUNK) {
+            if (chunks.size() == 1 << (31 - CHUNK_BITS)) {
+                throw new IllegalStateException("a knowledge base holds at most 2 GB of packed scenes; "
+                        + size + " scenes fill it");
+            }
+            chunks.add(new byte[CHUNK]);
+            chunkLength = 0;
+        }
+        System.arraycopy(pending, 0, chunks.get(chunks.size() - 1), chunkLength, length);
+        starts[size] = (chunks.size() - 1) << CHUNK_BITS | chunkLength;
+        chunkLength += length;
+        storedBytes += length;
         size++;
     }
 
     /** Bytes held for scene data, for memory reports. */
     long storedBytes() {
-        return (long) length + 4L * size;
+        return storedBytes + 4L * size;
     }
 
     /** Drops the spare capacity once no scene will be appended. */
     void trim() {
-        bytes = Arrays.copyOf(bytes, length);
+        if (!chunks.isEmpty()) {
+            chunks.set(chunks.size() - 1, Arrays.copyOf(chunks.get(chunks.size() - 1), chunkLength));
+        }
         starts = Arrays.copyOf(starts, size);
     }
 
@@ -93,7 +120,8 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
         if (index < 0 || index >= size) {
             throw new IndexOutOfBoundsException("scene " + index + " of " + size);
         }
-        return new Reader(starts[index]).scene();
+        int start = starts[index];
+        return new Reader(chunks.get(start >>> CHUNK_BITS), start & CHUNK - 1).scene();
     }
 
     @Override
@@ -210,21 +238,19 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
     }
 
     private void writeByte(int value) {
-        if (length == bytes.length) {
-            if (bytes.length == Integer.MAX_VALUE - 8) {
-                throw new IllegalStateException("a knowledge base holds at most 2 GB of packed scenes; "
-                        + size + " scenes fill it");
-            }
-            bytes = Arrays.copyOf(bytes, (int) Math.min(Integer.MAX_VALUE - 8L, bytes.length * 2L));
+        if (length == pending.length) {
+            pending = Arrays.copyOf(pending, pending.length * 2);
         }
-        bytes[length++] = (byte) value;
+        pending[length++] = (byte) value;
     }
 
     /** Decodes from one position; one per access, so reading needs no lock. */
     private final class Reader {
+        private final byte[] bytes;
         private int position;
 
-        Reader(int position) {
+        Reader(byte[] chunk, int position) {
+            this.bytes = chunk;
             this.position = position;
         }
 
