@@ -82,18 +82,23 @@ final class BenchSets {
 
     /**
      * A fresh-metric supplier for a benchmark name: a metric plugin's name, {@code continuous-optimal}
-     * ({@code continuous} with {@code matching=optimal}) or {@code script-ball-goal} (the shipped
-     * example script).
+     * ({@code continuous} with {@code matching=optimal}), {@code ball-goal-scan} ({@code ball-goal}
+     * with {@code index=false}: the packed scan, where plain {@code ball-goal} searches its index)
+     * or {@code script-ball-goal} (the shipped example script).
      */
     static Supplier<SceneMetric> metric(String name) {
         PluginRegistry registry = PluginRegistry.load();
         String spec = switch (name) {
             case "script-ball-goal" -> "script:" + Path.of(System.getProperty("scenes.examples", "../examples/scripts"), "ball-goal.groovy");
             case "continuous-optimal" -> "continuous";
+            case "ball-goal-scan" -> "ball-goal";
             default -> name;
         };
-        PluginConfig config = name.equals("continuous-optimal")
-                ? PluginConfig.DEFAULT.withOptions(Map.of("matching", "optimal")) : PluginConfig.DEFAULT;
+        PluginConfig config = switch (name) {
+            case "continuous-optimal" -> PluginConfig.DEFAULT.withOptions(Map.of("matching", "optimal"));
+            case "ball-goal-scan" -> PluginConfig.DEFAULT.withOptions(Map.of("index", "false"));
+            default -> PluginConfig.DEFAULT;
+        };
         return () -> registry.metric(spec, config);
     }
 
