@@ -1,0 +1,250 @@
+package org.scenes.match;
+
+import java.util.Arrays;
+import java.util.List;
+import java.util.stream.IntStream;
+import org.scenes.scene.Scene;
+
+/**
+ * The packed form of {@link ObjectSetMetric}: every stored object's floats in one array, scene
+ * after scene (each scene's weighted groups in group order, objects nearest first), the start of
+ * each scene, and each scene's object count per weighted group as an unsigned byte. Scans compute
+ * the same sums in the same order as {@link ObjectSetMetric#distance(ObjectSetMetric.Encoded,
+ * ObjectSetMetric.Encoded, double)}, so distances are bit-identical to the exhaustive path.
+ * Read-only once built: scans keep their scratch per call, so threads share one instance.
+ */
+final class PackedObjectSets implements PackedMetric.PackedScenes {
+    private final ObjectSetMetric metric;
+    private final int stride;
+    private final int size;
+    /** Group numbers of the weighted groups, and their weights. */
+    private final int[] groups;
+    private final double[] weights;
+    private final float[] data;
+    /** Index in {@code data} of each scene's first float; one more at the end. */
+    private final int[] starts;
+    /** Objects of scene i in weighted group g at {@code counts[i * groups.length + g]}, unsigned. */
+    private final byte[] counts;
+
+    private PackedObjectSets(ObjectSetMetric metric, int[] groups, float[] data, int[] starts, byte[] counts) {
+        this.metric = metric;
+        this.stride = metric.stride();
+        this.size = starts.length - 1;
+        this.groups = groups;
+        this.weights = Arrays.stream(groups).mapToDouble(metric::groupWeight).toArray();
+        this.data = data;
+        this.starts = starts;
+        this.counts = counts;
+    }
+
+    /**
+     * Two passes, so the array is allocated once at its final size: counting (which only reads
+     * object kinds), then encoding. Null (the caller then uses the encoded path) when a scene
+     * holds more than 255 objects of one group or the data exceeds one array.
+     */
+    static PackedObjectSets pack(ObjectSetMetric metric, List<Scene> scenes) {
+        int[] groups = IntStream.range(0, ObjectSetMetric.GROUPS).filter(g -> metric.groupWeight(g) != 0).toArray();
+        int n = scenes.size();
+        int stride = metric.stride();
+        byte[] counts = new byte[n * groups.length];
+        int[] starts = new int[n + 1];
+        int[] perGroup = new int[ObjectSetMetric.GROUPS];
+        long floats = 0;
+        for (int i = 0; i < n; i++) {
+            metric.count(scenes.get(i), perGroup);
+            for (int g = 0; g < groups.length; g++) {
+                int count = perGroup[groups[g]];
+                if (count > 255) {
+                    return null;
+                }
+                counts[i * groups.length + g] = (byte) count;
+                floats += (long) count * stride;
+            }
+            if (floats > Integer.MAX_VALUE - 16) {
+                return null;
+            }
+            starts[i + 1] = (int) floats;
+        }
+        float[] data = new float[(int) floats];
+        for (int i = 0; i < n; i++) {
+            float[][] encoded = metric.encode(scenes.get(i), false).groups();
+            int at = starts[i];
+            for (int group : groups) {
+                System.arraycopy(encoded[group], 0, data, at, encoded[group].length);
+                at += encoded[group].length;
+            }
+            if (at != starts[i + 1]) {
+                throw new IllegalStateException("scene " + i + " changed between the packing passes");
+            }
+        }
+        return new PackedObjectSets(metric, groups, data, starts, counts);
+    }
+
+    /** Bytes of the packed arrays (the floats, the starts and the counts). */
+    long bytes() {
+        return 4L * data.length + 4L * starts.length + counts.length;
+    }
+
+    int size() {
+        return size;
+    }
+
+    @Override
+    public void scan(Scene query, TopK top) {
+        float[][] encoded = metric.encode(query, false).groups();
+        float[][] q = new float[groups.length][];
+        int[] qn = new int[groups.length];
+        for (int g = 0; g < groups.length; g++) {
+            q[g] = encoded[groups[g]];
+            qn[g] = q[g].length / stride;
+        }
+        Assignment.Workspace scratch = new Assignment.Workspace();
+        if (metric.greedy()) {
+            for (int i = 0; i < size; i++) {
+                offer(q, qn, i, top, scratch);
+            }
+            return;
+        }
+        // optimal: scenes in order of a cheap lower bound, stopping once it exceeds the k-th best
+        long[] order = lowerBounds(q, qn);
+        Arrays.sort(order);
+        for (long key : order) {
+            if (Float.intBitsToFloat((int) (key >>> 32)) > top.bound()) {
+                return;
+            }
+            offer(q, qn, (int) key, top, scratch);
+        }
+    }
+
+    /** The exact distance of scene i, offered unless it is found to exceed the bound on the way. */
+    private void offer(float[][] q, int[] qn, int i, TopK top, Assignment.Workspace scratch) {
+        double bound = top.bound();
+        double total = 0;
+        int at = starts[i];
+        int first = i * groups.length;
+        for (int g = 0; g < groups.length; g++) {
+            int m = counts[first + g] & 0xFF;
+            double weight = weights[g];
+            total += weight * metric.groupDistance(q[g], 0, qn[g], data, at, m, total, weight, bound, scratch);
+            if (total > bound) {
+                return;
+            }
+            at += m * stride;
+        }
+        top.offer(total, i); // NaN too, which the heap ranks farthest
+    }
+
+    /**
+     * Per scene a lower bound of its optimal-matching distance in O(objects): exact for groups
+     * of at most one object per side, else {@link #mergeBound}. Returned as sort keys: the bound
+     * rounded down to a float in the high half (non-negative floats order as their bits), the
+     * scene's index in the low half, so sorting the keys orders scenes by bound, then index.
+     */
+    private long[] lowerBounds(float[][] q, int[] qn) {
+        double[][] qs = new double[groups.length][];
+        double[][] qp = new double[groups.length][];
+        double[] qd = new double[groups.length];
+        for (int g = 0; g < groups.length; g++) {
+            qs[g] = new double[qn[g]];
+            qp[g] = new double[qn[g]];
+            qd[g] = monotone(q[g], 0, qn[g], qs[g], qp[g]);
+        }
+        double[] ys = new double[256];
+        double[] yp = new double[256];
+        long[] keys = new long[size];
+        for (int i = 0; i < size; i++) {
+            double lower = 0;
+            int at = starts[i];
+            int first = i * groups.length;
+            for (int g = 0; g < groups.length; g++) {
+                int m = counts[first + g] & 0xFF;
+                int n = qn[g];
+                if (n <= 1 && m <= 1) {
+                    lower += weights[g] * metric.singleDistance(q[g], 0, n, data, at, m);
+                } else {
+                    double dy = monotone(data, at, m, ys, yp);
+                    lower += weights[g] * mergeBound(qs[g], qp[g], n, qd[g], ys, yp, m, dy);
+                }
+                at += m * stride;
+            }
+            // shaved: the exact distance sums other terms, which round differently
+            double shaved = lower * (1 - 1e-9);
+            if (!(shaved >= 0)) {
+                shaved = 0;
+            }
+            float key = (float) shaved;
+            if (key > shaved) {
+                key = Math.nextDown(key);
+            }
+            keys[i] = (long) Float.floatToRawIntBits(Math.max(key, 0f)) << 32 | i;
+        }
+        return keys;
+    }
+
+    /**
+     * The radial coordinates ({@link ObjectSetMetric#radial}) of n objects made non-decreasing
+     * (each the running maximum) into s, their penalties into p; returns the most any object's
+     * coordinate was raised (0 when already sorted), so bounds can allow for it.
+     */
+    private double monotone(float[] x, int at, int n, double[] s, double[] p) {
+        double running = Double.NEGATIVE_INFINITY;
+        double raised = 0;
+        for (int k = 0; k < n; k++) {
+            int object = at + k * stride;
+            double radial = metric.radial(x, object);
+            if (radial >= running) {
+                running = radial;
+            } else {
+                raised = Math.max(raised, running - radial);
+            }
+            s[k] = running;
+            p[k] = x[object + ObjectSetMetric.PENALTY];
+        }
+        return raised;
+    }
+
+    /**
+     * A lower bound of a group's optimal matching cost from the radial coordinates alone (pair
+     * cost >= |s(x) - s(y)|), by one merge of the two sorted sides. With m(x) the smallest
+     * radial gap from x to the other side (less the slack for raised coordinates and rounding):
+     * every object of a side is paired (at cost >= m) or unmatched (at its penalty p), so the sum
+     * over a side of min(p, m) is a bound; and since a pair costs at most both penalties, a pair
+     * costs at least min(p(x), m(x)/2) + min(p(y), m(y)/2), so the sum over both sides of
+     * min(p, m/2) is one too. The largest of the three is returned.
+     */
+    private static double mergeBound(double[] xs, double[] xp, int n, double dx, double[] ys, double[] yp, int m, double dy) {
+        double scale = (n > 0 ? Math.abs(xs[0]) + Math.abs(xs[n - 1]) : 0) + (m > 0 ? Math.abs(ys[0]) + Math.abs(ys[m - 1]) : 0);
+        double slack = dx + dy + 1e-12 * (scale + 1);
+        double sumX = 0;
+        double halfX = 0;
+        for (int i = 0, j = 0; i < n; i++) {
+            double v = xs[i];
+            while (j < m && ys[j] < v) {
+                j++;
+            }
+            double near = j < m ? ys[j] - v : Double.POSITIVE_INFINITY;
+            if (j > 0) {
+                near = Math.min(near, v - ys[j - 1]);
+            }
+            double reach = Math.max(0, near - slack);
+            sumX += Math.min(xp[i], reach);
+            halfX += Math.min(xp[i], 0.5 * reach);
+        }
+        double sumY = 0;
+        double halfY = 0;
+        for (int j = 0, i = 0; j < m; j++) {
+            double v = ys[j];
+            while (i < n && xs[i] < v) {
+                i++;
+            }
+            double near = i < n ? xs[i] - v : Double.POSITIVE_INFINITY;
+            if (i > 0) {
+                near = Math.min(near, v - xs[i - 1]);
+            }
+            double reach = Math.max(0, near - slack);
+            sumY += Math.min(yp[j], reach);
+            halfY += Math.min(yp[j], 0.5 * reach);
+        }
+        return Math.max(Math.max(sumX, sumY), halfX + halfY);
+    }
+}
