@@ -100,8 +100,14 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
         }
         Assignment.Workspace scratch = new Assignment.Workspace();
         if (metric.greedy()) {
+            int lead = 0;
+            for (int g = 1; g < groups.length; g++) {
+                if (qn[g] > qn[lead]) {
+                    lead = g;
+                }
+            }
             for (int i = 0; i < size; i++) {
-                offer(q, qn, i, top, scratch);
+                offerGreedy(q, qn, i, top, lead);
             }
             return;
         }
@@ -114,6 +120,41 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
             }
             offer(q, qn, (int) key, top, scratch);
         }
+    }
+
+    /**
+     * As {@link #offer}, but the lead group (the query's largest, where most scenes turn out too
+     * far) is computed first: its weighted distance alone cannot exceed the total, which adds
+     * only terms that are not negative (rounding is monotone), so most scenes are dropped
+     * without computing the small groups before it. A kept scene's total is summed in group
+     * order from the same group distances, as the exhaustive path sums them.
+     */
+    private void offerGreedy(float[][] q, int[] qn, int i, TopK top, int lead) {
+        double bound = top.bound();
+        int first = i * groups.length;
+        int at = starts[i];
+        int leadAt = at;
+        for (int g = 0; g < lead; g++) {
+            leadAt += (counts[first + g] & 0xFF) * stride;
+        }
+        double leadWeight = weights[lead];
+        double leadDistance = metric.groupDistance(q[lead], 0, qn[lead], data, leadAt, counts[first + lead] & 0xFF,
+                0, leadWeight, bound, null);
+        if (leadWeight * leadDistance > bound) {
+            return;
+        }
+        double total = 0;
+        for (int g = 0; g < groups.length; g++) {
+            int m = counts[first + g] & 0xFF;
+            double weight = weights[g];
+            double distance = g == lead ? leadDistance : metric.groupDistance(q[g], 0, qn[g], data, at, m, total, weight, bound, null);
+            total += weight * distance;
+            if (total > bound) {
+                return;
+            }
+            at += m * stride;
+        }
+        top.offer(total, i);
     }
 
     /** The exact distance of scene i, offered unless it is found to exceed the bound on the way. */
@@ -214,7 +255,8 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
      */
     private static double mergeBound(double[] xs, double[] xp, int n, double dx, double[] ys, double[] yp, int m, double dy) {
         double scale = (n > 0 ? Math.abs(xs[0]) + Math.abs(xs[n - 1]) : 0) + (m > 0 ? Math.abs(ys[0]) + Math.abs(ys[m - 1]) : 0);
-        double slack = dx + dy + 1e-12 * (scale + 1);
+        // single-precision pair costs are within 3 float roundings (< 2.4e-7) of the exact distance
+        double slack = dx + dy + 1e-6 * (scale + 1);
         double sumX = 0;
         double halfX = 0;
         for (int i = 0, j = 0; i < n; i++) {

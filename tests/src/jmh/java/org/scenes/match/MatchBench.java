@@ -31,12 +31,17 @@ import org.scenes.scene.SeenObject;
  * Scenes compared per second when one query is scanned over the whole knowledge base (k = 1),
  * as each decision of the agent does. The knowledge base is the first {@value #SCENES} scenes of
  * the Krislet classic game 1 players other than Carleton_2, converted in the setup; queries are
- * Carleton_2's scenes, one per operation, in turn. Scores are scenes per second: divide by 10
+ * {@value #QUERIES} of Carleton_2's scenes spread over its game, one per operation, taken with a
+ * stride of {@value #QUERY_STRIDE} so that the operations of any iteration sample the whole
+ * game rather than one stretch of similar scenes. Scores are scenes per second: divide by 10
  * for scenes per 100 ms cycle.
  * <ul>
  *   <li>{@code scan}: the {@link Recognizer} with the metric named by {@code metric}
  *       ({@code continuous-optimal} is {@code continuous} with {@code matching=optimal};
  *       {@code script-ball-goal} is the shipped example script);</li>
+ *   <li>{@code scanAllQueries}: the same, one operation being every query once, so the score
+ *       is the rate over the whole query set whatever the iteration length (scans whose cost
+ *       depends much on the query, such as optimal matching's pruning, cannot pick lucky ones);</li>
  *   <li>{@code plainReference}: the thesis' design on the same data: scenes as lists of objects,
  *       each comparison filtering and re-sorting every class's objects, greedy pairing of all
  *       objects in cartesian space (what {@code continuous} computes), so the ratio to
@@ -53,7 +58,8 @@ import org.scenes.scene.SeenObject;
 @Fork(value = 1, jvmArgsAppend = "-Xmx1g")
 public class MatchBench {
     static final int SCENES = 16384;
-    private static final int QUERIES = 256;
+    static final int QUERIES = 256;
+    static final int QUERY_STRIDE = 97;
     private static final String[] STORED = {"Carleton_1", "Carleton_3", "Carleton_4", "Carleton_5",
         "University_1", "University_2", "University_3", "University_4", "University_5"};
 
@@ -95,7 +101,7 @@ public class MatchBench {
         }
 
         int nextQuery() {
-            next = (next + 1) % QUERIES;
+            next = (next + QUERY_STRIDE) % QUERIES; // odd stride: every query once per QUERIES operations
             return next;
         }
     }
@@ -132,6 +138,16 @@ public class MatchBench {
     @OperationsPerInvocation(SCENES)
     public List<Neighbour> scan(Data data, Matcher matcher) {
         return matcher.recognizer.nearest(data.queries.get(data.nextQuery()));
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(SCENES * QUERIES)
+    public int scanAllQueries(Data data, Matcher matcher) {
+        int sum = 0;
+        for (Scene query : data.queries) {
+            sum += matcher.recognizer.nearest(query).get(0).index();
+        }
+        return sum;
     }
 
     @Benchmark
