@@ -18,6 +18,9 @@ public final class Assignment {
     /** Scratch arrays of one thread's assignments, reused across calls; grows as needed. */
     static final class Workspace {
         double[] cost = new double[0];
+        /** Penalties of the objects of the rows and columns, for callers building costs. */
+        double[] rowPenalties = new double[0];
+        double[] columnPenalties = new double[0];
         private double[] u = new double[0];
         private double[] v = new double[0];
         private double[] minimum = new double[0];
@@ -39,6 +42,8 @@ public final class Assignment {
                 columnOfRow = new int[n + 1];
                 way = new int[n + 1];
                 used = new boolean[n + 1];
+                rowPenalties = new double[n + 1];
+                columnPenalties = new double[n + 1];
             }
             return cost;
         }

@@ -121,12 +121,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     private static final int[] CLASS_OF_GROUP = {0, 1, 1, 1, 2, 3, 4, 5, 6, 7};
     private static final int PLAYERS = 6;
 
-    /** Index of an object's penalty within its stride (a and b come first, the weighted row last). */
-    static final int PENALTY = 2;
-
     /**
-     * A scene as packed numbers: per group, per object nearest first, the 32-bit floats
-     * (a, b, penalty) and, with a row weight, the weighted row: {@link #stride()} floats each.
+     * A scene as packed numbers: per group, per object nearest first, {@link #stride()} 32-bit
+     * floats: a and b; the penalty unless it follows from them (see {@link #penalty}); and,
+     * with a row weight, the weighted row.
      */
     public record Encoded(float[][] groups, Encoded previous, int previousAction) {
     }
@@ -138,6 +136,11 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     private final boolean greedy;
     private final boolean rows;
     private final int stride;
+    /** Where the penalty and the weighted row are within an object's floats; -1 when not stored. */
+    private final int penaltyAt;
+    private final int rowAt;
+    private final boolean cell;
+    private final double penaltyTimesScale;
     // scratch of the Encoded path; a metric instance serves one thread at a time
     private Assignment.Workspace workspace;
 
@@ -146,7 +149,13 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         polar = settings.space() == Space.POLAR;
         greedy = settings.matching() == Matching.GREEDY;
         rows = settings.rowWeight() > 0;
-        stride = rows ? 4 : 3;
+        cell = settings.space() == Space.CELL;
+        // the penalty is a function of the stored position when that holds the distance itself
+        boolean derived = cell || settings.space() == Space.CARTESIAN && !settings.logDistance();
+        penaltyAt = derived ? -1 : 2;
+        rowAt = rows ? (derived ? 2 : 3) : -1;
+        stride = 2 + (derived ? 0 : 1) + (rows ? 1 : 0);
+        penaltyTimesScale = settings.penalty() * settings.penaltyScale();
         double[] classWeights = settings.weights().toArray();
         for (int group = 0; group < GROUPS; group++) {
             groupWeight[group] = classWeights[CLASS_OF_GROUP[group]];
@@ -157,7 +166,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         return settings;
     }
 
-    /** Floats per object in the encoded and packed forms: 3, or 4 with a row weight. */
+    /** Floats per object in the encoded and packed forms: 2 to 4 (see {@link Encoded}). */
     int stride() {
         return stride;
     }
@@ -236,9 +245,11 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 int at = i * stride;
                 values[at] = object.a();
                 values[at + 1] = object.b();
-                values[at + PENALTY] = object.penalty();
+                if (penaltyAt >= 0) {
+                    values[at + penaltyAt] = object.penalty();
+                }
                 if (rows) {
-                    values[at + 3] = object.row();
+                    values[at + rowAt] = object.row();
                 }
             }
             packed[group] = values;
@@ -378,7 +389,29 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             float db = x[i + 1] - y[j + 1];
             cost = (float) Math.sqrt(da * da + db * db);
         }
-        return rows ? Math.abs((double) x[i + 3] - y[j + 3]) + cost : cost;
+        return rows ? Math.abs((double) x[i + rowAt] - y[j + rowAt]) + cost : cost;
+    }
+
+    /**
+     * The penalty of the object at x[i]: P L / (L + d). Stored as a float where d is the
+     * distance before log or weighting; in cartesian space without log-distance d is the
+     * stored position's distance from the observer, in cell space its row, so there it is
+     * computed from the position (in double) and takes no room.
+     */
+    double penalty(float[] x, int i) {
+        if (penaltyAt >= 0) {
+            return x[i + penaltyAt];
+        }
+        return penaltyAt(radial(x, i));
+    }
+
+    /** True when {@link #penalty} is {@link #penaltyAt} of {@link #radial}. */
+    boolean penaltyFollowsRadial() {
+        return penaltyAt < 0;
+    }
+
+    double penaltyAt(double distance) {
+        return penaltyTimesScale / (settings.penaltyScale() + distance);
     }
 
     /**
@@ -402,6 +435,14 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         // pad the smaller side with "missing" entries that cost the other object's penalty
         int size = Math.max(n, m);
         double[] cost = scratch.cost(size);
+        double[] xp = scratch.rowPenalties;
+        double[] yp = scratch.columnPenalties;
+        for (int i = 0; i < n; i++) {
+            xp[i] = penalty(x, xs + i * stride);
+        }
+        for (int j = 0; j < m; j++) {
+            yp[j] = penalty(y, ys + j * stride);
+        }
         for (int i = 0; i < size; i++) {
             int row = i * size;
             int at = xs + i * stride;
@@ -409,11 +450,11 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 int to = ys + j * stride;
                 double value;
                 if (i < n && j < m) {
-                    value = Math.min(pairCost(x, at, y, to), (double) x[at + PENALTY] + y[to + PENALTY]);
+                    value = Math.min(pairCost(x, at, y, to), xp[i] + yp[j]);
                 } else if (i < n) {
-                    value = x[at + PENALTY];
+                    value = xp[i];
                 } else if (j < m) {
-                    value = y[to + PENALTY];
+                    value = yp[j];
                 } else {
                     value = 0;
                 }
@@ -435,10 +476,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             }
         }
         for (int k = paired; k < n; k++) {
-            total += x[xs + k * stride + PENALTY];
+            total += penalty(x, xs + k * stride);
         }
         for (int k = paired; k < m; k++) {
-            total += y[ys + k * stride + PENALTY];
+            total += penalty(y, ys + k * stride);
         }
         return total;
     }
@@ -446,9 +487,9 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     /** Optimal matching of at most one object per side: a pair (at most both penalties) or a penalty. */
     double singleDistance(float[] x, int xs, int n, float[] y, int ys, int m) {
         if (n == 1 && m == 1) {
-            return Math.min(pairCost(x, xs, y, ys), (double) x[xs + PENALTY] + y[ys + PENALTY]);
+            return Math.min(pairCost(x, xs, y, ys), penalty(x, xs) + penalty(y, ys));
         }
-        return n == 1 ? x[xs + PENALTY] : m == 1 ? y[ys + PENALTY] : 0;
+        return n == 1 ? penalty(x, xs) : m == 1 ? penalty(y, ys) : 0;
     }
 
     /**

@@ -230,6 +230,7 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
     private double monotone(float[] x, int at, int n, double[] s, double[] p) {
         double running = Double.NEGATIVE_INFINITY;
         double raised = 0;
+        boolean derived = metric.penaltyFollowsRadial();
         for (int k = 0; k < n; k++) {
             int object = at + k * stride;
             double radial = metric.radial(x, object);
@@ -239,7 +240,7 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
                 raised = Math.max(raised, running - radial);
             }
             s[k] = running;
-            p[k] = x[object + ObjectSetMetric.PENALTY];
+            p[k] = derived ? metric.penaltyAt(radial) : metric.penalty(x, object);
         }
         return raised;
     }

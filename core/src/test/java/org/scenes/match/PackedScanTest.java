@@ -109,17 +109,25 @@ class PackedScanTest {
     }
 
     @Test
-    void packedFloatsTakeTwelveBytesPerObject() {
-        PackedObjectSets packed = (PackedObjectSets) metric(Map.of(), ObjectSetMetric.Space.CARTESIAN, 0).pack(stored);
-        long objects = 0;
-        ObjectSetMetric metric = metric(Map.of(), ObjectSetMetric.Space.CARTESIAN, 0);
+    void packedSizePerObjectAndScene() {
+        // cartesian: a and b, the penalty follows from them; polar with log-distance stores it; a row weight adds the row
+        assertPackedSize(Map.of(), 8);
+        assertPackedSize(Map.of("space", "polar", "log-distance", "true"), 12);
+        assertPackedSize(Map.of("row-weight", "1"), 12);
+    }
+
+    private static void assertPackedSize(Map<String, String> options, int bytesPerObject) {
+        ObjectSetMetric metric = metric(options, ObjectSetMetric.Space.CARTESIAN, 0);
+        PackedObjectSets packed = (PackedObjectSets) metric.pack(stored);
+        long floats = 0;
         for (Scene scene : stored) {
             for (float[] group : metric.encode(scene).groups()) {
-                objects += group.length / 3;
+                floats += group.length;
             }
         }
-        // floats (a, b, penalty), one start per scene (and one more), 9 weighted groups' counts per scene
-        assertEquals(12 * objects + 4L * (stored.size() + 1) + 9L * stored.size(), packed.bytes());
+        assertEquals(bytesPerObject / 4, metric.stride());
+        // the floats, one start per scene (and one more), 9 weighted groups' counts per scene
+        assertEquals(4 * floats + 4L * (stored.size() + 1) + 9L * stored.size(), packed.bytes());
     }
 
     private static void check(Map<String, String> options, ObjectSetMetric.Space space, double cycles) {
