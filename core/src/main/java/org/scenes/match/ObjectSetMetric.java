@@ -380,7 +380,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * single precision, as precise as the stored floats and much faster to take the root of;
      * sums are in double.
      */
-    private double pairCost(float[] x, int i, float[] y, int j) {
+    double pairCost(float[] x, int i, float[] y, int j) {
         double cost;
         if (polar) {
             cost = Math.abs((double) x[i] - y[j]) + Math.abs((double) x[i + 1] - y[j + 1]);
@@ -498,11 +498,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * in polar space, the row in cell space. Objects sorted by distance are (nearly) sorted by it.
      */
     double radial(float[] x, int i) {
-        return switch (settings.space()) {
-            case CARTESIAN -> Math.sqrt((double) x[i] * x[i] + (double) x[i + 1] * x[i + 1]);
-            case POLAR -> x[i];
-            case CELL -> x[i + 1];
-        };
+        if (polar) {
+            return x[i];
+        }
+        return cell ? x[i + 1] : Math.sqrt((double) x[i] * x[i] + (double) x[i + 1] * x[i + 1]);
     }
 
     /**

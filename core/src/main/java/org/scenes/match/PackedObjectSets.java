@@ -185,7 +185,9 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
         double[][] qs = new double[groups.length][];
         double[][] qp = new double[groups.length][];
         double[] qd = new double[groups.length];
+        double[] lonePenalty = new double[groups.length];
         for (int g = 0; g < groups.length; g++) {
+            lonePenalty[g] = qn[g] == 1 ? metric.penalty(q[g], 0) : 0;
             qs[g] = new double[qn[g]];
             qp[g] = new double[qn[g]];
             qd[g] = monotone(q[g], 0, qn[g], qs[g], qp[g]);
@@ -201,7 +203,10 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
                 int m = counts[first + g] & 0xFF;
                 int n = qn[g];
                 if (n <= 1 && m <= 1) {
-                    lower += weights[g] * metric.singleDistance(q[g], 0, n, data, at, m);
+                    // as singleDistance, with the query's penalty computed once
+                    double exact = n == 1 && m == 1 ? Math.min(metric.pairCost(q[g], 0, data, at), lonePenalty[g] + metric.penalty(data, at))
+                            : n == 1 ? lonePenalty[g] : m == 1 ? metric.penalty(data, at) : 0;
+                    lower += weights[g] * exact;
                 } else {
                     double dy = monotone(data, at, m, ys, yp);
                     lower += weights[g] * mergeBound(qs[g], qp[g], n, qd[g], ys, yp, m, dy);
