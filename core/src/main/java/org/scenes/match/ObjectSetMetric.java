@@ -395,8 +395,8 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     /**
      * The penalty of the object at x[i]: P L / (L + d). Stored as a float where d is the
      * distance before log or weighting; in cartesian space without log-distance d is the
-     * stored position's distance from the observer, in cell space its row, so there it is
-     * computed from the position (in double) and takes no room.
+     * stored position's distance from the observer ({@link #radial}, single precision), in
+     * cell space its row, so there it is computed from the position and takes no room.
      */
     double penalty(float[] x, int i) {
         if (penaltyAt >= 0) {
@@ -501,7 +501,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         if (polar) {
             return x[i];
         }
-        return cell ? x[i + 1] : Math.sqrt((double) x[i] * x[i] + (double) x[i + 1] * x[i + 1]);
+        return cell ? x[i + 1] : (float) Math.sqrt(x[i] * x[i] + x[i + 1] * x[i + 1]);
     }
 
     /**
