@@ -112,14 +112,41 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
             return;
         }
         // optimal: scenes in order of a cheap lower bound, stopping once it exceeds the k-th best
-        long[] order = lowerBounds(q, qn);
-        Arrays.sort(order);
-        for (long key : order) {
+        // a heap rather than a full sort: only the few scenes before the stop are taken out
+        long[] heap = lowerBounds(q, qn);
+        int left = heap.length;
+        for (int parent = left / 2 - 1; parent >= 0; parent--) {
+            siftDown(heap, parent, left);
+        }
+        while (left > 0) {
+            long key = heap[0];
             if (Float.intBitsToFloat((int) (key >>> 32)) > top.bound()) {
                 return;
             }
+            heap[0] = heap[--left];
+            siftDown(heap, 0, left);
             offer(q, qn, (int) key, top, scratch);
         }
+    }
+
+    /** Restores the min-heap order below {@code parent} in heap[0, size). */
+    private static void siftDown(long[] heap, int parent, int size) {
+        long key = heap[parent];
+        while (true) {
+            int child = 2 * parent + 1;
+            if (child >= size) {
+                break;
+            }
+            if (child + 1 < size && heap[child + 1] < heap[child]) {
+                child++;
+            }
+            if (heap[child] >= key) {
+                break;
+            }
+            heap[parent] = heap[child];
+            parent = child;
+        }
+        heap[parent] = key;
     }
 
     /**
