@@ -83,6 +83,8 @@ class PackedScanTest {
     @Test
     void optimalCellProjectionAndRowWeightAsExhaustive() {
         check(Map.of("matching", "optimal"), ObjectSetMetric.Space.CELL, 0);
+        // cells are not projected: rows no longer follow the projected distance order
+        check(Map.of("matching", "optimal"), ObjectSetMetric.Space.CELL, 3);
         check(Map.of("matching", "optimal"), ObjectSetMetric.Space.CARTESIAN, 1);
         check(Map.of("matching", "optimal", "row-weight", "3", "log-distance", "true"), ObjectSetMetric.Space.CARTESIAN, 0);
     }
@@ -92,6 +94,18 @@ class PackedScanTest {
         // all players as one group too (larger groups); a small penalty makes more pairs cheaper unmatched
         check(Map.of("matching", "optimal", "penalty", "2", "penalty-scale", "30"), ObjectSetMetric.Space.CARTESIAN, 0,
                 ObjectWeights.parse("1/1/1/1/1/1/1/1"));
+    }
+
+    @Test
+    void randomScenesAsExhaustive() {
+        List<Scene> randomStored = TestScenes.random(11, 800);
+        List<Scene> randomQueries = TestScenes.random(12, 30);
+        ObjectWeights all = ObjectWeights.parse("1/1/1/1/1/1/1/1");
+        for (Map<String, String> options : List.of(Map.<String, String>of(), Map.of("matching", "optimal"),
+                Map.of("matching", "optimal", "space", "polar", "penalty", "3"))) {
+            check(options, ObjectSetMetric.Space.CARTESIAN, 0, all, randomStored, randomQueries);
+        }
+        check(Map.of("matching", "optimal"), ObjectSetMetric.Space.CELL, 2, all, randomStored, randomQueries);
     }
 
     @Test
