@@ -147,16 +147,17 @@ final class ValidateCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
-    /** Reads scene files that must share one grid (matching never mixes grids). */
+    /**
+     * Reads scene files that must share one grid (matching never mixes grids), on all cores:
+     * reading is the part of a validation that does not spread over queries.
+     */
     static List<SceneFile> readSameGrid(List<Path> paths) {
-        List<SceneFile> files = new ArrayList<>();
-        for (Path path : paths) {
-            SceneFile file = SceneFileReader.read(path);
-            if (!files.isEmpty() && !file.grid().equals(files.get(0).grid())) {
-                throw new UsageException(path + ": grid " + file.grid().describe() + " differs from "
+        List<SceneFile> files = paths.parallelStream().map(SceneFileReader::read).toList();
+        for (int i = 1; i < files.size(); i++) {
+            if (!files.get(i).grid().equals(files.get(0).grid())) {
+                throw new UsageException(paths.get(i) + ": grid " + files.get(i).grid().describe() + " differs from "
                         + files.get(0).grid().describe() + " of " + paths.get(0) + "; convert them with the same grid");
             }
-            files.add(file);
         }
         return files;
     }

@@ -11,19 +11,65 @@ import org.scenes.scene.SceneFileReader;
 
 /**
  * The stored scenes a recognizer searches, built once and never changed. All scenes share one
- * grid: cells of different grids cannot be compared, so mixing them is refused.
+ * grid: cells of different grids cannot be compared, so mixing them is refused. Scenes are held
+ * compactly (about 7 bytes per seen object, see {@link CompactScenes}) and decoded on access, so
+ * a million scenes fit in a few hundred megabytes; metrics pack what they compare once, when a
+ * {@link Recognizer} is built.
  */
 public final class KnowledgeBase {
     private final Grid grid;
-    private final List<Scene> scenes;
+    private final CompactScenes scenes;
 
-    private KnowledgeBase(Grid grid, List<Scene> scenes) {
+    private KnowledgeBase(Grid grid, CompactScenes scenes) {
         this.grid = grid;
-        this.scenes = List.copyOf(scenes);
+        this.scenes = scenes;
     }
 
     public static KnowledgeBase of(Grid grid, List<Scene> scenes) {
-        return new KnowledgeBase(grid, scenes);
+        Builder builder = builder(grid);
+        scenes.forEach(builder::add);
+        return builder.build();
+    }
+
+    /** Collects scenes one at a time, so a knowledge base never needs them all as objects at once. */
+    public static Builder builder(Grid grid) {
+        return new Builder(grid);
+    }
+
+    public static final class Builder {
+        private final Grid grid;
+        private CompactScenes scenes;
+
+        private Builder(Grid grid) {
+            this.grid = grid;
+            scenes = new CompactScenes(grid);
+        }
+
+        public Builder add(Scene scene) {
+            if (scenes == null) {
+                throw new IllegalStateException("the knowledge base was already built");
+            }
+            scenes.append(scene);
+            return this;
+        }
+
+        /** Adds one player's scenes in order, through fresh transforms. */
+        public Builder addSequence(Iterable<Scene> sequence, List<SceneTransform> transforms) {
+            for (Scene scene : sequence) {
+                add(transformed(scene, transforms));
+            }
+            return this;
+        }
+
+        public KnowledgeBase build() {
+            if (scenes == null) {
+                throw new IllegalStateException("the knowledge base was already built");
+            }
+            scenes.trim();
+            KnowledgeBase knowledge = new KnowledgeBase(grid, scenes);
+            scenes = null;
+            return knowledge;
+        }
     }
 
     /**
@@ -35,30 +81,42 @@ public final class KnowledgeBase {
             throw new IllegalArgumentException("a knowledge base needs at least one scene file");
         }
         Grid grid = files.get(0).grid();
-        List<Scene> scenes = new ArrayList<>();
+        Builder builder = builder(grid);
         for (SceneFile file : files) {
             if (!file.grid().equals(grid)) {
                 throw new IllegalArgumentException("scene files use different grids (" + grid.describe() + " and "
                         + file.grid().describe() + " from " + file.header().source().log()
                         + "); convert them with the same --grid and --bounds");
             }
-            scenes.addAll(transform(file.scenes(), transforms.get()));
+            builder.addSequence(file.scenes(), transforms.get());
         }
-        return new KnowledgeBase(grid, scenes);
+        return builder.build();
     }
 
-    /** Reads the files (gzip or plain) and builds the knowledge base; errors name the file. */
+    /**
+     * Reads the files (gzip or plain) one scene at a time into the knowledge base, so only the
+     * compact form is ever held; errors name the file.
+     */
     public static KnowledgeBase load(List<Path> paths, Supplier<List<SceneTransform>> transforms) {
-        List<SceneFile> files = new ArrayList<>();
-        for (Path path : paths) {
-            SceneFile file = SceneFileReader.read(path);
-            if (!files.isEmpty() && !file.grid().equals(files.get(0).grid())) {
-                throw new IllegalArgumentException(path + ": grid " + file.grid().describe() + " differs from "
-                        + files.get(0).grid().describe() + " of " + paths.get(0) + "; convert them with the same grid");
-            }
-            files.add(file);
+        if (paths.isEmpty()) {
+            throw new IllegalArgumentException("a knowledge base needs at least one scene file");
         }
-        return fromFiles(files, transforms);
+        Grid grid = null;
+        Builder builder = null;
+        for (Path path : paths) {
+            try (SceneFileReader reader = SceneFileReader.open(path)) {
+                Grid fileGrid = reader.header().grid();
+                if (grid == null) {
+                    grid = fileGrid;
+                    builder = builder(grid);
+                } else if (!fileGrid.equals(grid)) {
+                    throw new IllegalArgumentException(path + ": grid " + fileGrid.describe() + " differs from "
+                            + grid.describe() + " of " + paths.get(0) + "; convert them with the same grid");
+                }
+                builder.addSequence(() -> reader, transforms.get());
+            }
+        }
+        return builder.build();
     }
 
     /** One player's scenes through fresh transforms, in order. */
@@ -68,19 +126,24 @@ public final class KnowledgeBase {
         }
         List<Scene> out = new ArrayList<>(scenes.size());
         for (Scene scene : scenes) {
-            Scene current = scene;
-            for (SceneTransform transform : transforms) {
-                current = transform.apply(current);
-            }
-            out.add(current);
+            out.add(transformed(scene, transforms));
         }
         return out;
+    }
+
+    private static Scene transformed(Scene scene, List<SceneTransform> transforms) {
+        Scene current = scene;
+        for (SceneTransform transform : transforms) {
+            current = transform.apply(current);
+        }
+        return current;
     }
 
     public Grid grid() {
         return grid;
     }
 
+    /** The scenes in order, each decoded anew when read: iterate once rather than index repeatedly. */
     public List<Scene> scenes() {
         return scenes;
     }
@@ -91,5 +154,10 @@ public final class KnowledgeBase {
 
     public Scene scene(int index) {
         return scenes.get(index);
+    }
+
+    /** Bytes of heap the stored scenes take (not counting what metrics pack from them). */
+    public long storedBytes() {
+        return scenes.storedBytes();
     }
 }

@@ -11,7 +11,9 @@ import org.scenes.scene.Scene;
  * equal distances are ordered by knowledge-base index, so results never depend on timing or
  * threads. Metrics with an {@link EncodedMetric} fast path have the knowledge base encoded once
  * here and are asked with the current k-th best distance as bound, so they can stop early;
- * metrics with a {@link PackedMetric} form have it built once here and scan it themselves.
+ * metrics with a {@link PackedMetric} form have it built once here and scan it themselves;
+ * other metrics compare whole scenes, decoded from the knowledge base once here (at the memory
+ * cost of scene objects).
  * Safe to use from several threads: each thread gets its own metric instance.
  */
 public final class Recognizer {
@@ -20,6 +22,8 @@ public final class Recognizer {
     private final ThreadLocal<SceneMetric> metrics;
     private final Object[] encoded;
     private final PackedMetric.PackedScenes packed;
+    /** decoded scenes for metrics with neither fast path, which compare whole scenes */
+    private final List<Scene> decoded;
 
     public Recognizer(KnowledgeBase knowledge, Supplier<SceneMetric> metricFactory, int k) {
         if (k < 1) {
@@ -41,6 +45,7 @@ public final class Recognizer {
         } else {
             encoded = null;
         }
+        decoded = packed == null && encoded == null ? List.copyOf(knowledge.scenes()) : null;
     }
 
     public KnowledgeBase knowledge() {
@@ -69,8 +74,8 @@ public final class Recognizer {
                 top.offer(fast.distance(q, encoded[i], top.bound()), i);
             }
         } else {
-            for (int i = 0; i < knowledge.size(); i++) {
-                top.offer(metric.distance(query, knowledge.scene(i)), i);
+            for (int i = 0; i < decoded.size(); i++) {
+                top.offer(metric.distance(query, decoded.get(i)), i);
             }
         }
         List<Neighbour> result = new ArrayList<>(top.size());

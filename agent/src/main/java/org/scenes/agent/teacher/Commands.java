@@ -26,6 +26,13 @@ final class Commands {
     /** One decimal at most, always with a decimal point, never in exponent form. */
     private static String number(double value) {
         double rounded = Math.rint(value * 10) / 10;
-        return String.format(Locale.ROOT, rounded == Math.rint(rounded) ? "%.1f" : "%s", rounded == 0 ? 0.0 : rounded);
+        if (rounded == 0) {
+            return "0.0";
+        }
+        // Cheap forms first: synthetic scene generation writes a million commands.
+        if (Math.abs(rounded) < 1e7) {
+            return rounded == Math.rint(rounded) ? (long) rounded + ".0" : Double.toString(rounded);
+        }
+        return String.format(Locale.ROOT, rounded == Math.rint(rounded) ? "%.1f" : "%s", rounded);
     }
 }

@@ -3,6 +3,8 @@ package org.scenes.agent.teacher;
 import java.util.Map;
 import java.util.TreeMap;
 import org.scenes.agent.BrainFactory;
+import org.scenes.protocol.See;
+import org.scenes.scene.Side;
 
 /** The teacher agents by name, as {@code scenes simulate --teams NAME:N,...} names them. */
 public final class Teachers {
@@ -25,5 +27,16 @@ public final class Teachers {
 
     public static java.util.Set<String> names() {
         return BY_NAME.keySet();
+    }
+
+    /**
+     * The command the classic Krislet answers {@code see} with when playing on {@code side}, e.g.
+     * {@code (dash 90.0)}: its rules without its clock, for labelling scenes made without a game.
+     */
+    public static String krisletCommand(See see, Side side) {
+        Perception perception = new Perception();
+        perception.side = side;
+        perception.see = see;
+        return Krislet.decide(perception);
     }
 }

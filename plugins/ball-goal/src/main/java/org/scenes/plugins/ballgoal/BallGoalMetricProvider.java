@@ -40,6 +40,7 @@ public final class BallGoalMetricProvider implements MetricProvider {
         options.put("missing", "cost of a ball or goal seen in one scene only (default 10)");
         options.put("memory", "weight of the remembered previous scene's ball and goal (needs the memory transform; default 0)");
         options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
+        options.put("index", "true: search an exact index of the distinct ball and goal keys; false: scan every scene (default true)");
         return options;
     }
 
@@ -56,8 +57,12 @@ public final class BallGoalMetricProvider implements MetricProvider {
                 throw new PluginException("ball-goal weights must be finite and not negative");
             }
         }
+        String index = config.option("index", "true");
+        if (!index.equals("true") && !index.equals("false")) {
+            throw new PluginException("ball-goal option index must be true or false, not " + index);
+        }
         return new BallGoalMetric(row, column, angle / 10, missing,
-                config.objectWeights().ball(), config.objectWeights().goal(), memory, memoryAction);
+                config.objectWeights().ball(), config.objectWeights().goal(), memory, memoryAction, index.equals("true"));
     }
 
     /**
@@ -74,9 +79,11 @@ public final class BallGoalMetricProvider implements MetricProvider {
         private final double goalWeight;
         private final double memory;
         private final double memoryAction;
+        private final boolean indexed;
 
         BallGoalMetric(double rowWeight, double columnWeight, double anglePerDegree, double missing,
-                       double ballWeight, double goalWeight, double memory, double memoryAction) {
+                       double ballWeight, double goalWeight, double memory, double memoryAction, boolean indexed) {
+            this.indexed = indexed;
             this.memory = memory;
             this.memoryAction = memoryAction;
             this.rowWeight = rowWeight;
@@ -87,10 +94,10 @@ public final class BallGoalMetricProvider implements MetricProvider {
             this.goalWeight = goalWeight;
         }
 
-        /** Packed columns of the current scene's ball and goal; none with memory terms. */
+        /** Packed columns of the current scene's ball and goal, indexed unless disabled; none with memory terms. */
         @Override
         public PackedScenes pack(List<Scene> scenes) {
-            return memory > 0 || memoryAction > 0 ? null : PackedBallGoal.pack(this, scenes);
+            return memory > 0 || memoryAction > 0 ? null : PackedBallGoal.pack(this, scenes, indexed);
         }
 
         double rowWeight() {

@@ -16,7 +16,9 @@ import org.scenes.scene.Scene;
  * cap[cell])}. The tables hold the very partial sums {@link BallGoalMetricProvider.BallGoalMetric}
  * computes ({@code (cw |dc| + rw |dr|) + aw |dd|}, summed in that order), so every distance is
  * identical to the exhaustive scan's; absence is folded into the tables (an infinite cell cost
- * and a cap of M or 0), so the loop has no branch but the rare offer.
+ * and a cap of M or 0), so the loop has no branch but the rare offer. Unless disabled
+ * ({@code index=false}), queries go through a {@link BallGoalIndex} built alongside, with the
+ * same sums; the scan stays for queries the index does not cover.
  */
 final class PackedBallGoal implements PackedMetric.PackedScenes {
     private static final int MAX_CELLS = 255;
@@ -30,14 +32,19 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
     private final double[][] cellColumn = new double[2][];
     private final double[][] cellRow = new double[2][];
     private final double[][] directions = new double[2][];
+    /** the exact index, or null when disabled or not applicable: then every query scans */
+    private BallGoalIndex index;
 
     private PackedBallGoal(BallGoalMetricProvider.BallGoalMetric metric, int size) {
         this.metric = metric;
         this.size = size;
     }
 
-    /** The packed form, or null when the scenes hold too many distinct cells or directions for the keys. */
-    static PackedBallGoal pack(BallGoalMetricProvider.BallGoalMetric metric, List<Scene> scenes) {
+    /**
+     * The packed form, with the index when {@code indexed} and it applies, or null when the scenes
+     * hold too many distinct cells or directions for the keys.
+     */
+    static PackedBallGoal pack(BallGoalMetricProvider.BallGoalMetric metric, List<Scene> scenes, boolean indexed) {
         PackedBallGoal packed = new PackedBallGoal(metric, scenes.size());
         double[][] features = new double[scenes.size()][];
         for (int i = 0; i < features.length; i++) {
@@ -49,7 +56,7 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
             Map<Double, Integer> directionIndex = new HashMap<>();
             for (double[] f : features) {
                 if (f[offset] != 0) {
-                    cells.putIfAbsent(Double.doubleToLongBits(f[offset + 1]) * 31 + Double.doubleToLongBits(f[offset + 2]), cells.size());
+                    cells.putIfAbsent(cellKey(f, offset), cells.size());
                     directionIndex.putIfAbsent(f[offset + 3], directionIndex.size());
                 }
             }
@@ -68,7 +75,7 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
                     cellKey[i] = (byte) absent;
                     continue;
                 }
-                int cell = cells.get(Double.doubleToLongBits(f[offset + 1]) * 31 + Double.doubleToLongBits(f[offset + 2]));
+                int cell = cells.get(cellKey(f, offset));
                 int direction = directionIndex.get(f[offset + 3]);
                 cellKey[i] = (byte) cell;
                 directionKey[i] = (char) direction;
@@ -79,18 +86,43 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
             packed.cellKeys[object] = cellKey;
             packed.directionKeys[object] = directionKey;
         }
+        packed.index = indexed ? BallGoalIndex.build(metric, features) : null;
         return packed;
     }
 
+    /** Column and row (small non-negative integers) in one long, one key per cell. */
+    private static long cellKey(double[] features, int offset) {
+        return ((long) features[offset + 1] << 32) | (long) features[offset + 2];
+    }
+
+    /** Whether queries go through the index (else every one scans). */
+    boolean indexed() {
+        return index != null;
+    }
+
+    /** Through the index when it covers the query, else the scan of every scene. */
     @Override
     public void scan(Scene query, TopK top) {
         double[] q = metric.encode(query);
+        if (index != null && index.covers(q)) {
+            index.search(q, top);
+        } else {
+            scanAll(q, top);
+        }
+    }
+
+    /** Offers every scene's distance that is below the bound, in index order. */
+    void scanAll(double[] q, TopK top) {
         double[] ballCell = new double[256];
         double[] ballCap = new double[256];
         double[] ballDirection = tables(q, 0, ballCell, ballCap);
         double[] goalCell = new double[256];
         double[] goalCap = new double[256];
         double[] goalDirection = tables(q, 1, goalCell, goalCap);
+        if (!finiteSums(ballDirection, goalDirection)) {
+            scanExactly(q, top);
+            return;
+        }
         double ballWeight = metric.ballWeight();
         double goalWeight = metric.goalWeight();
         byte[] ballCells = cellKeys[0];
@@ -108,6 +140,46 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
                 top.offer(distance, i);
                 bound = top.bound();
             }
+        }
+    }
+
+    /**
+     * Whether every distance of this query is finite, as the table scan needs: a NaN direction
+     * cost (0 times an infinite difference) would spread to absent objects through the tables,
+     * and a NaN or infinite distance is never below an infinite bound, so it would not be offered.
+     */
+    private boolean finiteSums(double[] ballDirection, double[] goalDirection) {
+        double cap = 2 * metric.missing();
+        if (!Double.isFinite(metric.ballWeight() * cap + metric.goalWeight() * cap)) {
+            return false;
+        }
+        for (double[] costs : new double[][] {ballDirection, goalDirection}) {
+            for (double cost : costs) {
+                if (Double.isNaN(cost)) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /**
+     * The rare queries the tables cannot serve (directions that are not finite, overflowing
+     * weights): each scene's features rebuilt from the dictionaries and measured by the metric itself.
+     */
+    private void scanExactly(double[] q, TopK top) {
+        double[] stored = new double[q.length];
+        for (int i = 0; i < size; i++) {
+            for (int object = 0; object < 2; object++) {
+                int offset = 4 * object;
+                int cell = cellKeys[object][i] & 0xff;
+                boolean present = cell < cellColumn[object].length;
+                stored[offset] = present ? 1 : 0;
+                stored[offset + 1] = present ? cellColumn[object][cell] : 0;
+                stored[offset + 2] = present ? cellRow[object][cell] : 0;
+                stored[offset + 3] = present ? directions[object][directionKeys[object][i]] : 0;
+            }
+            top.offer(metric.distance(q, stored, Double.POSITIVE_INFINITY), i);
         }
     }
 

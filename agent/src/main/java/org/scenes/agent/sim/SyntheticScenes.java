@@ -1,0 +1,157 @@
+package org.scenes.agent.sim;
+
+import java.util.List;
+import java.util.SplittableRandom;
+import java.util.function.Consumer;
+import org.scenes.agent.teacher.Teachers;
+import org.scenes.convert.SceneConverter;
+import org.scenes.protocol.MessageParser;
+import org.scenes.protocol.PlayerCommand;
+import org.scenes.protocol.See;
+import org.scenes.scene.Action;
+import org.scenes.scene.Grid;
+import org.scenes.scene.Observer;
+import org.scenes.scene.Scene;
+import org.scenes.scene.Side;
+
+/**
+ * Scenes without a game, as many as a benchmark wants: each one an independent random moment of
+ * an 11 v 11 Krislet game, seen and labelled by the same code as real data. A moment places the
+ * ball anywhere on the pitch, the other 21 players gathered round it (Krislet players all chase
+ * the ball) and the observer at a distance and facing drawn to match the recorded Krislet games
+ * (ball seen in about 95 % of scenes, straight ahead in about 72 %, kickable in 0.5 %); the
+ * simulator's {@link Vision} writes the version 9 {@code see} (quantisation, view cone, objects
+ * sensed behind, fading team and number), core's {@link MessageParser} and
+ * {@link SceneConverter#seenObjects} turn it into objects as the converter does, and the classic
+ * Krislet's rules choose the action from that see.
+ *
+ * <p>Streaming and deterministic: the same seed gives the same scenes in the same order, and a
+ * shorter run is a prefix of a longer one. Nothing is kept between scenes, so a million scenes
+ * cost only what the sink keeps.
+ */
+public final class SyntheticScenes {
+    static final String HOME = "Home";
+    static final String AWAY = "Away";
+    static final int PLAYERS_PER_SIDE = 11;
+    /** Cycles of a game: scene cycles count 1 to this, then start again. */
+    static final int GAME_CYCLES = 6000;
+    /** Scenes with the ball within Krislet's kickable metre (0.2 to 0.4 % in the recorded games). */
+    static final double KICKABLE_SHARE = 0.005;
+    /** Scenes whose observer looks straight at the ball, so Krislet dashes (66 to 75 % recorded). */
+    static final double FACING_BALL_SHARE = 0.72;
+    /**
+     * Scenes whose observer has the ball in view but off centre, so Krislet turns to it; the rest
+     * look anywhere (ball seen but not ahead in about 22 % of recorded scenes, not seen in 4 to 10 %).
+     */
+    static final double BALL_IN_VIEW_SHARE = 0.22;
+    /** Mean of the ball's distance beyond 1 m, exponential: median near 11 m, 90 % within 33 m as recorded. */
+    static final double BALL_DISTANCE_MEAN = 14;
+    /** Standard deviation (metres, per axis) of the other players' spread round the ball. */
+    static final double CROWD_SPREAD = 12;
+    /** Top speeds drawn for players and the ball (metres per cycle). */
+    static final double PLAYER_SPEED = 0.6;
+    static final double BALL_SPEED = 1.2;
+
+    private final SplittableRandom random;
+    private final Grid grid;
+    private final World world;
+    private final Vision vision;
+    private final MessageParser parser = new MessageParser();
+    private final Observer[] observers = new Observer[2 * PLAYERS_PER_SIDE];
+    private int cycle;
+
+    private SyntheticScenes(long seed, Grid grid) {
+        this.random = new SplittableRandom(seed);
+        this.grid = grid;
+        this.world = new World(ServerParams.DEFAULT, seed);
+        for (Side side : new Side[] {Side.LEFT, Side.RIGHT}) {
+            String team = side == Side.LEFT ? HOME : AWAY;
+            for (int unum = 1; unum <= PLAYERS_PER_SIDE; unum++) {
+                world.add(team, side, unum);
+                observers[world.players.size() - 1] = new Observer(team, side, unum);
+            }
+        }
+        this.vision = new Vision(world);
+    }
+
+    /**
+     * Hands {@code count} scenes, one at a time, to {@code sink}; objects' cells are in {@code grid}.
+     */
+    public static void generate(long seed, int count, Grid grid, Consumer<Scene> sink) {
+        if (count < 0) {
+            throw new IllegalArgumentException("scene count must not be negative, not " + count);
+        }
+        SyntheticScenes scenes = new SyntheticScenes(seed, grid);
+        for (int i = 0; i < count; i++) {
+            sink.accept(scenes.next());
+        }
+    }
+
+    private Scene next() {
+        cycle = cycle % GAME_CYCLES + 1;
+        world.time = cycle;
+        int seat = random.nextInt(world.players.size());
+        Player self = world.players.get(seat);
+        Observer observer = observers[seat];
+
+        Ball ball = world.ball;
+        ball.place(uniform(ServerParams.PITCH_HALF_LENGTH), uniform(ServerParams.PITCH_HALF_WIDTH));
+        setVelocity(ball, random.nextDouble() * 360, random.nextDouble() * BALL_SPEED);
+        for (Player other : world.players) {
+            if (other != self) {
+                other.place(onPitch(ball.x + random.nextGaussian() * CROWD_SPREAD, ServerParams.PITCH_HALF_LENGTH),
+                        onPitch(ball.y + random.nextGaussian() * CROWD_SPREAD, ServerParams.PITCH_HALF_WIDTH));
+                other.body = uniform(180);
+                other.neck = 0; // Krislet never turns its neck
+                setVelocity(other, other.body, random.nextDouble() * PLAYER_SPEED);
+            }
+        }
+        placeObserver(self, ball);
+
+        See see = (See) parser.parse(vision.see(self));
+        String command = Teachers.krisletCommand(see, observer.side());
+        Action action = ((PlayerCommand) parser.parse(command)).toAction();
+        return new Scene(cycle, observer, SceneConverter.seenObjects(see, observer, grid), List.of(action));
+    }
+
+    /** At a distance from the ball, within the pitch's margin, looking at it or anywhere. */
+    private void placeObserver(Player self, Ball ball) {
+        double distance = random.nextDouble() < KICKABLE_SHARE ? 0.3 + 0.7 * random.nextDouble()
+                : 1 - BALL_DISTANCE_MEAN * Math.log(1 - random.nextDouble());
+        double limitX = ServerParams.PITCH_HALF_LENGTH + ServerParams.PITCH_MARGIN;
+        double limitY = ServerParams.PITCH_HALF_WIDTH + ServerParams.PITCH_MARGIN;
+        double x = 0;
+        double y = 0;
+        // A few bearings until one keeps the observer on the ground; far draws end clamped.
+        for (int attempt = 0; attempt < 8; attempt++) {
+            double bearing = Math.toRadians(uniform(180));
+            x = ball.x + distance * Math.cos(bearing);
+            y = ball.y + distance * Math.sin(bearing);
+            if (Math.abs(x) <= limitX && Math.abs(y) <= limitY) {
+                break;
+            }
+        }
+        self.place(onPitch(x, limitX), onPitch(y, limitY));
+        double towardsBall = Math.toDegrees(Math.atan2(ball.y - self.y, ball.x - self.x));
+        double facing = random.nextDouble();
+        self.body = facing < FACING_BALL_SHARE ? towardsBall
+                : facing < FACING_BALL_SHARE + BALL_IN_VIEW_SHARE ? towardsBall + uniform(ServerParams.DEFAULT.visibleAngle() / 2)
+                : uniform(180);
+        self.neck = 0;
+        setVelocity(self, self.body, random.nextDouble() * PLAYER_SPEED);
+    }
+
+    private double uniform(double halfRange) {
+        return (random.nextDouble() * 2 - 1) * halfRange;
+    }
+
+    private static double onPitch(double value, double limit) {
+        return Math.max(-limit, Math.min(limit, value));
+    }
+
+    private static void setVelocity(MovingObject object, double directionDegrees, double speed) {
+        double radians = Math.toRadians(directionDegrees);
+        object.vx = speed * Math.cos(radians);
+        object.vy = speed * Math.sin(radians);
+    }
+}

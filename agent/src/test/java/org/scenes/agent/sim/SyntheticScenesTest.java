@@ -1,0 +1,138 @@
+package org.scenes.agent.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.scenes.convert.SceneConverter;
+import org.scenes.scene.Action;
+import org.scenes.scene.ActionType;
+import org.scenes.scene.Cell;
+import org.scenes.scene.Grid;
+import org.scenes.scene.ObjectKind;
+import org.scenes.scene.Relation;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SeenObject;
+
+class SyntheticScenesTest {
+    private static final int COUNT = 20_000;
+
+    private static List<Scene> generate(long seed, int count, Grid grid) {
+        List<Scene> scenes = new ArrayList<>();
+        SyntheticScenes.generate(seed, count, grid, scenes::add);
+        return scenes;
+    }
+
+    @Test
+    void sameSeedSameScenesAndShorterRunsArePrefixes() {
+        List<Scene> first = generate(42, 2000, Grid.DEFAULT);
+        assertEquals(2000, first.size());
+        assertEquals(first, generate(42, 2000, Grid.DEFAULT));
+        assertEquals(first.subList(0, 500), generate(42, 500, Grid.DEFAULT));
+        assertNotEquals(first, generate(43, 2000, Grid.DEFAULT));
+    }
+
+    @Test
+    void everyCellIsTheGridsCellOfTheObject() {
+        Grid grid = new Grid(7, -60, 60, new double[] {2, 8, 20});
+        for (Scene scene : generate(5, 3000, grid)) {
+            for (SeenObject object : scene.objects()) {
+                Cell cell = object.cell();
+                assertTrue(cell.column() >= 0 && cell.column() < grid.columns(), object.toString());
+                assertTrue(cell.row() >= 0 && cell.row() < grid.rows(), object.toString());
+                assertEquals(grid.cell(object.distance(), object.direction()), cell, object.toString());
+            }
+        }
+    }
+
+    /**
+     * Compared with the recorded Krislet game 1 (5 v 5): landmarks, lines and the ball within a
+     * fifth of the recorded mean per scene, and more players, since synthetic games are 11 v 11.
+     */
+    @Test
+    void objectCountsAreNearRecordedKrisletScenes() throws IOException {
+        double[] recorded = meanCounts(recordedGame1());
+        double[] synthetic = meanCounts(generate(1, COUNT, Grid.DEFAULT));
+        assertEquals(recorded[0], synthetic[0], recorded[0] * 0.2, "non-player objects per scene");
+        assertTrue(synthetic[1] > recorded[1] && synthetic[1] < 21, "players per scene " + synthetic[1]
+                + ", recorded " + recorded[1]);
+    }
+
+    /** Mean objects per scene without players, and mean players per scene. */
+    private static double[] meanCounts(List<Scene> scenes) {
+        long players = 0;
+        long others = 0;
+        for (Scene scene : scenes) {
+            for (SeenObject object : scene.objects()) {
+                if (object.kind() == ObjectKind.PLAYER) {
+                    players++;
+                } else {
+                    others++;
+                }
+            }
+        }
+        return new double[] {(double) others / scenes.size(), (double) players / scenes.size()};
+    }
+
+    private static List<Scene> recordedGame1() throws IOException {
+        Path game = Path.of(System.getProperty("scenes.shared"), "data", "krislet", "classic-game1");
+        List<Scene> scenes = new ArrayList<>();
+        SceneConverter converter = new SceneConverter(Grid.DEFAULT, true, line -> { });
+        for (String player : new String[] {"Carleton_1", "University_1"}) {
+            converter.convert(game.resolve(player + ".lsf.gz"), scenes::add);
+        }
+        return scenes;
+    }
+
+    /** Every scene has the one action Krislet's rules give for its objects; all three kinds occur. */
+    @Test
+    void actionsFollowKrisletsRules() {
+        Map<ActionType, Integer> counts = new EnumMap<>(ActionType.class);
+        boolean teammates = false;
+        boolean opponents = false;
+        for (Scene scene : generate(7, COUNT, Grid.DEFAULT)) {
+            assertEquals(1, scene.actions().size(), scene.toString());
+            Action action = scene.primaryAction();
+            assertEquals(expected(scene), action, scene.toString());
+            counts.merge(action.type(), 1, Integer::sum);
+            for (SeenObject object : scene.objects()) {
+                teammates |= object.relation() == Relation.TEAMMATE;
+                opponents |= object.relation() == Relation.OPPONENT && object.kind() == ObjectKind.PLAYER;
+            }
+        }
+        // Recorded Krislet games: 66 to 75 % dashes, 25 to 34 % turns, about 0.2 % kicks.
+        assertEquals(0.72, counts.get(ActionType.DASH) / (double) COUNT, 0.05, counts.toString());
+        assertEquals(0.28, counts.get(ActionType.TURN) / (double) COUNT, 0.05, counts.toString());
+        assertTrue(counts.getOrDefault(ActionType.KICK, 0) > 0, counts.toString());
+        assertTrue(teammates && opponents);
+    }
+
+    private static Action expected(Scene scene) {
+        SeenObject ball = find(scene, "b");
+        if (ball == null) {
+            return Action.turn(40);
+        }
+        if (ball.distance() > 1) {
+            return ball.direction() != 0 ? Action.turn(ball.direction()) : Action.dash(Math.rint(ball.distance() * 100) / 10);
+        }
+        SeenObject goal = find(scene, scene.observer().side() == org.scenes.scene.Side.LEFT ? "g r" : "g l");
+        return goal == null ? Action.turn(40) : Action.kick(100, goal.direction());
+    }
+
+    private static SeenObject find(Scene scene, String name) {
+        return scene.objects().stream().filter(o -> o.name().equals(name)).findFirst().orElse(null);
+    }
+
+    @Test
+    void negativeCountIsRefused() {
+        assertThrows(IllegalArgumentException.class, () -> SyntheticScenes.generate(1, -1, Grid.DEFAULT, s -> { }));
+    }
+}

@@ -1,0 +1,117 @@
+package org.scenes.match;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.function.Supplier;
+import org.scenes.agent.sim.SyntheticScenes;
+import org.scenes.convert.SceneConverter;
+import org.scenes.plugin.PluginConfig;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.Grid;
+import org.scenes.scene.Scene;
+
+/**
+ * The scene sets of the scaling benchmarks: synthetic knowledge bases of any size (seed 1) with
+ * synthetic queries (seed 2, other moments than the stored ones), and the recorded Krislet game 1
+ * (every player but Carleton_2 stored, Carleton_2's scenes as queries). Setups print how long
+ * building took and the heap then in use, so reports can quote them.
+ */
+final class BenchSets {
+    static final long KNOWLEDGE_SEED = 1;
+    static final long QUERY_SEED = 2;
+    static final int QUERIES = 256;
+    private static final String[] KRISLET_STORED = {"Carleton_1", "Carleton_3", "Carleton_4", "Carleton_5",
+        "University_1", "University_2", "University_3", "University_4", "University_5"};
+
+    private BenchSets() {
+    }
+
+    /** {@code size} synthetic scenes streamed into a knowledge base, never all held as objects. */
+    static KnowledgeBase synthetic(int size) {
+        long start = System.nanoTime();
+        KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
+        SyntheticScenes.generate(KNOWLEDGE_SEED, size, Grid.DEFAULT, builder::add);
+        KnowledgeBase knowledge = builder.build();
+        report("generated " + size + " synthetic scenes into the knowledge base", start);
+        return knowledge;
+    }
+
+    static List<Scene> syntheticQueries() {
+        List<Scene> queries = new ArrayList<>(QUERIES);
+        SyntheticScenes.generate(QUERY_SEED, QUERIES, Grid.DEFAULT, queries::add);
+        return queries;
+    }
+
+    /** Game 1 of the shared Krislet data without Carleton_2 (about 22,000 scenes). */
+    static KnowledgeBase krislet() {
+        long start = System.nanoTime();
+        KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
+        for (String player : KRISLET_STORED) {
+            convert(player, builder::add);
+        }
+        KnowledgeBase knowledge = builder.build();
+        report("converted " + knowledge.size() + " Krislet game 1 scenes into the knowledge base", start);
+        return knowledge;
+    }
+
+    /** {@value #QUERIES} of Carleton_2's scenes, spread evenly over its game. */
+    static List<Scene> krisletQueries() {
+        List<Scene> all = new ArrayList<>();
+        convert("Carleton_2", all::add);
+        List<Scene> queries = new ArrayList<>(QUERIES);
+        for (int i = 0; i < QUERIES; i++) {
+            queries.add(all.get(i * all.size() / QUERIES));
+        }
+        return queries;
+    }
+
+    private static void convert(String player, SceneConverter.SceneSink sink) {
+        Path log = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "krislet", "classic-game1",
+                player + ".lsf.gz");
+        try {
+            new SceneConverter(Grid.DEFAULT, false, null).convert(log, sink);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /**
+     * A fresh-metric supplier for a benchmark name: a metric plugin's name, {@code continuous-optimal}
+     * ({@code continuous} with {@code matching=optimal}) or {@code script-ball-goal} (the shipped
+     * example script).
+     */
+    static Supplier<SceneMetric> metric(String name) {
+        PluginRegistry registry = PluginRegistry.load();
+        String spec = switch (name) {
+            case "script-ball-goal" -> "script:" + Path.of(System.getProperty("scenes.examples", "../examples/scripts"), "ball-goal.groovy");
+            case "continuous-optimal" -> "continuous";
+            default -> name;
+        };
+        PluginConfig config = name.equals("continuous-optimal")
+                ? PluginConfig.DEFAULT.withOptions(Map.of("matching", "optimal")) : PluginConfig.DEFAULT;
+        return () -> registry.metric(spec, config);
+    }
+
+    /** A recognizer, reporting how long packing the knowledge base for the metric took. */
+    static Recognizer recognizer(KnowledgeBase knowledge, String metric, int k) {
+        long start = System.nanoTime();
+        Recognizer recognizer = new Recognizer(knowledge, metric(metric), k);
+        report("recognizer for " + metric + " (k=" + k + ") built", start);
+        return recognizer;
+    }
+
+    /** One setup line: what was done, in how long, and the heap in use after a collection. */
+    static void report(String what, long startNanos) {
+        double seconds = (System.nanoTime() - startNanos) / 1e9;
+        System.gc();
+        Runtime runtime = Runtime.getRuntime();
+        long usedMb = (runtime.totalMemory() - runtime.freeMemory()) >> 20;
+        System.out.printf(Locale.ROOT, "%n[setup] %s in %.1f s; heap used %d MB of max %d MB%n", what, seconds, usedMb,
+                runtime.maxMemory() >> 20);
+    }
+}

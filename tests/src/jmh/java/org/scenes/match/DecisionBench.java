@@ -1,0 +1,67 @@
+package org.scenes.match;
+
+import java.util.List;
+import java.util.SplittableRandom;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Warmup;
+import org.scenes.plugin.PluginConfig;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.Action;
+import org.scenes.scene.Scene;
+
+/**
+ * The time of one decision of the imitating agent: the k nearest stored scenes of a query
+ * ({@link Recognizer#nearest}) and the selector's choice among them ({@code first-valid} for
+ * k = 1, {@code vote} for k = 5 and 15, the selectors plugin), sampled per call so p50 and p99
+ * are reported. Knowledge bases ({@code scenes}): {@code krislet}, the recorded Krislet game 1
+ * without Carleton_2 (Carleton_2's scenes are the queries), or that many synthetic scenes
+ * ({@link BenchSets#synthetic}, synthetic queries). Each fork builds its knowledge base once
+ * (printed as a {@code [setup]} line with the heap in use).
+ */
+@State(Scope.Benchmark)
+@BenchmarkMode(Mode.SampleTime)
+@OutputTimeUnit(TimeUnit.MICROSECONDS)
+@Warmup(iterations = 3, time = 2)
+@Measurement(iterations = 5, time = 2)
+@Fork(value = 1, jvmArgsAppend = "-Xmx2g")
+public class DecisionBench {
+    @Param({"krislet", "10000", "100000", "1000000"})
+    public String scenes;
+
+    @Param({"1", "5", "15"})
+    public int k;
+
+    @Param({"ball-goal", "continuous"})
+    public String metric;
+
+    private Recognizer recognizer;
+    private ActionSelector selector;
+    private List<Scene> queries;
+    private final SplittableRandom random = new SplittableRandom(1);
+    private int next;
+
+    @Setup
+    public void build() {
+        boolean recorded = scenes.equals("krislet");
+        KnowledgeBase knowledge = recorded ? BenchSets.krislet() : BenchSets.synthetic(Integer.parseInt(scenes));
+        queries = recorded ? BenchSets.krisletQueries() : BenchSets.syntheticQueries();
+        recognizer = BenchSets.recognizer(knowledge, metric, k);
+        selector = PluginRegistry.load().selector(k == 1 ? "first-valid" : "vote", PluginConfig.DEFAULT);
+    }
+
+    @Benchmark
+    public Action decide() {
+        next = (next + 1) % queries.size();
+        return selector.select(recognizer.nearest(queries.get(next)), random);
+    }
+}
