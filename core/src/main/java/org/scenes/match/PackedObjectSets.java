@@ -6,9 +6,10 @@ import java.util.stream.IntStream;
 import org.scenes.scene.Scene;
 
 /**
- * The packed form of {@link ObjectSetMetric}: every stored object's floats in one array, scene
- * after scene (each scene's weighted groups in group order, objects nearest first), the start of
- * each scene, and each scene's object count per weighted group as an unsigned byte. Scans compute
+ * The packed form of {@link ObjectSetMetric}: every stored object's floats, scene after scene
+ * (each scene's weighted groups in group order, objects nearest first), in chunks of 256 KB that
+ * no scene straddles (no huge array to find room for in a nearly full heap, no copy to grow one),
+ * the start of each scene, and each scene's object count per weighted group as an unsigned byte. Scans compute
  * the same sums in the same order as {@link ObjectSetMetric#distance(ObjectSetMetric.Encoded,
  * ObjectSetMetric.Encoded, double)}, so distances are bit-identical to the exhaustive path.
  * Read-only once built: scans keep their scratch per call, so threads share one instance.
@@ -20,69 +21,88 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
     /** Group numbers of the weighted groups, and their weights. */
     private final int[] groups;
     private final double[] weights;
-    private final float[] data;
-    /** Index in {@code data} of each scene's first float; one more at the end. */
+    private static final int CHUNK_BITS = 16;
+    private static final int CHUNK = 1 << CHUNK_BITS;
+    private static final int IN_CHUNK = CHUNK - 1;
+    private final float[][] chunks;
+    /** Where each scene's first float is: chunk number times {@link #CHUNK} plus the index in it. */
     private final int[] starts;
     /** Objects of scene i in weighted group g at {@code counts[i * groups.length + g]}, unsigned. */
     private final byte[] counts;
 
-    private PackedObjectSets(ObjectSetMetric metric, int[] groups, float[] data, int[] starts, byte[] counts) {
+    private PackedObjectSets(ObjectSetMetric metric, int[] groups, float[][] chunks, int[] starts, byte[] counts) {
         this.metric = metric;
         this.stride = metric.stride();
-        this.size = starts.length - 1;
+        this.size = starts.length;
         this.groups = groups;
         this.weights = Arrays.stream(groups).mapToDouble(metric::groupWeight).toArray();
-        this.data = data;
+        this.chunks = chunks;
         this.starts = starts;
         this.counts = counts;
     }
 
     /**
-     * Two passes, so the array is allocated once at its final size: counting (which only reads
-     * object kinds), then encoding. Null (the caller then uses the encoded path) when a scene
-     * holds more than 255 objects of one group or the data exceeds one array.
+     * Two passes, so the chunks are allocated once at their final size: counting (which only
+     * reads object kinds), then encoding. Null (the caller then uses the encoded path) when a
+     * scene holds more than 255 objects of one group or the floats exceed 2^31.
      */
     static PackedObjectSets pack(ObjectSetMetric metric, List<Scene> scenes) {
         int[] groups = IntStream.range(0, ObjectSetMetric.GROUPS).filter(g -> metric.groupWeight(g) != 0).toArray();
         int n = scenes.size();
         int stride = metric.stride();
         byte[] counts = new byte[n * groups.length];
-        int[] starts = new int[n + 1];
+        int[] starts = new int[n];
         int[] perGroup = new int[ObjectSetMetric.GROUPS];
-        long floats = 0;
+        long position = 0;
         for (int i = 0; i < n; i++) {
             metric.count(scenes.get(i), perGroup);
+            int length = 0;
             for (int g = 0; g < groups.length; g++) {
                 int count = perGroup[groups[g]];
                 if (count > 255) {
                     return null;
                 }
                 counts[i * groups.length + g] = (byte) count;
-                floats += (long) count * stride;
+                length += count * stride; // at most 10 * 255 * 4 floats: always fits a chunk
             }
-            if (floats > Integer.MAX_VALUE - 16) {
+            if ((position & IN_CHUNK) + length > CHUNK) {
+                position = (position | IN_CHUNK) + 1; // the next chunk
+            }
+            if (position + length > Integer.MAX_VALUE) {
                 return null;
             }
-            starts[i + 1] = (int) floats;
+            starts[i] = (int) position;
+            position += length;
         }
-        float[] data = new float[(int) floats];
+        // one chunk past the last full one, maybe empty: a scene without objects may start there
+        float[][] chunks = new float[(int) (position >>> CHUNK_BITS) + 1][];
+        for (int c = 0; c < chunks.length; c++) {
+            chunks[c] = new float[(int) Math.min(CHUNK, position - ((long) c << CHUNK_BITS))];
+        }
         for (int i = 0; i < n; i++) {
             float[][] encoded = metric.encode(scenes.get(i), false).groups();
-            int at = starts[i];
-            for (int group : groups) {
-                System.arraycopy(encoded[group], 0, data, at, encoded[group].length);
-                at += encoded[group].length;
-            }
-            if (at != starts[i + 1]) {
-                throw new IllegalStateException("scene " + i + " changed between the packing passes");
+            float[] chunk = chunks[starts[i] >>> CHUNK_BITS];
+            int at = starts[i] & IN_CHUNK;
+            int first = i * groups.length;
+            for (int g = 0; g < groups.length; g++) {
+                float[] objects = encoded[groups[g]];
+                if (objects.length != (counts[first + g] & 0xFF) * stride) {
+                    throw new IllegalStateException("scene " + i + " changed between the packing passes");
+                }
+                System.arraycopy(objects, 0, chunk, at, objects.length);
+                at += objects.length;
             }
         }
-        return new PackedObjectSets(metric, groups, data, starts, counts);
+        return new PackedObjectSets(metric, groups, chunks, starts, counts);
     }
 
-    /** Bytes of the packed arrays (the floats, the starts and the counts). */
+    /** Bytes of the packed arrays (the floats with the chunks' unused ends, the starts and the counts). */
     long bytes() {
-        return 4L * data.length + 4L * starts.length + counts.length;
+        long floats = 0;
+        for (float[] chunk : chunks) {
+            floats += chunk.length;
+        }
+        return 4 * floats + 4L * starts.length + counts.length;
     }
 
     int size() {
@@ -159,7 +179,8 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
     private void offerGreedy(float[][] q, int[] qn, int i, TopK top, int lead) {
         double bound = top.bound();
         int first = i * groups.length;
-        int at = starts[i];
+        float[] data = chunks[starts[i] >>> CHUNK_BITS];
+        int at = starts[i] & IN_CHUNK;
         int leadAt = at;
         for (int g = 0; g < lead; g++) {
             leadAt += (counts[first + g] & 0xFF) * stride;
@@ -188,7 +209,8 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
     private void offer(float[][] q, int[] qn, int i, TopK top, Assignment.Workspace scratch) {
         double bound = top.bound();
         double total = 0;
-        int at = starts[i];
+        float[] data = chunks[starts[i] >>> CHUNK_BITS];
+        int at = starts[i] & IN_CHUNK;
         int first = i * groups.length;
         for (int g = 0; g < groups.length; g++) {
             int m = counts[first + g] & 0xFF;
@@ -224,7 +246,8 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
         long[] keys = new long[size];
         for (int i = 0; i < size; i++) {
             double lower = 0;
-            int at = starts[i];
+            float[] data = chunks[starts[i] >>> CHUNK_BITS];
+            int at = starts[i] & IN_CHUNK;
             int first = i * groups.length;
             for (int g = 0; g < groups.length; g++) {
                 int m = counts[first + g] & 0xFF;

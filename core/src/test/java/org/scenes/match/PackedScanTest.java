@@ -3,6 +3,7 @@ package org.scenes.match;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -140,8 +141,10 @@ class PackedScanTest {
             }
         }
         assertEquals(bytesPerObject / 4, metric.stride());
-        // the floats, one start per scene (and one more), 9 weighted groups' counts per scene
-        assertEquals(4 * floats + 4L * (stored.size() + 1) + 9L * stored.size(), packed.bytes());
+        // the floats (chunks end unused where the next scene did not fit: a few hundred bytes),
+        // one start and 9 weighted groups' counts per scene
+        long exact = 4 * floats + 13L * stored.size();
+        assertTrue(packed.bytes() >= exact && packed.bytes() < exact + 2000, packed.bytes() + " bytes, " + exact + " without gaps");
     }
 
     private static void check(Map<String, String> options, ObjectSetMetric.Space space, double cycles) {
