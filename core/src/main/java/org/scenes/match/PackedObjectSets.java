@@ -105,10 +105,6 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
         return 4 * floats + 4L * starts.length + counts.length;
     }
 
-    int size() {
-        return size;
-    }
-
     @Override
     public void scan(Scene query, TopK top) {
         float[][] encoded = metric.encode(query, false).groups();
