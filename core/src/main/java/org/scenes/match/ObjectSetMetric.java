@@ -119,11 +119,14 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     // teammates, opponents, unknown players; each takes the weight of its object class
     static final int GROUPS = 10;
     private static final int[] CLASS_OF_GROUP = {0, 1, 1, 1, 2, 3, 4, 5, 6, 7};
+    private static final int PLAYERS = 6;
 
-    private static final int STRIDE = 4;
-
-    /** A scene as packed numbers: per group (a, b, weighted row, penalty) per object, nearest first. */
-    public record Encoded(double[][] groups, Encoded previous, int previousAction) {
+    /**
+     * A scene as packed numbers: per group, per object nearest first, {@link #stride()} 32-bit
+     * floats: a and b; the penalty unless it follows from them (see {@link #penalty}); and,
+     * with a row weight, the weighted row.
+     */
+    public record Encoded(float[][] groups, Encoded previous, int previousAction) {
     }
 
     private final Settings settings;
@@ -131,11 +134,28 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     // read on every pair: plain fields rather than record accessors and enum compares
     private final boolean polar;
     private final boolean greedy;
+    private final boolean rows;
+    private final int stride;
+    /** Where the penalty and the weighted row are within an object's floats; -1 when not stored. */
+    private final int penaltyAt;
+    private final int rowAt;
+    private final boolean cell;
+    private final double penaltyTimesScale;
+    // scratch of the Encoded path; a metric instance serves one thread at a time
+    private Assignment.Workspace workspace;
 
     public ObjectSetMetric(Settings settings) {
         this.settings = settings;
         polar = settings.space() == Space.POLAR;
         greedy = settings.matching() == Matching.GREEDY;
+        rows = settings.rowWeight() > 0;
+        cell = settings.space() == Space.CELL;
+        // the penalty is a function of the stored position when that holds the distance itself
+        boolean derived = cell || settings.space() == Space.CARTESIAN && !settings.logDistance();
+        penaltyAt = derived ? -1 : 2;
+        rowAt = rows ? (derived ? 2 : 3) : -1;
+        stride = 2 + (derived ? 0 : 1) + (rows ? 1 : 0);
+        penaltyTimesScale = settings.penalty() * settings.penaltyScale();
         double[] classWeights = settings.weights().toArray();
         for (int group = 0; group < GROUPS; group++) {
             groupWeight[group] = classWeights[CLASS_OF_GROUP[group]];
@@ -144,6 +164,19 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
 
     public Settings settings() {
         return settings;
+    }
+
+    /** Floats per object in the encoded and packed forms: 2 to 4 (see {@link Encoded}). */
+    int stride() {
+        return stride;
+    }
+
+    boolean greedy() {
+        return greedy;
+    }
+
+    double groupWeight(int group) {
+        return groupWeight[group];
     }
 
     /**
@@ -181,36 +214,64 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         return encode(scene, true);
     }
 
-    private Encoded encode(Scene scene, boolean withMemory) {
+    /** One object in the configured space, as stored, and the distance it is sorted by. */
+    private record Placed(double distance, float a, float b, float penalty, float row) {
+    }
+
+    Encoded encode(Scene scene, boolean withMemory) {
         if (scene == null) {
-            return new Encoded(new double[GROUPS][0], null, -1);
+            return new Encoded(new float[GROUPS][0], null, -1);
         }
-        List<List<double[]>> groups = new ArrayList<>(GROUPS);
+        List<List<Placed>> groups = new ArrayList<>(GROUPS);
         for (int group = 0; group < GROUPS; group++) {
             groups.add(new ArrayList<>());
         }
         for (SeenObject object : scene.objects()) {
             int group = groupOf(object);
-            if (group >= 0 && groupWeight[group] > 0) {
+            if (groupWeight[group] > 0) {
                 groups.get(group).add(place(object));
             }
-            if (object.kind() == ObjectKind.PLAYER && groupWeight[6] > 0) {
-                groups.get(6).add(place(object));
+            if (object.kind() == ObjectKind.PLAYER && groupWeight[PLAYERS] > 0) {
+                groups.get(PLAYERS).add(place(object));
             }
         }
-        double[][] packed = new double[GROUPS][];
+        float[][] packed = new float[GROUPS][];
         for (int group = 0; group < GROUPS; group++) {
-            List<double[]> points = groups.get(group);
-            points.sort(Comparator.comparingDouble((double[] point) -> point[STRIDE]));
-            packed[group] = new double[points.size() * STRIDE];
-            for (int i = 0; i < points.size(); i++) {
-                System.arraycopy(points.get(i), 0, packed[group], i * STRIDE, STRIDE);
+            List<Placed> objects = groups.get(group);
+            objects.sort(Comparator.comparingDouble(Placed::distance));
+            float[] values = new float[objects.size() * stride];
+            for (int i = 0; i < objects.size(); i++) {
+                Placed object = objects.get(i);
+                int at = i * stride;
+                values[at] = object.a();
+                values[at + 1] = object.b();
+                if (penaltyAt >= 0) {
+                    values[at + penaltyAt] = object.penalty();
+                }
+                if (rows) {
+                    values[at + rowAt] = object.row();
+                }
             }
+            packed[group] = values;
         }
         boolean remember = withMemory && (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0);
         Encoded previous = remember && settings.memoryWeight() > 0 ? encode(scene.previous(), false) : null;
         int previousAction = remember && scene.previous() != null ? actionClass(scene.previous()) : -1;
         return new Encoded(packed, previous, previousAction);
+    }
+
+    /** Objects per group as {@link #encode} stores them, without placing them. */
+    void count(Scene scene, int[] counts) {
+        java.util.Arrays.fill(counts, 0);
+        for (SeenObject object : scene.objects()) {
+            int group = groupOf(object);
+            if (groupWeight[group] > 0) {
+                counts[group]++;
+            }
+            if (object.kind() == ObjectKind.PLAYER && groupWeight[PLAYERS] > 0) {
+                counts[PLAYERS]++;
+            }
+        }
     }
 
     /**
@@ -235,8 +296,8 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         };
     }
 
-    /** (a, b, weighted row, penalty, sort key) of one object in the configured space. */
-    private double[] place(SeenObject object) {
+    /** (a, b, penalty, weighted row) of one object in the configured space, rounded to floats. */
+    private Placed place(SeenObject object) {
         double r = object.distance();
         double direction = Double.isNaN(object.direction()) ? 0 : object.direction();
         if (settings.projectCycles() != 0) {
@@ -272,11 +333,14 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         }
         double l = settings.penaltyScale();
         double penalty = settings.penalty() * l / (l + penaltyDistance);
-        return new double[] {a, b, settings.rowWeight() * object.cell().row(), penalty, r};
+        return new Placed(r, (float) a, (float) b, (float) penalty, (float) (settings.rowWeight() * object.cell().row()));
     }
 
     @Override
     public double distance(Encoded query, Encoded stored, double bound) {
+        if (workspace == null) {
+            workspace = new Assignment.Workspace();
+        }
         double total = 0;
         if (settings.memoryActionWeight() > 0 && query.previousAction() != stored.previousAction()) {
             total += settings.memoryActionWeight();
@@ -293,15 +357,17 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         return total;
     }
 
-    private static final Encoded EMPTY = new Encoded(new double[GROUPS][0], null, -1);
+    private static final Encoded EMPTY = new Encoded(new float[GROUPS][0], null, -1);
 
     private double groupsDistance(Encoded query, Encoded stored, double total, double bound, double scale) {
         for (int group = 0; group < GROUPS; group++) {
-            double weight = groupWeight[group];
-            if (weight == 0) {
+            if (groupWeight[group] == 0) {
                 continue;
             }
-            total += scale * weight * groupDistance(query.groups()[group], stored.groups()[group]);
+            double weight = scale * groupWeight[group];
+            float[] x = query.groups()[group];
+            float[] y = stored.groups()[group];
+            total += weight * groupDistance(x, 0, x.length / stride, y, 0, y.length / stride, total, weight, bound, workspace);
             if (total > bound) {
                 return total;
             }
@@ -309,215 +375,145 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         return total;
     }
 
-    private double pairCost(double[] x, int i, double[] y, int j) {
-        double da = x[i] - y[j];
-        double db = x[i + 1] - y[j + 1];
-        double rows = Math.abs(x[i + 2] - y[j + 2]);
-        return rows + (polar ? Math.abs(da) + Math.abs(db) : Math.sqrt(da * da + db * db));
-    }
-
-    private double groupDistance(double[] x, double[] y) {
-        return groupDistance(x, 0, x.length / STRIDE, y, 0, y.length / STRIDE, 0, 1, Double.POSITIVE_INFINITY);
+    /**
+     * Cost of pairing the objects at x[i] and y[j]. The straight-line distance is computed in
+     * single precision, as precise as the stored floats and much faster to take the root of;
+     * sums are in double.
+     */
+    double pairCost(float[] x, int i, float[] y, int j) {
+        double cost;
+        if (polar) {
+            cost = Math.abs((double) x[i] - y[j]) + Math.abs((double) x[i + 1] - y[j + 1]);
+        } else {
+            float da = x[i] - y[j];
+            float db = x[i + 1] - y[j + 1];
+            cost = (float) Math.sqrt(da * da + db * db);
+        }
+        return rows ? Math.abs((double) x[i + rowAt] - y[j + rowAt]) + cost : cost;
     }
 
     /**
-     * Distance between n objects of x from offset xs and m objects of y from offset ys. For
-     * optimal matching, when a lower bound of the assignment (the larger of the sums of row and
-     * of column minima of the cost matrix) already makes {@code before + weight * cost} exceed
-     * {@code bound}, that bound is returned without solving the assignment: the caller then
-     * computes the same sum, above the bound, and drops the scene as the exact cost would.
+     * The penalty of the object at x[i]: P L / (L + d). Stored as a float where d is the
+     * distance before log or weighting; in cartesian space without log-distance d is the
+     * stored position's distance from the observer ({@link #radial}, single precision), in
+     * cell space its row, so there it is computed from the position and takes no room.
      */
-    private double groupDistance(double[] x, int xs, int n, double[] y, int ys, int m, double before, double weight, double bound) {
+    double penalty(float[] x, int i) {
+        if (penaltyAt >= 0) {
+            return x[i + penaltyAt];
+        }
+        return penaltyAt(radial(x, i));
+    }
+
+    /** True when {@link #penalty} is {@link #penaltyAt} of {@link #radial}. */
+    boolean penaltyFollowsRadial() {
+        return penaltyAt < 0;
+    }
+
+    double penaltyAt(double distance) {
+        return penaltyTimesScale / (settings.penaltyScale() + distance);
+    }
+
+    /**
+     * Distance between n objects of x from offset xs and m objects of y from offset ys, the one
+     * computation behind every path (encoded, packed, scene). Once {@code before + weight * d}
+     * is known to exceed {@code bound} for some d not above the distance, d is returned instead:
+     * the caller then computes that same sum, above the bound, and drops the scene as the exact
+     * distance would.
+     */
+    double groupDistance(float[] x, int xs, int n, float[] y, int ys, int m, double before, double weight,
+                         double bound, Assignment.Workspace scratch) {
         if (n == 0 && m == 0) {
             return 0;
         }
-        if (greedy || n <= 1 && m <= 1) {
-            double total = 0;
-            int paired = Math.min(n, m);
-            for (int i = 0; i < paired; i++) {
-                double cost = pairCost(x, xs + i * STRIDE, y, ys + i * STRIDE);
-                if (!greedy) {
-                    cost = Math.min(cost, x[xs + i * STRIDE + 3] + y[ys + i * STRIDE + 3]);
-                }
-                total += cost;
-            }
-            for (int i = paired; i < n; i++) {
-                total += x[xs + i * STRIDE + 3];
-            }
-            for (int j = paired; j < m; j++) {
-                total += y[ys + j * STRIDE + 3];
-            }
-            return total;
+        if (greedy) {
+            return greedyDistance(x, xs, n, y, ys, m, before, weight, bound);
+        }
+        if (n <= 1 && m <= 1) {
+            return singleDistance(x, xs, n, y, ys, m);
         }
         // pad the smaller side with "missing" entries that cost the other object's penalty
         int size = Math.max(n, m);
-        double[] cost = new double[size * size];
+        double[] cost = scratch.cost(size);
+        double[] xp = scratch.rowPenalties;
+        double[] yp = scratch.columnPenalties;
+        for (int i = 0; i < n; i++) {
+            xp[i] = penalty(x, xs + i * stride);
+        }
+        for (int j = 0; j < m; j++) {
+            yp[j] = penalty(y, ys + j * stride);
+        }
         for (int i = 0; i < size; i++) {
+            int row = i * size;
+            int at = xs + i * stride;
             for (int j = 0; j < size; j++) {
+                int to = ys + j * stride;
                 double value;
                 if (i < n && j < m) {
-                    value = Math.min(pairCost(x, xs + i * STRIDE, y, ys + j * STRIDE), x[xs + i * STRIDE + 3] + y[ys + j * STRIDE + 3]);
+                    value = Math.min(pairCost(x, at, y, to), xp[i] + yp[j]);
                 } else if (i < n) {
-                    value = x[xs + i * STRIDE + 3];
+                    value = xp[i];
                 } else if (j < m) {
-                    value = y[ys + j * STRIDE + 3];
+                    value = yp[j];
                 } else {
                     value = 0;
                 }
-                cost[i * size + j] = value;
+                cost[row + j] = value;
             }
         }
-        if (bound < Double.POSITIVE_INFINITY) {
-            double lower = Math.max(rowMinima(cost, size), columnMinima(cost, size));
-            // shaved so rounding in the solver's own sum can never put the true cost below it
-            lower *= 1 - 1e-9;
-            if (before + weight * lower > bound) {
-                return lower;
+        return Assignment.minimumCost(scratch, size, before, weight, bound);
+    }
+
+    /** Both sides in order of distance, paired in order; the longer side's rest pays penalties. */
+    private double greedyDistance(float[] x, int xs, int n, float[] y, int ys, int m, double before, double weight, double bound) {
+        double total = 0;
+        int paired = Math.min(n, m);
+        for (int k = 0; k < paired; k++) {
+            total += pairCost(x, xs + k * stride, y, ys + k * stride);
+            // the remaining terms are not negative: the sum can only grow
+            if (before + weight * total > bound) {
+                return total;
             }
         }
-        return Assignment.minimumCost(cost, size);
+        for (int k = paired; k < n; k++) {
+            total += penalty(x, xs + k * stride);
+        }
+        for (int k = paired; k < m; k++) {
+            total += penalty(y, ys + k * stride);
+        }
+        return total;
+    }
+
+    /** Optimal matching of at most one object per side: a pair (at most both penalties) or a penalty. */
+    double singleDistance(float[] x, int xs, int n, float[] y, int ys, int m) {
+        if (n == 1 && m == 1) {
+            return Math.min(pairCost(x, xs, y, ys), penalty(x, xs) + penalty(y, ys));
+        }
+        return n == 1 ? penalty(x, xs) : m == 1 ? penalty(y, ys) : 0;
     }
 
     /**
-     * A lower bound of the optimal group distance without building the cost matrix: each object
-     * of the larger side costs at least its cheapest option (a partner or going unmatched).
+     * A coordinate s of an object such that a pair's cost is at least |s(x) - s(y)| (up to
+     * rounding, relatively less than 1e-6 of the coordinates): the radius in cartesian space (triangle inequality), a (the weighted distance)
+     * in polar space, the row in cell space. Objects sorted by distance are (nearly) sorted by it.
      */
-    private double lowerBound(double[] x, int n, double[] y, int ys, int m) {
-        if (n <= 1 && m <= 1) {
-            return groupDistance(x, 0, n, y, ys, m, 0, 1, Double.POSITIVE_INFINITY);
+    double radial(float[] x, int i) {
+        if (polar) {
+            return x[i];
         }
-        double sum = 0;
-        if (n >= m) {
-            for (int i = 0; i < n; i++) {
-                double min = x[i * STRIDE + 3];
-                for (int j = 0; j < m; j++) {
-                    min = Math.min(min, pairCost(x, i * STRIDE, y, ys + j * STRIDE));
-                }
-                sum += min;
-            }
-        } else {
-            for (int j = 0; j < m; j++) {
-                double min = y[ys + j * STRIDE + 3];
-                for (int i = 0; i < n; i++) {
-                    min = Math.min(min, pairCost(x, i * STRIDE, y, ys + j * STRIDE));
-                }
-                sum += min;
-            }
-        }
-        return sum;
-    }
-
-    private static double rowMinima(double[] cost, int size) {
-        double sum = 0;
-        for (int i = 0; i < size; i++) {
-            double min = Double.POSITIVE_INFINITY;
-            for (int j = 0; j < size; j++) {
-                min = Math.min(min, cost[i * size + j]);
-            }
-            sum += min;
-        }
-        return sum;
-    }
-
-    private static double columnMinima(double[] cost, int size) {
-        double sum = 0;
-        for (int j = 0; j < size; j++) {
-            double min = Double.POSITIVE_INFINITY;
-            for (int i = 0; i < size; i++) {
-                min = Math.min(min, cost[i * size + j]);
-            }
-            sum += min;
-        }
-        return sum;
+        return cell ? x[i + 1] : (float) Math.sqrt(x[i] * x[i] + x[i + 1] * x[i + 1]);
     }
 
     /**
-     * The knowledge base as one flat array per group (objects of all scenes back to back, each
-     * scene's nearest first) and per group the offset where each scene starts: no object per
-     * scene or per object. Not for memory terms, which compare previous scenes too.
+     * The knowledge base in one flat float array, scene after scene, each scene's groups in
+     * order, each group's objects nearest first; per scene its start and its objects per group:
+     * no object per scene or per object. Not for memory terms, which compare previous scenes too.
      */
     @Override
     public PackedScenes pack(List<Scene> scenes) {
         if (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0) {
             return null;
         }
-        int n = scenes.size();
-        int[][] starts = new int[GROUPS][n + 1];
-        double[][][] perScene = new double[n][][];
-        for (int i = 0; i < n; i++) {
-            perScene[i] = encode(scenes.get(i), false).groups();
-            for (int group = 0; group < GROUPS; group++) {
-                starts[group][i + 1] = starts[group][i] + perScene[i][group].length;
-            }
-        }
-        double[][] data = new double[GROUPS][];
-        for (int group = 0; group < GROUPS; group++) {
-            data[group] = new double[starts[group][n]];
-            for (int i = 0; i < n; i++) {
-                System.arraycopy(perScene[i][group], 0, data[group], starts[group][i], perScene[i][group].length);
-            }
-        }
-        return new Packed(data, starts, n);
-    }
-
-    /** Scans like {@link #distance(Encoded, Encoded, double)}: same group order, same sums, same abandoning. */
-    private final class Packed implements PackedScenes {
-        private final double[][] data;
-        private final int[][] starts;
-        private final int size;
-        private final int[] activeGroups;
-
-        Packed(double[][] data, int[][] starts, int size) {
-            this.data = data;
-            this.starts = starts;
-            this.size = size;
-            activeGroups = java.util.stream.IntStream.range(0, GROUPS).filter(g -> groupWeight[g] != 0).toArray();
-        }
-
-        @Override
-        public void scan(Scene query, TopK top) {
-            double[][] q = encode(query, false).groups();
-            if (greedy) {
-                for (int i = 0; i < size; i++) {
-                    offer(q, i, top);
-                }
-                return;
-            }
-            // optimal: scenes in order of a cheap lower bound, stopping once it exceeds the k-th best
-            double[] lower = new double[size];
-            Integer[] order = new Integer[size];
-            for (int i = 0; i < size; i++) {
-                double sum = 0;
-                for (int group : activeGroups) {
-                    int start = starts[group][i];
-                    sum += groupWeight[group] * lowerBound(q[group], q[group].length / STRIDE, data[group], start,
-                            (starts[group][i + 1] - start) / STRIDE);
-                }
-                lower[i] = sum * (1 - 1e-9); // shaved: the exact sums round differently
-                order[i] = i;
-            }
-            java.util.Arrays.sort(order, (a, b) -> Double.compare(lower[a], lower[b]));
-            for (int i : order) {
-                if (lower[i] > top.bound()) {
-                    return;
-                }
-                offer(q, i, top);
-            }
-        }
-
-        private void offer(double[][] q, int i, TopK top) {
-            double bound = top.bound();
-            double total = 0;
-            for (int group : activeGroups) {
-                int start = starts[group][i];
-                int count = (starts[group][i + 1] - start) / STRIDE;
-                double weight = groupWeight[group];
-                total += weight * groupDistance(q[group], 0, q[group].length / STRIDE, data[group], start, count, total, weight, bound);
-                if (total > bound) {
-                    return;
-                }
-            }
-            top.offer(total, i); // NaN too, which the heap ranks farthest
-        }
+        return PackedObjectSets.pack(this, scenes);
     }
 }

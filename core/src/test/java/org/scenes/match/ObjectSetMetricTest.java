@@ -83,7 +83,7 @@ class ObjectSetMetricTest {
         Scene empty = TestScenes.scene(1, null);
         double near = metric.distance(empty, TestScenes.scene(2, null, TestScenes.ball(1, 0)));
         double far = metric.distance(empty, TestScenes.scene(2, null, TestScenes.ball(50, 0)));
-        assertEquals(10 * 10 / 11.0, near, 1e-9);
+        assertEquals(10 * 10 / 11.0, near, 1e-5, "penalties are stored as 32-bit floats");
         assertTrue(near > far);
     }
 
@@ -92,7 +92,7 @@ class ObjectSetMetricTest {
         Scene teammate = TestScenes.scene(1, null, TestScenes.player(Relation.TEAMMATE, 5, 0));
         Scene opponent = TestScenes.scene(2, null, TestScenes.player(Relation.OPPONENT, 5, 0));
         ObjectSetMetric byTeam = metric(Map.of(), ObjectSetMetric.Space.CARTESIAN);
-        assertEquals(2 * 10 * 10 / 15.0, byTeam.distance(teammate, opponent), 1e-9);
+        assertEquals(2 * 10 * 10 / 15.0, byTeam.distance(teammate, opponent), 1e-5, "penalties are 32-bit floats");
         ObjectSetMetric allPlayers = new ObjectSetMetric(ObjectSetMetric.settings(
                 PluginConfig.DEFAULT.withObjectWeights(ObjectWeights.parse("players=1")), ObjectSetMetric.Space.CARTESIAN, 0));
         assertEquals(0, allPlayers.distance(teammate, opponent), 1e-12);

@@ -82,21 +82,21 @@ final class BenchSets {
 
     /**
      * A fresh-metric supplier for a benchmark name: a metric plugin's name, {@code continuous-optimal}
-     * ({@code continuous} with {@code matching=optimal}), {@code ball-goal-scan} ({@code ball-goal}
-     * with {@code index=false}: the packed scan, where plain {@code ball-goal} searches its index)
-     * or {@code script-ball-goal} (the shipped example script).
+     * ({@code continuous} with {@code matching=optimal}), {@code script-ball-goal} (the shipped
+     * example script), and as in {@link MatchBench} {@code ball-goal} is its packed scan
+     * ({@code index=false}) and {@code ball-goal-index} its exact index (the plugin's default).
      */
     static Supplier<SceneMetric> metric(String name) {
         PluginRegistry registry = PluginRegistry.load();
         String spec = switch (name) {
             case "script-ball-goal" -> "script:" + Path.of(System.getProperty("scenes.examples", "../examples/scripts"), "ball-goal.groovy");
             case "continuous-optimal" -> "continuous";
-            case "ball-goal-scan" -> "ball-goal";
+            case "ball-goal-index" -> "ball-goal";
             default -> name;
         };
         PluginConfig config = switch (name) {
             case "continuous-optimal" -> PluginConfig.DEFAULT.withOptions(Map.of("matching", "optimal"));
-            case "ball-goal-scan" -> PluginConfig.DEFAULT.withOptions(Map.of("index", "false"));
+            case "ball-goal" -> PluginConfig.DEFAULT.withOptions(Map.of("index", "false"));
             default -> PluginConfig.DEFAULT;
         };
         return () -> registry.metric(spec, config);

@@ -24,7 +24,9 @@ import org.scenes.scene.Scene;
  * ({@link Recognizer#nearest}) and the selector's choice among them ({@code first-valid} for
  * k = 1, {@code vote} for k = 5 and 15, the selectors plugin), sampled per call so p50 and p99
  * are reported. Knowledge bases ({@code knowledge}): {@code krislet}, the recorded Krislet game 1
- * without Carleton_2 (Carleton_2's scenes are the queries), or that many synthetic scenes
+ * without Carleton_2 (Carleton_2's scenes are the queries), or that many synthetic scenes. Metrics
+ * named as in {@link BenchSets#metric}: {@code ball-goal-index} is what the agent uses,
+ * {@code ball-goal} the packed scan without the index
  * ({@link BenchSets#synthetic}, synthetic queries). Each fork builds its knowledge base once
  * (printed as a {@code [setup]} line with the heap in use).
  */
@@ -42,7 +44,7 @@ public class DecisionBench {
     @Param({"1", "5", "15"})
     public int k;
 
-    @Param({"ball-goal", "continuous"})
+    @Param({"ball-goal-index", "ball-goal", "continuous"})
     public String metric;
 
     private Recognizer recognizer;

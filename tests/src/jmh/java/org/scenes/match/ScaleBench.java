@@ -22,9 +22,9 @@ import org.scenes.scene.Scene;
  * ({@code scan100k}) or 10^6 ({@code scan1m}) scenes made by {@link BenchSets#synthetic}; queries
  * are 256 other synthetic scenes, one per operation, in turn. Scores are scenes per second
  * (divide by 10 for scenes per 100 ms cycle). Metrics as in {@link MatchBench}:
- * every built-in one, {@code continuous-optimal} and {@code script-ball-goal}, and
- * {@code ball-goal-scan}: {@code ball-goal} searches an exact index, so its score is the
- * knowledge-base size over the query time, not scenes actually compared; this one scans.
+ * every built-in one, {@code continuous-optimal}, {@code script-ball-goal}, {@code ball-goal} as
+ * its packed scan and {@code ball-goal-index} with its exact index, whose score is the
+ * knowledge-base size over the query time, not scenes actually compared.
  *
  * <p>One method per size because {@code OperationsPerInvocation} is a constant; every metric runs
  * at every size (the example script has the encoded form, so it needs no decoded scenes). Each
@@ -64,7 +64,7 @@ public class ScaleBench {
     }
 
     public static class Knowledge10k extends Knowledge {
-        @Param({"ball-goal", "ball-goal-scan", "continuous", "continuous-optimal", "cell", "projection", "random", "script-ball-goal"})
+        @Param({"ball-goal", "ball-goal-index", "continuous", "continuous-optimal", "cell", "projection", "random", "script-ball-goal"})
         public String metric;
 
         @Override
@@ -79,7 +79,7 @@ public class ScaleBench {
     }
 
     public static class Knowledge100k extends Knowledge {
-        @Param({"ball-goal", "ball-goal-scan", "continuous", "continuous-optimal", "cell", "projection", "random", "script-ball-goal"})
+        @Param({"ball-goal", "ball-goal-index", "continuous", "continuous-optimal", "cell", "projection", "random", "script-ball-goal"})
         public String metric;
 
         @Override
@@ -94,7 +94,7 @@ public class ScaleBench {
     }
 
     public static class Knowledge1m extends Knowledge {
-        @Param({"ball-goal", "ball-goal-scan", "continuous", "continuous-optimal", "cell", "projection", "random", "script-ball-goal"})
+        @Param({"ball-goal", "ball-goal-index", "continuous", "continuous-optimal", "cell", "projection", "random", "script-ball-goal"})
         public String metric;
 
         @Override
