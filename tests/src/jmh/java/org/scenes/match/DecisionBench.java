@@ -35,7 +35,7 @@ import org.scenes.scene.Scene;
 @OutputTimeUnit(TimeUnit.MICROSECONDS)
 @Warmup(iterations = 3, time = 2)
 @Measurement(iterations = 5, time = 2)
-// 10^6 scenes packed for continuous peak at about 3 GB (ScaleBench)
+// room for packing 10^6 scenes for continuous (see ScaleBench)
 @Fork(value = 1, jvmArgsAppend = "-Xmx6g")
 public class DecisionBench {
     @Param({"krislet", "10000", "100000", "1000000"})

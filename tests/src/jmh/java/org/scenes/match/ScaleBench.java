@@ -30,9 +30,8 @@ import org.scenes.scene.Scene;
  * at every size (the example script has the encoded form, so it needs no decoded scenes). Each
  * fork generates its knowledge base once (about 20 to 40 s for 10^6 scenes on this machine,
  * printed as a {@code [setup]} line with the heap in use). The compact knowledge
- * base of 10^6 scenes takes about 280 MB, but packing it for {@code continuous}, {@code cell}
- * and {@code projection} holds every scene's encoded arrays and the packed copy at once, which
- * does not fit in 2 GB: {@code scan1m} forks get 6 GB.
+ * base of 10^6 scenes takes about 290 MB and about 530 MB once packed for {@code continuous};
+ * packing did not fit in 2 GB before it was chunked, so {@code scan1m} forks get 6 GB.
  */
 @BenchmarkMode(Mode.Throughput)
 @OutputTimeUnit(TimeUnit.SECONDS)
@@ -120,7 +119,7 @@ public class ScaleBench {
         return knowledge.scan();
     }
 
-    /** Packing 10^6 scenes for the object-set metrics peaks at about 3 GB (see the class comment). */
+    /** Room for packing 10^6 scenes for the object-set metrics (see the class comment). */
     @Benchmark
     @OperationsPerInvocation(1_000_000)
     @Fork(value = 1, jvmArgsAppend = "-Xmx6g")
