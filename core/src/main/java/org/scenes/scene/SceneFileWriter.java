@@ -162,7 +162,9 @@ public final class SceneFileWriter implements AutoCloseable {
         if (Double.isNaN(value)) {
             return;
         }
-        if (value == Math.rint(value) && Math.abs(value) < 1e15) {
+        // whole numbers without ".0"; -0 keeps its sign, which the server's "-0" carries, as "-0.0"
+        if (value == Math.rint(value) && Math.abs(value) < 1e15
+                && Double.doubleToRawLongBits(value) != Double.doubleToRawLongBits(-0.0)) {
             json.writeNumberField(field, (long) value);
         } else {
             json.writeNumberField(field, value);

@@ -37,6 +37,22 @@ class SceneFileRoundTripTest {
     }
 
     @Test
+    void negativeZeroKeepsItsSign() throws IOException {
+        SeenObject ball = new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, 3, -0.0,
+                -0.0, 0.0, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(3, -0.0));
+        Scene scene = new Scene(1, SceneFixtures.OBSERVER, List.of(ball), List.of(Action.turn(-0.0)));
+        Path file = dir.resolve("zero.json");
+        SceneFileWriter.write(file, new SceneFile(header, List.of(scene)));
+
+        SeenObject read = SceneFileReader.read(file).scenes().get(0).objects().get(0);
+
+        assertEquals(Double.doubleToRawLongBits(-0.0), Double.doubleToRawLongBits(read.direction()));
+        assertEquals(Double.doubleToRawLongBits(-0.0), Double.doubleToRawLongBits(read.distanceChange()));
+        assertEquals(Double.doubleToRawLongBits(0.0), Double.doubleToRawLongBits(read.directionChange()));
+        assertEquals(List.of(scene), SceneFileReader.read(file).scenes());
+    }
+
+    @Test
     void roundTripCoversEveryKindRelationAndActionType() {
         List<Scene> scenes = SceneFixtures.everyKind(grid);
         for (ObjectKind kind : ObjectKind.values()) {
