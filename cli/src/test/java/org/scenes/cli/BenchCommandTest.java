@@ -48,6 +48,20 @@ class BenchCommandTest {
     }
 
     @Test
+    void byDefaultEveryBuiltInMetricWithBallGoalIndexAndScanApart() {
+        assertEquals(0, run("bench", "--time", "0.02", "--synthetic", 2000), cli.err());
+        List<String> labels = new ArrayList<>();
+        for (String line : cli.out().split("\n")) {
+            if (line.matches(".*\\s[0-9,]+$")) {
+                labels.add(line.substring(0, 24).trim());
+            }
+        }
+        assertEquals(List.of("ball-goal (index)", "ball-goal (scan)", "continuous", "cell", "projection", "continuous (optimal)"),
+                labels, cli.out());
+        assertTrue(cli.out().contains("over decision time"), cli.out());
+    }
+
+    @Test
     void knowledgeBaseFromFilesOrSyntheticExactlyOne() {
         assertEquals(ExitCodes.USAGE, run("bench", "--time", "0.05"));
         assertTrue(cli.err().contains("--synthetic"), cli.err());
