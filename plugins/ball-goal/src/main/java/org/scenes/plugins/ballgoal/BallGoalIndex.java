@@ -273,27 +273,22 @@ final class BallGoalIndex {
             int cells = cellColumn[object].length;
             base = new double[cells];
             cap = new double[cells];
-            boolean present = q[offset] != 0;
-            double missing = metric.missing();
             query = q[offset + 3];
             angle = metric.anglePerDegree();
             if (dropped[object]) {
                 base[0] = Double.POSITIVE_INFINITY;
                 return;
             }
-            int absent = cells - 1;
-            for (int c = 0; c < absent; c++) {
-                if (present) {
-                    base[c] = metric.columnWeight() * Math.abs(q[offset + 1] - cellColumn[object][c])
-                            + metric.rowWeight() * Math.abs(q[offset + 2] - cellRow[object][c]);
-                    cap[c] = 2 * missing;
-                } else {
-                    base[c] = Double.POSITIVE_INFINITY;
-                    cap[c] = missing;
-                }
+            PackedBallGoal.cellTables(metric, q, offset, known(cellColumn[object]), known(cellRow[object]), base, cap);
+        }
+
+        /** The coordinates of the known cells, without the last slot, which stands for absent. */
+        private static double[] known(int[] coordinates) {
+            double[] values = new double[coordinates.length - 1];
+            for (int i = 0; i < values.length; i++) {
+                values[i] = coordinates[i];
             }
-            base[absent] = Double.POSITIVE_INFINITY;
-            cap[absent] = present ? missing : 0;
+            return values;
         }
 
         double cost(int cell, double direction) {

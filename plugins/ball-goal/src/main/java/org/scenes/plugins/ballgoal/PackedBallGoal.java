@@ -184,16 +184,15 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
     }
 
     /**
-     * Fills the cell tables of one object for this query and returns its direction table. With
-     * the query's object present: cost {@code cw |dc| + rw |dr|} and cap 2M for a present cell,
-     * infinite cost and cap M for absent; with it absent: infinite cost, cap M or 0.
+     * The cell tables of one object for a query, shared by the scan and the index: for each of
+     * the {@code columns.length} known cells and then "absent", the cost before direction and
+     * the cap. With the query's object present: {@code cw |dc| + rw |dr|} and cap 2M for a
+     * present cell, infinite cost and cap M for absent; with it absent: infinite cost, cap M or 0.
      */
-    private double[] tables(double[] q, int object, double[] cellCost, double[] cap) {
-        int offset = 4 * object;
+    static void cellTables(BallGoalMetricProvider.BallGoalMetric metric, double[] q, int offset,
+                           double[] columns, double[] rows, double[] cellCost, double[] cap) {
         boolean present = q[offset] != 0;
         double missing = metric.missing();
-        double[] columns = cellColumn[object];
-        double[] rows = cellRow[object];
         int absent = columns.length;
         for (int cell = 0; cell < absent; cell++) {
             if (present) {
@@ -207,6 +206,17 @@ final class PackedBallGoal implements PackedMetric.PackedScenes {
         }
         cellCost[absent] = Double.POSITIVE_INFINITY;
         cap[absent] = present ? missing : 0;
+    }
+
+    /**
+     * Fills the cell tables of one object for this query and returns its direction table. With
+     * the query's object present: cost {@code cw |dc| + rw |dr|} and cap 2M for a present cell,
+     * infinite cost and cap M for absent; with it absent: infinite cost, cap M or 0.
+     */
+    private double[] tables(double[] q, int object, double[] cellCost, double[] cap) {
+        int offset = 4 * object;
+        boolean present = q[offset] != 0;
+        cellTables(metric, q, offset, cellColumn[object], cellRow[object], cellCost, cap);
         double[] values = directions[object];
         double[] directionCost = new double[values.length];
         for (int d = 0; d < values.length; d++) {
