@@ -5,7 +5,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
@@ -20,8 +19,6 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import org.scenes.convert.SceneConverter;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.Grid;
 import org.scenes.scene.Relation;
 import org.scenes.scene.Scene;
@@ -118,20 +115,7 @@ public class MatchBench {
 
         @Setup
         public void build(Data data) {
-            PluginRegistry registry = PluginRegistry.load();
-            String spec = switch (metric) {
-                case "script-ball-goal" -> "script:" + Path.of(System.getProperty("scenes.examples", "../examples/scripts"), "ball-goal.groovy");
-                case "continuous-optimal" -> "continuous";
-                case "ball-goal-index" -> "ball-goal";
-                default -> metric;
-            };
-            PluginConfig config = switch (metric) {
-                case "continuous-optimal" -> PluginConfig.DEFAULT.withOptions(Map.of("matching", "optimal"));
-                // the plain packed scan: with its index ball-goal visits few scenes, so the score would be no scan rate
-                case "ball-goal" -> PluginConfig.DEFAULT.withOptions(Map.of("index", "false"));
-                default -> PluginConfig.DEFAULT;
-            };
-            recognizer = new Recognizer(KnowledgeBase.of(Grid.DEFAULT, data.stored), () -> registry.metric(spec, config), 1);
+            recognizer = new Recognizer(KnowledgeBase.of(Grid.DEFAULT, data.stored), BenchSets.metric(metric), 1);
         }
     }
 
