@@ -7,6 +7,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Arrays;
 import org.scenes.files.Inputs;
+import org.scenes.proxylog.Direction;
 import org.scenes.proxylog.MessageEscapes;
 
 /**
@@ -16,9 +17,6 @@ import org.scenes.proxylog.MessageEscapes;
  * A line whose frame (time, direction) is broken is still returned, with {@link #problem()} set.
  */
 public final class LogReader implements AutoCloseable {
-    /** Who sent a message, when the log says. */
-    public enum Direction { CLIENT, SERVER, UNKNOWN }
-
     private final Path file;
     private final InputStream in;
     private final LogFormat format;
@@ -36,7 +34,7 @@ public final class LogReader implements AutoCloseable {
     private byte[] messageBuffer;
     private int messageOffset;
     private int messageLength;
-    private Direction direction = Direction.UNKNOWN;
+    private Direction direction;
     private double time = Double.NaN;
     private String problem;
     private byte[] clientPort;
@@ -142,6 +140,7 @@ public final class LogReader implements AutoCloseable {
         return new String(messageBuffer, messageOffset, messageLength, StandardCharsets.UTF_8);
     }
 
+    /** Which way the message travelled, or null when the log does not say (lsf) or its frame is broken. */
     public Direction direction() {
         return direction;
     }
@@ -175,7 +174,7 @@ public final class LogReader implements AutoCloseable {
 
     private boolean lsf() {
         setMessage(line, 0, lineLength);
-        direction = Direction.UNKNOWN;
+        direction = null;
         return true;
     }
 
@@ -189,10 +188,10 @@ public final class LogReader implements AutoCloseable {
         if (firstSpace <= 0 || !LogFormat.isDecimal(line, 0, firstSpace)) {
             return broken("expected '<seconds> <c2s|s2c> <message>'");
         }
-        if (LogFormat.startsWith(line, firstSpace + 1, directionEnd, "c2s") && directionEnd - firstSpace == 4) {
-            direction = Direction.CLIENT;
-        } else if (LogFormat.startsWith(line, firstSpace + 1, directionEnd, "s2c") && directionEnd - firstSpace == 4) {
-            direction = Direction.SERVER;
+        if (LogFormat.startsWith(line, firstSpace + 1, directionEnd, Direction.CLIENT_TO_SERVER.token()) && directionEnd - firstSpace == 4) {
+            direction = Direction.CLIENT_TO_SERVER;
+        } else if (LogFormat.startsWith(line, firstSpace + 1, directionEnd, Direction.SERVER_TO_CLIENT.token()) && directionEnd - firstSpace == 4) {
+            direction = Direction.SERVER_TO_CLIENT;
         } else {
             return broken("direction must be c2s or s2c");
         }
@@ -212,9 +211,9 @@ public final class LogReader implements AutoCloseable {
             return broken("expected '<time> <client->server|server->client> <port> <message>'");
         }
         if (LogFormat.startsWith(line, firstSpace + 1, secondSpace, "client->server")) {
-            direction = Direction.CLIENT;
+            direction = Direction.CLIENT_TO_SERVER;
         } else if (LogFormat.startsWith(line, firstSpace + 1, secondSpace, "server->client")) {
-            direction = Direction.SERVER;
+            direction = Direction.SERVER_TO_CLIENT;
         } else {
             return broken("direction must be client->server or server->client");
         }
@@ -233,7 +232,7 @@ public final class LogReader implements AutoCloseable {
 
     private boolean broken(String why) {
         problem = why;
-        direction = Direction.UNKNOWN;
+        direction = null;
         setMessage(line, 0, lineLength);
         return true;
     }

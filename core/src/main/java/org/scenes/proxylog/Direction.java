@@ -1,6 +1,6 @@
 package org.scenes.proxylog;
 
-/** Which way a logged datagram travelled through the proxy. */
+/** Which way a datagram travelled between a client and the server, as proxy logs and captures record it. */
 public enum Direction {
     CLIENT_TO_SERVER("c2s"),
     SERVER_TO_CLIENT("s2c");

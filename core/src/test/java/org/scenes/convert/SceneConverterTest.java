@@ -1,6 +1,7 @@
 package org.scenes.convert;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -14,6 +15,7 @@ import java.util.List;
 import java.util.zip.GZIPOutputStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.scenes.proxylog.Direction;
 import org.scenes.protocol.CommandType;
 import org.scenes.protocol.MessageParser;
 import org.scenes.protocol.See;
@@ -157,6 +159,14 @@ class SceneConverterTest {
     }
 
     @Test
+    void anLsfLogDoesNotSayWhichWayAMessageWent() throws IOException {
+        try (LogReader reader = LogReader.open(log("plain.lsf", INIT, REPLY))) {
+            assertTrue(reader.next());
+            assertNull(reader.direction());
+        }
+    }
+
+    @Test
     void theProxyFormatIsDetectedAndUnescaped() throws IOException {
         Path file = log("game.log", "#scenes-proxy-log 1", "# team Carleton unum 3 side l",
                 "0.000100 c2s (init Carleton (version 9))\\0\\0", "0.010000 s2c (init l 3 before_kick_off)",
@@ -166,10 +176,11 @@ class SceneConverterTest {
             assertEquals(LogFormat.PROXY, reader.format());
             assertTrue(reader.next());
             assertEquals("(init Carleton (version 9))", reader.text());
-            assertEquals(LogReader.Direction.CLIENT, reader.direction());
+            assertEquals(Direction.CLIENT_TO_SERVER, reader.direction());
             assertEquals(0.0001, reader.time(), 1e-9);
             assertEquals(3, reader.line());
             reader.next();
+            assertEquals(Direction.SERVER_TO_CLIENT, reader.direction());
             reader.next();
             reader.next();
             assertEquals("(say \"a\\bA\")", reader.text());

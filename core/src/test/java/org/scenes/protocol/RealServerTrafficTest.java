@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.TreeMap;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import org.scenes.proxylog.Direction;
 import org.scenes.convert.LogReader;
 
 /**
@@ -81,7 +82,7 @@ class RealServerTrafficTest {
                 Message message = parser.parse(reader.buffer(), reader.offset(), reader.length());
                 assertTrue(!(message instanceof Unknown), reader.text());
                 assertEquals(List.of(), message.leftovers(), reader.text());
-                assertEquals(reader.direction() == LogReader.Direction.CLIENT, message.fromClient(), reader.text());
+                assertEquals(reader.direction() == Direction.CLIENT_TO_SERVER, message.fromClient(), reader.text());
                 messages++;
             }
         }
