@@ -39,20 +39,21 @@ import org.scenes.scene.Scene;
 @Measurement(iterations = 5, time = 2)
 @Fork(value = 1, jvmArgsAppend = "-Xmx2g")
 public class ScaleBench {
-    /** A synthetic knowledge base of {@link #size()} scenes and a recognizer for one metric. */
+    /** A synthetic knowledge base of {@link #size()} scenes and a recognizer for one metric; one subclass per size. */
     @State(Scope.Benchmark)
     public abstract static class Knowledge {
+        @Param({"ball-goal", "ball-goal-index", "continuous", "continuous-optimal", "cell", "projection", "random", "script-ball-goal"})
+        public String metric;
+
         Recognizer recognizer;
         List<Scene> queries;
         int next;
 
         abstract int size();
 
-        abstract String metric();
-
         @Setup
         public void build() {
-            recognizer = BenchSets.recognizer(BenchSets.synthetic(size()), metric(), 1);
+            recognizer = BenchSets.recognizer(BenchSets.synthetic(size()), metric, 1);
             queries = BenchSets.syntheticQueries();
         }
 
@@ -63,47 +64,23 @@ public class ScaleBench {
     }
 
     public static class Knowledge10k extends Knowledge {
-        @Param({"ball-goal", "ball-goal-index", "continuous", "continuous-optimal", "cell", "projection", "random", "script-ball-goal"})
-        public String metric;
-
         @Override
         int size() {
             return 10_000;
         }
-
-        @Override
-        String metric() {
-            return metric;
-        }
     }
 
     public static class Knowledge100k extends Knowledge {
-        @Param({"ball-goal", "ball-goal-index", "continuous", "continuous-optimal", "cell", "projection", "random", "script-ball-goal"})
-        public String metric;
-
         @Override
         int size() {
             return 100_000;
         }
-
-        @Override
-        String metric() {
-            return metric;
-        }
     }
 
     public static class Knowledge1m extends Knowledge {
-        @Param({"ball-goal", "ball-goal-index", "continuous", "continuous-optimal", "cell", "projection", "random", "script-ball-goal"})
-        public String metric;
-
         @Override
         int size() {
             return 1_000_000;
-        }
-
-        @Override
-        String metric() {
-            return metric;
         }
     }
 
