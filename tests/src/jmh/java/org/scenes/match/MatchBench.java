@@ -93,10 +93,7 @@ public class MatchBench {
             }
             plainStored = stored.stream().map(PlainScene::of).toList();
             plainQueries = queries.stream().map(PlainScene::of).toList();
-            bandwidthData = new int[SCENES * 2];
-            for (int i = 0; i < bandwidthData.length; i++) {
-                bandwidthData[i] = i * 31;
-            }
+            bandwidthData = bandwidthData(SCENES);
         }
 
         int nextQuery() {
@@ -144,26 +141,29 @@ public class MatchBench {
     @Benchmark
     @OperationsPerInvocation(SCENES)
     public int plainReference(Data data) {
-        PlainScene query = data.plainQueries.get(data.nextQuery());
-        List<PlainScene> plainStored = data.plainStored;
-        double best = Double.POSITIVE_INFINITY;
-        int bestIndex = -1;
-        for (int i = 0; i < plainStored.size(); i++) {
-            double distance = query.distance(plainStored.get(i));
-            if (distance < best) {
-                best = distance;
-                bestIndex = i;
-            }
-        }
-        return bestIndex;
+        return data.plainQueries.get(data.nextQuery()).nearest(data.plainStored, 0, data.plainStored.size());
     }
 
     @Benchmark
     @OperationsPerInvocation(SCENES)
     public int memoryBandwidth(Data data) {
+        return sum(data.bandwidthData, 0, data.bandwidthData.length);
+    }
+
+    /** Data for the memory-bandwidth reference: 8 bytes per stored scene. */
+    static int[] bandwidthData(int scenes) {
+        int[] data = new int[scenes * 2];
+        for (int i = 0; i < data.length; i++) {
+            data[i] = i * 31;
+        }
+        return data;
+    }
+
+    /** The memory-bandwidth reference: a sequential sum over {@code values[from, to)}. */
+    static int sum(int[] values, int from, int to) {
         int sum = 0;
-        for (int value : data.bandwidthData) {
-            sum += value;
+        for (int i = from; i < to; i++) {
+            sum += values[i];
         }
         return sum;
     }
@@ -193,6 +193,20 @@ public class MatchBench {
                 case LINE -> 5;
                 case PLAYER -> object.relation() == Relation.TEAMMATE ? 6 : object.relation() == Relation.OPPONENT ? 7 : 8;
             };
+        }
+
+        /** Index of the scene of {@code stored[from, to)} nearest to this one, the first of equals. */
+        int nearest(List<PlainScene> stored, int from, int to) {
+            double best = Double.POSITIVE_INFINITY;
+            int bestIndex = -1;
+            for (int i = from; i < to; i++) {
+                double distance = distance(stored.get(i));
+                if (distance < best) {
+                    best = distance;
+                    bestIndex = i;
+                }
+            }
+            return bestIndex;
         }
 
         /** Per class: both sides' objects collected and sorted again, paired in order, leftovers penalised. */

@@ -55,10 +55,7 @@ public class ReferenceBench {
             stored.add(MatchBench.PlainScene.of(scene));
         }
         queries = queryScenes.stream().map(MatchBench.PlainScene::of).toList();
-        bandwidthData = new int[Math.max(CHUNK, base.size()) * 2];
-        for (int i = 0; i < bandwidthData.length; i++) {
-            bandwidthData[i] = i * 31;
-        }
+        bandwidthData = MatchBench.bandwidthData(Math.max(CHUNK, base.size()));
     }
 
     private int nextChunk() {
@@ -73,26 +70,13 @@ public class ReferenceBench {
         MatchBench.PlainScene query = queries.get(nextQuery);
         nextQuery = (nextQuery + 1) % queries.size();
         int start = nextChunk();
-        double best = Double.POSITIVE_INFINITY;
-        int bestIndex = -1;
-        for (int i = start; i < start + CHUNK; i++) {
-            double distance = query.distance(stored.get(i));
-            if (distance < best) {
-                best = distance;
-                bestIndex = i;
-            }
-        }
-        return bestIndex;
+        return query.nearest(stored, start, start + CHUNK);
     }
 
     @Benchmark
     @OperationsPerInvocation(CHUNK)
     public int memoryBandwidth() {
         int start = 2 * nextChunk();
-        int sum = 0;
-        for (int i = start; i < start + 2 * CHUNK; i++) {
-            sum += bandwidthData[i];
-        }
-        return sum;
+        return MatchBench.sum(bandwidthData, start, start + 2 * CHUNK);
     }
 }
