@@ -27,6 +27,8 @@ final class Referee {
     private final World world;
     private final int cycles;
     private final List<String> announcements = new ArrayList<>();
+    /** The last play mode announced, as the referee words it ({@code goal_l_2}, {@code kick_in_r}). */
+    private String modeWord = "before_kick_off";
     private int waited;
     private boolean secondHalf;
 
@@ -40,6 +42,11 @@ final class Referee {
         List<String> taken = List.copyOf(announcements);
         announcements.clear();
         return taken;
+    }
+
+    /** The current play mode in the referee's words, as a game log records it. */
+    String playModeWord() {
+        return modeWord;
     }
 
     /** Whether this player may kick now: at a restart only the side awarded it may. */
@@ -202,6 +209,7 @@ final class Referee {
     }
 
     private void announce(String mode) {
+        modeWord = mode;
         announcements.add("(hear " + world.time + " referee " + mode + ")");
     }
 }

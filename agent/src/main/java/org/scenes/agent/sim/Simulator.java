@@ -6,8 +6,11 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import java.util.function.Consumer;
 import java.util.function.IntConsumer;
 import org.scenes.agent.Brain;
+import org.scenes.gamelog.GameFrame;
+import org.scenes.gamelog.PlayerState;
 import org.scenes.protocol.CommandType;
 import org.scenes.protocol.Message;
 import org.scenes.protocol.MessageParser;
@@ -45,10 +48,19 @@ public final class Simulator {
 
     /** Plays the whole game; {@code progress} is told the game clock after every step. */
     public GameResult run(IntConsumer progress) throws IOException {
+        return run(progress, frame -> { });
+    }
+
+    /**
+     * Plays the whole game; {@code frames} gets the state after the players connected and after
+     * every step (what a game log records), {@code progress} the game clock after every step.
+     */
+    public GameResult run(IntConsumer progress, Consumer<GameFrame> frames) throws IOException {
         try {
             connect(setup.left(), Side.LEFT);
             connect(setup.right(), Side.RIGHT);
-            int steps = play(progress);
+            frames.accept(frame());
+            int steps = play(progress, frames);
             List<Path> logs = new ArrayList<>();
             for (Client client : clients) {
                 if (client.log() != null) {
@@ -87,7 +99,7 @@ public final class Simulator {
         }
     }
 
-    private int play(IntConsumer progress) {
+    private int play(IntConsumer progress, Consumer<GameFrame> frames) {
         List<String> announcements = List.of();
         int step = 0;
         while (true) {
@@ -120,6 +132,7 @@ public final class Simulator {
             }
             referee.endStep();
             announcements = referee.takeAnnouncements();
+            frames.accept(frame());
             progress.accept(world.time);
         }
     }
@@ -176,6 +189,20 @@ public final class Simulator {
                 }
             }
         }
+    }
+
+    /** The world as a game log records it now. */
+    private GameFrame frame() {
+        List<PlayerState> players = new ArrayList<>(clients.size());
+        for (Client client : clients) {
+            Player p = client.player;
+            players.add(new PlayerState(p.side, p.unum, 0, PlayerState.STANDING, p.x, p.y, p.vx, p.vy, p.body,
+                    p.neck, 'h', 90, p.stamina, p.effort, p.recovery, Double.NaN,
+                    new PlayerState.Counts(p.kicks, p.dashes, p.turns, 0, p.moves, p.turnNecks, 0, 0, 0, 0, 0)));
+        }
+        return new GameFrame(world.time, referee.playModeWord(), setup.left().name(), setup.right().name(),
+                world.scoreLeft, world.scoreRight,
+                new GameFrame.BallState(world.ball.x, world.ball.y, world.ball.vx, world.ball.vy), players);
     }
 
     private static boolean isBodyCommand(CommandType type) {
