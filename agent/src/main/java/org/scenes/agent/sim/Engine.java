@@ -26,8 +26,19 @@ import org.scenes.scene.Side;
  * thread drives it.
  */
 public final class Engine {
-    /** The refusal rcssserver sends when a team, a number or the goalie's place is taken. */
-    public static final String NO_MORE_PLAYERS = "(error no_more_team_or_player_or_goalie)";
+    /** A client the server does not seat: {@link #answer()} is rcssserver's error message for it. */
+    public static final class Refused extends Exception {
+        private final String answer;
+
+        Refused(String answer) {
+            super(answer);
+            this.answer = answer;
+        }
+
+        public String answer() {
+            return answer;
+        }
+    }
 
     private final ServerParams params = ServerParams.DEFAULT;
     private final int cycles;
@@ -64,28 +75,26 @@ public final class Engine {
 
     /**
      * A new player of {@code team}: the first team to join plays on the left, the second on the
-     * right; it gets the lowest free uniform number. Null when its team is full, a third team
-     * asks, or a second goalie: the caller answers {@link #NO_MORE_PLAYERS}. {@code init} is
-     * the client's message as received, for the command log.
+     * right; it gets the lowest free uniform number. Refused, with the server's answers, when a
+     * third team asks ({@code no_more_team}), or the team is full or has its goalie
+     * ({@code no_more_player_or_goalie_or_illegal_client_version}). {@code init} is the client's
+     * message as received, for the command log.
      */
-    public Seat join(String team, int version, boolean goalie, String init, Consumer<String> out) {
+    public Seat join(String team, int version, boolean goalie, String init, Consumer<String> out) throws Refused {
         Side side;
         if (team.equals(teams[0]) || teams[0] == null) {
             side = Side.LEFT;
         } else if (team.equals(teams[1]) || teams[1] == null) {
             side = Side.RIGHT;
         } else {
-            return null;
+            throw new Refused("(error no_more_team)");
         }
         int unum = 0;
         for (int candidate = 1; candidate <= GameSetup.MAX_PLAYERS && unum == 0; candidate++) {
-            unum = seat(side, candidate) == null ? candidate : 0;
+            unum = taken(side, candidate) ? 0 : candidate;
         }
-        if (unum == 0) {
-            return null;
-        }
-        if (goalie && seats.stream().anyMatch(s -> s.side() == side && s.goalie() && s.connected)) {
-            return null;
+        if (unum == 0 || goalie && seats.stream().anyMatch(s -> s.side() == side && s.goalie() && s.connected)) {
+            throw new Refused("(error no_more_player_or_goalie_or_illegal_client_version)");
         }
         teams[side == Side.LEFT ? 0 : 1] = team;
         Seat seat = new Seat(world.add(team, side, unum, goalie), version, out);
@@ -93,6 +102,38 @@ public final class Engine {
         seats.sort(Comparator.comparing(Seat::side).thenComparingInt(Seat::unum));
         log(seat, init);
         return seat;
+    }
+
+    private boolean taken(Side side, int unum) {
+        return seats.stream().anyMatch(s -> s.side() == side && s.unum() == unum);
+    }
+
+    /**
+     * A client takes over a player of its team ({@code (reconnect TEAM UNUM)}): the player comes
+     * back if it had left, and messages go to {@code out} from now on. Refused during play on
+     * ({@code cannot_reconnect_while_playon}) and for an unknown team or number
+     * ({@code no_such_team_or_player}).
+     */
+    public Seat rejoin(String team, int unum, String reconnect, Consumer<String> out) throws Refused {
+        if (world.mode == PlayMode.PLAY_ON) {
+            throw new Refused("(error cannot_reconnect_while_playon)");
+        }
+        for (Seat seat : seats) {
+            if (seat.team().equals(team) && seat.unum() == unum) {
+                if (!seat.connected) {
+                    world.players.add(seat.player);
+                    world.players.sort(World.ORDER);
+                    seat.connected = true;
+                }
+                seat.out = out;
+                seat.pending.clear();
+                log(seat, reconnect);
+                seat.send("(reconnect " + seat.side().letter() + ' ' + referee.playModeWord() + ')');
+                sendParameters(seat);
+                return seat;
+            }
+        }
+        throw new Refused("(error no_such_team_or_player)");
     }
 
     /** The connected player of that side and number, or null. */
@@ -108,13 +149,6 @@ public final class Engine {
     /** The init reply, then {@code server_param}, {@code player_param} and the player type, in the seat's version. */
     public void welcome(Seat seat) {
         seat.send(Vision.initReply(seat.player, referee.playModeWord()));
-        sendParameters(seat);
-    }
-
-    /** A reconnected client's answer, {@code (reconnect SIDE PLAYMODE)}, and the parameters again. */
-    public void welcomeBack(Seat seat, String reconnect) {
-        log(seat, reconnect);
-        seat.send("(reconnect " + seat.side().letter() + ' ' + referee.playModeWord() + ')');
         sendParameters(seat);
     }
 
@@ -134,6 +168,11 @@ public final class Engine {
     public void received(Seat seat, String command) {
         log(seat, command);
         seat.pending.add(command);
+    }
+
+    /** A message the server handles itself, such as {@code (done)}: only logged. */
+    public void note(Seat seat, String message) {
+        log(seat, message);
     }
 
     /** Takes the player out of the game ({@code bye}, or dropped for silence): it leaves the pitch. */
@@ -300,7 +339,8 @@ public final class Engine {
                 continue;
             }
             if (!(message instanceof PlayerCommand command)) {
-                seat.send(unknownCommandAnswer(text));
+                // The server's command parser fails on what it does not know.
+                seat.send("(error illegal_command_form)");
                 continue;
             }
             if (!command.wellFormed()) {
@@ -347,11 +387,6 @@ public final class Engine {
                 }
             }
         }
-    }
-
-    /** Client messages that are not commands. */
-    private String unknownCommandAnswer(String text) {
-        return "(error unknown_command)";
     }
 
     /**

@@ -13,7 +13,7 @@ import org.scenes.scene.Side;
 public final class Seat {
     final Player player;
     final int version;
-    final Consumer<String> out;
+    Consumer<String> out;
     /** Commands received since the engine last executed this seat's commands. */
     final List<String> pending = new ArrayList<>();
     /** Version 18+ clients that asked for {@code (synch_see)}: sees at cycle starts. */

@@ -110,8 +110,13 @@ public final class Simulator {
             clients.add(client);
             String init = "(init " + team.name() + " (version 9))";
             client.sentByClient(init);
-            Seat seat = engine.join(team.name(), 9, false, init, client::deliver);
-            if (seat == null || seat.side() != side || seat.unum() != unum) {
+            Seat seat;
+            try {
+                seat = engine.join(team.name(), 9, false, init, client::deliver);
+            } catch (Engine.Refused e) {
+                throw new IllegalStateException("the engine refused " + team.name() + " " + unum + ": " + e.answer());
+            }
+            if (seat.side() != side || seat.unum() != unum) {
                 throw new IllegalStateException("the engine seated " + team.name() + " " + unum + " elsewhere");
             }
             client.seat(seat);
