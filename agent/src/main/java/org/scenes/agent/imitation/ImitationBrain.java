@@ -125,4 +125,12 @@ public final class ImitationBrain implements Brain {
     public long silent() {
         return silent;
     }
+
+    /** What this brain counts of itself, by name, for the runtime's report. */
+    public java.util.Map<String, Long> counters() {
+        java.util.Map<String, Long> counters = new java.util.LinkedHashMap<>();
+        counters.put("decisions", decisions);
+        counters.put("silent", silent);
+        return counters;
+    }
 }
