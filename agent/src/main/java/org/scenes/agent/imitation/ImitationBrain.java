@@ -65,6 +65,7 @@ public final class ImitationBrain implements Brain {
     private Action lastAction;
     private List<SeenObject> lastSeen;
     private int unchanged;
+    private Consumer<Scene> decided = scene -> { };
 
     /** Kickable distance of the default server: player_size 0.3 + ball_size 0.085 + kickable_margin 0.7. */
     static final double DEFAULT_KICKABLE = 1.085;
@@ -162,8 +163,10 @@ public final class ImitationBrain implements Brain {
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
-        history.addLast(new Scene(seen.cycle(), seen.observer(), seen.objects(),
-                action == null ? List.of() : List.of(action)));
+        Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(),
+                action == null ? List.of() : List.of(action));
+        history.addLast(made);
+        decided.accept(made);
         if (action == null) {
             silent++;
             return null;
@@ -221,6 +224,14 @@ public final class ImitationBrain implements Brain {
             scene = transform.apply(scene);
         }
         return scene;
+    }
+
+    /**
+     * Tells {@code listener} of every scene this brain builds from a see, with the action it chose
+     * (none when silent): the scenes a log of the same traffic converts to.
+     */
+    public void onScene(Consumer<Scene> listener) {
+        decided = Objects.requireNonNull(listener, "listener");
     }
 
     /** Sees answered so far, and how many of them got no action. */

@@ -11,10 +11,11 @@ import java.nio.charset.StandardCharsets;
 
 /**
  * One player's UDP socket. The first datagram goes to the server's init port; the server answers
- * from a port of its own for this client, and from then on the socket is connected to that port
- * (datagrams from elsewhere are dropped by the system, and a vanished server shows as a
- * {@link java.net.PortUnreachableException} on loopback). Every datagram sent ends with a NUL,
- * as the real server expects from version 8 on.
+ * from a port of its own for this client, and from then on everything goes to that port and only
+ * datagrams from it are taken (others are counted and dropped). The socket is not
+ * {@code connect}ed: connecting may discard what already waits in its buffer, and the server
+ * sends its parameters right after the init answer. Every datagram sent ends with a NUL, as the
+ * real server expects from version 8 on.
  */
 final class Connection implements AutoCloseable {
     /** Larger than any message the server sends (its buffer is 8 KB). */
@@ -25,6 +26,7 @@ final class Connection implements AutoCloseable {
     private final ByteBuffer in = ByteBuffer.allocate(MAX_DATAGRAM);
     private final InetSocketAddress initPort;
     private InetSocketAddress clientPort;
+    private long strays;
 
     /** One message received: its bytes without trailing NULs, when it arrived. */
     record Datagram(byte[] bytes, long receivedNanos) {
@@ -84,7 +86,6 @@ final class Connection implements AutoCloseable {
             SocketAddress from = channel.receive(in);
             if (from instanceof InetSocketAddress address && address.getAddress().equals(initPort.getAddress())) {
                 clientPort = address;
-                channel.connect(address);
                 return datagram();
             }
         }
@@ -96,16 +97,27 @@ final class Connection implements AutoCloseable {
     }
 
     void send(String message) throws IOException {
-        channel.write(nulTerminated(message));
+        channel.send(nulTerminated(message), clientPort);
     }
 
-    /** The next datagram if one is waiting, else null; never blocks. */
+    /** The next datagram from the server if one is waiting, else null; never blocks. */
     Datagram poll() throws IOException {
-        in.clear();
-        if (channel.read(in) <= 0) {
-            return null;
+        while (true) {
+            in.clear();
+            SocketAddress from = channel.receive(in);
+            if (from == null) {
+                return null;
+            }
+            if (from.equals(clientPort)) {
+                return datagram();
+            }
+            strays++;
         }
-        return datagram();
+    }
+
+    /** Datagrams that came from elsewhere than the server's port for this client. */
+    long strays() {
+        return strays;
     }
 
     /** Waits up to {@code timeoutMillis} for a datagram; null when none came (or {@link #wakeup} was called). */

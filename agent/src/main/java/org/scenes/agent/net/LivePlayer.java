@@ -1,7 +1,6 @@
 package org.scenes.agent.net;
 
 import java.io.IOException;
-import java.net.PortUnreachableException;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -148,8 +147,6 @@ public final class LivePlayer implements Runnable {
             } finally {
                 closeLog();
             }
-        } catch (PortUnreachableException e) {
-            return fail(Outcome.SERVER_LOST, "the server's port for this player is closed: the server is gone");
         } catch (IOException e) {
             return fail(unum > 0 ? Outcome.SERVER_LOST : Outcome.NO_SERVER, "network failure: " + e.getMessage());
         }
