@@ -28,6 +28,10 @@ record Admission(String team, int version, boolean goalie, int unum, String erro
         if (!text.startsWith("(init ")) {
             return refused("(error unknown_command)");
         }
+        String afterHead = text.substring("(init ".length()).strip();
+        if (afterHead.isEmpty() || afterHead.charAt(0) == '(' || afterHead.charAt(0) == ')') {
+            return refused("(error illegal_teamname)");
+        }
         Message message;
         try {
             message = parser.parse(text);
