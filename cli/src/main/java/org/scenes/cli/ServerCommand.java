@@ -117,8 +117,8 @@ final class ServerCommand implements Callable<Integer> {
                 result.seconds());
         out.printf(Locale.ROOT, "%-14s %d connected, %d dropped%n", "Players", result.players(), result.dropped());
         if (result.latenessP99Millis() > 0 || result.latenessMaxMillis() > 0) {
-            out.printf(Locale.ROOT, "%-14s p99 %.2f ms, max %.2f ms%n", "Cycle lateness", result.latenessP99Millis(),
-                    result.latenessMaxMillis());
+            out.printf(Locale.ROOT, "%-14s p50 %.2f ms, p99 %.2f ms, max %.2f ms%n", "Cycle lateness",
+                    result.latenessP50Millis(), result.latenessP99Millis(), result.latenessMaxMillis());
         }
         for (Path log : result.logs()) {
             out.printf(Locale.ROOT, "%-14s %s%n", "Server log", log.toAbsolutePath());

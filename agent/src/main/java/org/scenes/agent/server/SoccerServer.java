@@ -127,7 +127,7 @@ public final class SoccerServer implements AutoCloseable {
                     + " : " + engine.scoreRight() + " " + engine.team(Side.RIGHT) + " after " + engine.time()
                     + " cycles");
             return new ServerResult(engine.scoreLeft(), engine.scoreRight(), engine.time(), engine.steps(), joined,
-                    dropped, !over, percentile(99), percentile(100), seconds, logs);
+                    dropped, !over, percentile(50), percentile(99), percentile(100), seconds, logs);
         } catch (UncheckedIOException e) {
             throw e.getCause();
         }
@@ -182,7 +182,12 @@ public final class SoccerServer implements AutoCloseable {
     private boolean playInRealTime(Consumer<GameFrame> frames) throws IOException {
         long next = System.nanoTime();
         while (!stopRequested) {
-            recordLateness(System.nanoTime() - next);
+            long late = System.nanoTime() - next;
+            recordLateness(late);
+            if (late > CYCLE_NANOS) {
+                // Like a timer, a cycle that started more than a cycle late is not made up for later.
+                next += late;
+            }
             if (!engine.sense()) {
                 return true;
             }
