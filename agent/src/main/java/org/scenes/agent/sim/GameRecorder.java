@@ -21,9 +21,11 @@ public final class GameRecorder implements AutoCloseable {
     private final Path directory;
     private final GameLogWriter gameLog;
     private final CommandLogWriter commandLog;
-    private GameFrame last;
+    private final Engine engine;
 
-    private GameRecorder(Path directory, List<String> parameterMessages) throws IOException {
+    private GameRecorder(Path directory, Engine engine) throws IOException {
+        List<String> parameterMessages = engine.parameterMessages();
+        this.engine = engine;
         this.directory = directory;
         this.gameLog = GameLogWriter.create(directory.resolve("incomplete.rcg"), parameterMessages);
         CommandLogWriter commands;
@@ -38,11 +40,10 @@ public final class GameRecorder implements AutoCloseable {
 
     /** Starts recording into {@code directory} with the engine's parameter messages. */
     public static GameRecorder open(Path directory, Engine engine) throws IOException {
-        return new GameRecorder(directory, engine.parameterMessages());
+        return new GameRecorder(directory, engine);
     }
 
     void frame(GameFrame frame) {
-        last = frame;
         try {
             gameLog.write(frame);
         } catch (IOException e) {
@@ -60,9 +61,10 @@ public final class GameRecorder implements AutoCloseable {
 
     /** Completes both logs and gives them their final names; returns the game log and the command log. */
     public List<Path> commit() throws IOException {
-        String name = last == null ? "null-vs-null"
-                : team(last.leftTeam()) + "_" + last.scoreLeft() + "-vs-" + team(last.rightTeam()) + "_"
-                        + last.scoreRight();
+        // Named by the teams and the score at the end, also when the game was stopped before kick-off.
+        GameFrame last = engine.frame();
+        String name = team(last.leftTeam()) + "_" + last.scoreLeft() + "-vs-" + team(last.rightTeam()) + "_"
+                + last.scoreRight();
         Path game = rename(gameLog.commit(), directory.resolve(name + ".rcg"));
         Path commands = rename(commandLog.commit(), directory.resolve(name + ".rcl"));
         return List.of(game, commands);
