@@ -265,7 +265,7 @@ public final class Engine {
 
     private int seesDue(Seat seat, long begin, long end) {
         Player player = seat.player;
-        if (seat.synchSee) {
+        if (player.synchSee) {
             // Version 18+ synchronous sees: at the cycle's start, every 1, 2 or 3 cycles for narrow, normal, wide.
             int every = player.viewWidth == Player.ViewWidth.NARROW ? 1 : player.viewWidth == Player.ViewWidth.NORMAL
                     ? 2 : 3;
@@ -407,7 +407,8 @@ public final class Engine {
                 if (seat.version < 18) {
                     seat.send("(error illegal_command_form)");
                 } else {
-                    seat.synchSee = true;
+                    seat.player.synchSee = true;
+                    seat.player.highQuality = true;
                     seat.send("(ok synch_see)");
                 }
                 return true;
@@ -445,6 +446,9 @@ public final class Engine {
         if (width == null) {
             seat.send("(error illegal_command_form)");
             return;
+        }
+        if (seat.player.synchSee && !quality) {
+            return; // synchronous sees are always of high quality: the server ignores the change
         }
         seat.player.viewWidth = width;
         seat.player.highQuality = quality;
@@ -494,7 +498,7 @@ public final class Engine {
         for (Player p : world.players) {
             int state = PlayerState.STANDING | (p.goalie ? PlayerState.GOALIE : 0);
             players.add(new PlayerState(p.side, p.unum, 0, state, p.x, p.y, p.vx, p.vy, p.body, p.neck,
-                    p.highQuality ? 'h' : 'l', params.visibleAngle() * p.viewWidth.factor, p.stamina, p.effort,
+                    p.highQuality ? 'h' : 'l', params.visibleAngle() * p.coneFactor(), p.stamina, p.effort,
                     p.recovery, Double.NaN, new PlayerState.Counts(p.kicks, p.dashes, p.turns, p.catches, p.moves,
                     p.turnNecks, p.changeViews, p.says, 0, 0, 0)));
         }

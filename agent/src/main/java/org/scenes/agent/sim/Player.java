@@ -17,6 +17,8 @@ final class Player extends MovingObject {
     double recovery = 1;
     ViewWidth viewWidth = ViewWidth.NORMAL;
     boolean highQuality = true;
+    /** Version 18+ synchronous sees: wider cones, a see every 1, 2 or 3 cycles. */
+    boolean synchSee;
     int kicks;
     int dashes;
     int turns;
@@ -39,6 +41,21 @@ final class Player extends MovingObject {
 
     double head() {
         return Numbers.normalize(body + neck);
+    }
+
+    /**
+     * The view cone as a multiple of visible_angle: half, once or twice for narrow, normal and
+     * wide; with synchronous sees 2/3, 4/3 and 2 (the cone of 1, 2 or 3 cycles), as on the server.
+     */
+    double coneFactor() {
+        if (!synchSee) {
+            return viewWidth.factor;
+        }
+        return switch (viewWidth) {
+            case NARROW -> 2.0 / 3;
+            case NORMAL -> 4.0 / 3;
+            case WIDE -> 2;
+        };
     }
 
     /** The view widths of {@code change_view}: cone in degrees and see period relative to normal. */

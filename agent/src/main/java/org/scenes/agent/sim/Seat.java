@@ -16,8 +16,6 @@ public final class Seat {
     Consumer<String> out;
     /** Commands received since the engine last executed this seat's commands. */
     final List<String> pending = new ArrayList<>();
-    /** Version 18+ clients that asked for {@code (synch_see)}: sees at cycle starts. */
-    boolean synchSee;
     /** Cycles a goalie must wait after a catch attempt ({@code catch_ban_cycle}). */
     int catchBan;
     boolean connected = true;

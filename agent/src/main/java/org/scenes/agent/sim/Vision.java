@@ -36,12 +36,12 @@ final class Vision {
         this.world = world;
         this.p = world.params;
         this.clearlyFar2 = (p.visibleDistance() + 1) * (p.visibleDistance() + 1);
-        cone(Player.ViewWidth.NORMAL);
+        cone(Player.ViewWidth.NORMAL.factor);
     }
 
-    /** The cone of a view width: visible_angle 90 for normal, half for narrow, twice for wide. */
-    private void cone(Player.ViewWidth width) {
-        halfAngle = p.visibleAngle() * width.factor / 2;
+    /** The cone of a view width: visible_angle 90 times the player's factor (see Player.coneFactor). */
+    private void cone(double factor) {
+        halfAngle = p.visibleAngle() * factor / 2;
         double cos = Math.cos(Math.toRadians(halfAngle + 1));
         clearlyOutsideCos2 = cos * cos;
         // The cheap test needs a cone under 178 degrees.
@@ -49,7 +49,7 @@ final class Vision {
     }
 
     String see(Player self) {
-        cone(self.viewWidth);
+        cone(self.coneFactor());
         highQuality = self.highQuality;
         StringBuilder text = new StringBuilder(2048).append("(see ").append(world.time);
         double head = self.head();

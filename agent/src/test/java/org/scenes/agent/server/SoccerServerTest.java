@@ -30,12 +30,13 @@ class SoccerServerTest {
 
     private final ExecutorService executor = Executors.newSingleThreadExecutor();
     private final List<String> events = Collections.synchronizedList(new ArrayList<>());
+    private final List<GameFrame> frames = Collections.synchronizedList(new ArrayList<>());
     private SoccerServer server;
     private Future<ServerResult> running;
 
     private void start(ServerConfig config) throws IOException {
         server = SoccerServer.open(config.withPort(0), events::add);
-        running = executor.submit(() -> server.run(frame -> { }));
+        running = executor.submit(() -> server.run(frames::add));
     }
 
     private static ServerConfig synchGame(int cycles) {
@@ -238,6 +239,10 @@ class SoccerServerTest {
         }
         ServerResult result = finish();
         assertEquals(0, result.dropped(), "the player said bye and left");
+        // synchronous sees in normal view: a cone of 120 degrees, as on the server
+        GameFrame last = frames.get(frames.size() - 1);
+        assertEquals(1, last.players().size());
+        assertEquals(120, last.players().get(0).viewWidth(), 1e-9);
         assertTrue(events.contains("A player (Teal 1) left."), events.toString());
     }
 
