@@ -39,6 +39,12 @@ public final class SoccerServer implements AutoCloseable {
     private static final int MAX_DATAGRAM = 8192;
     private static final long CYCLE_NANOS = 100_000_000L;
     private static final long WAIT_SLICE_NANOS = 50_000_000L;
+    /**
+     * When no player joined for this long, the waiting players get a sense_body every cycle, as
+     * the real server keeps its cycles running before kick-off; a quick succession of joins
+     * (and so a deterministic game) gets none.
+     */
+    private static final long KEEP_ALIVE_AFTER_NANOS = 2_000_000_000L;
 
     private final ServerConfig config;
     private final Engine engine;
@@ -141,8 +147,13 @@ public final class SoccerServer implements AutoCloseable {
 
     /** Serves connections until both teams are there and settled, the teams-wait ran out, or a stop. */
     private void awaitTeams() throws IOException {
+        long nextKeepAlive = 0;
         while (!stopRequested) {
             long now = System.nanoTime();
+            if (joined > 0 && now - lastJoin >= KEEP_ALIVE_AFTER_NANOS && now >= nextKeepAlive) {
+                engine.keepAlive();
+                nextKeepAlive = now + CYCLE_NANOS;
+            }
             boolean bothTeams = engine.team(Side.LEFT) != null && engine.team(Side.RIGHT) != null;
             if (bothTeams && now - lastJoin >= config.settle().toNanos()) {
                 return;
@@ -151,7 +162,7 @@ public final class SoccerServer implements AutoCloseable {
                     && now - lastJoin >= Math.min(config.settle().toNanos(), config.teamsWait().toNanos())) {
                 return;
             }
-            pump(now + WAIT_SLICE_NANOS, false);
+            pump(Math.min(now + WAIT_SLICE_NANOS, Math.max(nextKeepAlive, now + 1_000_000)), false);
         }
     }
 

@@ -234,6 +234,16 @@ public final class Engine {
     }
 
     /**
+     * While the server waits for the teams: a {@code sense_body} for every player, the clock at
+     * 0, nothing else changes (clients that take a long silence for a lost server stay).
+     */
+    public void keepAlive() {
+        for (Seat seat : seats()) {
+            seat.send(vision.senseBody(seat.player, seat.version));
+        }
+    }
+
+    /**
      * The first half of a step: each player gets {@code sense_body}, the referee's announcements
      * of the previous step and the sees due in this step. Returns false (and the game is over)
      * when this was the step of {@code time_over}, which gets no see.
