@@ -292,4 +292,76 @@ class LiveTeamTest {
             assertFalse(received(healthy).isEmpty());
         }
     }
+
+    /**
+     * The brain is held in its decision on the see of cycle 5 while the test sends {@code next};
+     * the report says whether that made the decision late.
+     */
+    private PlayerReport decideWhile(String before, String... next) throws Exception {
+        java.util.concurrent.CountDownLatch deciding = new java.util.concurrent.CountDownLatch(1);
+        java.util.concurrent.CountDownLatch release = new java.util.concurrent.CountDownLatch(1);
+        BrainFactory held = (team, random) -> (message, send) -> {
+            if (message.startsWith("(see 5")) {
+                deciding.countDown();
+                try {
+                    release.await(5, TimeUnit.SECONDS);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+                send.accept("(dash 80)");
+            }
+        };
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Held"), 1, held, 1,
+                    notices::add);
+            Future<List<PlayerReport>> reports = start(runner);
+            awaitClients(server, 1);
+            FakeSoccerServer.Client client = server.clients().get(0);
+            send(client, before);
+            send(client, "(sense_body 5 (view_mode high normal))");
+            send(client, "(see 5 ((b) 10 0))");
+            assertTrue(deciding.await(5, TimeUnit.SECONDS));
+            for (String message : next) {
+                send(client, message);
+            }
+            // loopback delivers in microseconds; the wait only makes sure it is in the socket
+            Thread.sleep(200);
+            release.countDown();
+            awaitReceived(client, 3);
+            send(client, "(hear 6 referee time_over)");
+            return reports.get(10, TimeUnit.SECONDS).get(0);
+        }
+    }
+
+    @Test
+    void aDecisionIsLateWhenTheNextCyclesSenseBodyCameFirst() throws Exception {
+        PlayerReport report = decideWhile("(hear 0 referee play_on)", "(sense_body 6 (view_mode high normal))");
+        assertEquals(1, report.due());
+        assertEquals(1, report.missed());
+    }
+
+    @Test
+    void aCyclesOwnSenseBodyAfterItsSeeDoesNotMakeTheDecisionLate() throws Exception {
+        PlayerReport report = decideWhile("(hear 0 referee play_on)", "(sense_body 5 (view_mode high normal))");
+        assertEquals(1, report.due());
+        assertEquals(0, report.missed());
+    }
+
+    @Test
+    void inSynchronousModeAThinkWaitingMeansTheDecisionStillCounts() throws Exception {
+        // the server steps only after the (done), which follows the dash
+        PlayerReport report = decideWhile("(think)", "(think)");
+        assertEquals(1, report.due());
+        assertEquals(0, report.missed());
+        assertEquals(2, report.thinks());
+    }
+
+    @Test
+    void whileTheClockStandsStillASecondSenseBodyOfTheSameTimeMakesTheDecisionLate() throws Exception {
+        PlayerReport once = decideWhile("(hear 0 referee goal_l_1)", "(sense_body 5 (view_mode high normal))");
+        assertEquals(0, once.missed());
+        PlayerReport twice = decideWhile("(hear 0 referee goal_l_1)", "(sense_body 5 (view_mode high normal))",
+                "(sense_body 5 (view_mode high normal))");
+        assertEquals(1, twice.missed());
+    }
 }

@@ -34,6 +34,20 @@ final class Connection implements AutoCloseable {
             return new String(bytes, StandardCharsets.UTF_8);
         }
 
+        /** The integer after the head word ({@code (sense_body 42 ...)}: 42), -1 when there is none. */
+        int time() {
+            int i = 0;
+            while (i < bytes.length && bytes[i] != ' ') {
+                i++;
+            }
+            int value = 0;
+            int digits = 0;
+            for (i++; i < bytes.length && bytes[i] >= '0' && bytes[i] <= '9' && digits < 9; i++, digits++) {
+                value = value * 10 + (bytes[i] - '0');
+            }
+            return digits == 0 ? -1 : value;
+        }
+
         boolean startsWith(String head) {
             if (bytes.length < head.length()) {
                 return false;

@@ -20,6 +20,7 @@ import org.scenes.protocol.InitReply;
 import org.scenes.protocol.Message;
 import org.scenes.protocol.MessageParser;
 import org.scenes.protocol.ProtocolException;
+import org.scenes.protocol.See;
 import org.scenes.protocol.SenseBody;
 import org.scenes.protocol.ServerNotice;
 
@@ -33,14 +34,22 @@ import org.scenes.protocol.ServerNotice;
  * has acted on everything before it.
  *
  * <p><b>Cycles, due and missed.</b> A cycle is the time from one {@code sense_body} to the next
- * (the server sends one as each cycle starts). A body command ({@code dash}, {@code turn},
- * {@code kick}, {@code move}, {@code catch}, {@code tackle}) is <em>due</em> in a cycle when the
- * brain answers a message that arrived in that cycle with one; brains that choose to wait (the
+ * (the server sends one per cycle); cycles played counts them. A body command ({@code dash},
+ * {@code turn}, {@code kick}, {@code move}, {@code catch}, {@code tackle}) is <em>due</em> in a
+ * cycle when the brain answers a message of that cycle with one; brains that choose to wait (the
  * classic Krislet acts every second cycle) owe nothing in the cycles they skip. A due cycle is
- * <em>missed</em> when its body command leaves after the next {@code sense_body} has arrived: just
- * before sending, the player takes in everything the socket holds, and a {@code sense_body} among
- * it means the server has moved on. The decision-time sample is the brain's answers that held a
- * body command: its mean and 99th percentile describe the same calls.
+ * <em>missed</em> when its command left too late for the server to execute it in that cycle.
+ * Just before sending, the player takes in everything its socket holds; the command is late when
+ * a {@code sense_body} of a later cycle is among it: one stamped with a later time than the
+ * message answered, or, for an answer to a {@code sense_body}, any. (The server may send a
+ * cycle's {@code see} just before that cycle's own {@code sense_body}; while the clock stands
+ * still, before kick-off and after goals, all carry the same time, so a {@code see}'s answer is
+ * late when two {@code sense_body}s of its time are waiting.) In synchronous mode the server
+ * steps only after every {@code (done)}, and this player answers a {@code (think)} only after
+ * acting on everything before it, so no cycle can be missed there: the decision time is what
+ * makes a synchronous game slow.
+ * The decision-time sample is the brain's answers that held a body command: its mean and 99th
+ * percentile describe the same calls.
  *
  * <p><b>Kick-off positions.</b> The brain's own {@code move} before kick-off is remembered; the
  * real server does not put players back after a goal, so while the referee's {@code goal_*}
@@ -86,6 +95,8 @@ public final class LivePlayer implements Runnable {
     private boolean goalPause;
     private boolean moveOnce;
     private boolean gameOver;
+    /** The latest time a timed message (see, sense_body, hear) carried. */
+    private int lastTime;
 
     /**
      * @param goalie whether this player inits as goalie
@@ -220,16 +231,22 @@ public final class LivePlayer implements Runnable {
         }
         boolean think = false;
         boolean cycleStart = false;
-        if (message instanceof SenseBody) {
+        if (message instanceof SenseBody body) {
             cycles++;
             cycleStart = true;
+            lastTime = body.time();
+        } else if (message instanceof See see) {
+            lastTime = see.time();
         } else if (message instanceof ServerNotice notice) {
             if (notice.isError()) {
                 errors.merge(notice.text(), 1L, Long::sum);
             }
             think = notice.head().equals("think");
-        } else if (message instanceof Hear hear && hear.speaker() == Hear.Speaker.REFEREE) {
-            referee(hear.text());
+        } else if (message instanceof Hear hear) {
+            lastTime = hear.time();
+            if (hear.speaker() == Hear.Speaker.REFEREE) {
+                referee(hear.text());
+            }
         }
         if (cycleStart) {
             positionIfNeeded();
@@ -253,7 +270,7 @@ public final class LivePlayer implements Runnable {
                     due++;
                 }
                 takeWaiting();
-                if (missedCycle != cycles && nextCycleArrived()) {
+                if (missedCycle != cycles && late(cycleStart)) {
                     missedCycle = cycles;
                     missed++;
                 }
@@ -309,10 +326,15 @@ public final class LivePlayer implements Runnable {
         }
     }
 
-    private boolean nextCycleArrived() {
+    /** Whether what waits in the queue shows the server has moved past the cycle being answered. */
+    private boolean late(boolean answeringSenseBody) {
+        int sameTime = 0;
         for (Datagram waiting : queue) {
-            if (waiting.startsWith("(sense_body")) {
-                return true;
+            if (waiting.startsWith("(sense_body ")) {
+                int time = waiting.time();
+                if (answeringSenseBody || time > lastTime || (time == lastTime && ++sameTime == 2)) {
+                    return true;
+                }
             }
         }
         return false;
