@@ -19,6 +19,7 @@ import org.scenes.protocol.Hear;
 import org.scenes.protocol.InitReply;
 import org.scenes.protocol.Message;
 import org.scenes.protocol.MessageParser;
+import org.scenes.protocol.Parameters;
 import org.scenes.protocol.ProtocolException;
 import org.scenes.protocol.See;
 import org.scenes.protocol.SenseBody;
@@ -44,10 +45,14 @@ import org.scenes.protocol.ServerNotice;
  * message answered, or, for an answer to a {@code sense_body}, any. (The server may send a
  * cycle's {@code see} just before that cycle's own {@code sense_body}; while the clock stands
  * still, before kick-off and after goals, all carry the same time, so a {@code see}'s answer is
- * late when two {@code sense_body}s of its time are waiting.) In synchronous mode the server
- * steps only after every {@code (done)}, and this player answers a {@code (think)} only after
- * acting on everything before it, so no cycle can be missed there: the decision time is what
- * makes a synchronous game slow.
+ * late when two {@code sense_body}s of its time are waiting.) That is real-time mode. In
+ * synchronous mode (a {@code (think)} has come, or {@code server_param} said {@code synch_mode 1})
+ * a cycle ends with this player's {@code (done)}: the server executes everything that came before
+ * it, and steps only when every player is done. This player answers a {@code (think)} only after
+ * acting on everything before it, so no synchronous cycle is missed; a {@code see} the server
+ * sends after its {@code (think)} (version 17 and older: the view does not keep to the cycle)
+ * is answered in the next cycle, as intended. There the figure that counts is the decision time:
+ * how long the server waits.
  * The decision-time sample is the brain's answers that held a body command: its mean and 99th
  * percentile describe the same calls.
  *
@@ -95,6 +100,7 @@ public final class LivePlayer implements Runnable {
     private boolean goalPause;
     private boolean moveOnce;
     private boolean gameOver;
+    private boolean synchronous;
     /** The latest time a timed message (see, sense_body, hear) carried. */
     private int lastTime;
 
@@ -242,11 +248,14 @@ public final class LivePlayer implements Runnable {
                 errors.merge(notice.text(), 1L, Long::sum);
             }
             think = notice.head().equals("think");
+            synchronous |= think;
         } else if (message instanceof Hear hear) {
             lastTime = hear.time();
             if (hear.speaker() == Hear.Speaker.REFEREE) {
                 referee(hear.text());
             }
+        } else if (message instanceof Parameters parameters && parameters.head().equals("server_param")) {
+            synchronous |= parameters.number("synch_mode") == 1;
         }
         if (cycleStart) {
             positionIfNeeded();
@@ -328,6 +337,9 @@ public final class LivePlayer implements Runnable {
 
     /** Whether what waits in the queue shows the server has moved past the cycle being answered. */
     private boolean late(boolean answeringSenseBody) {
+        if (synchronous) {
+            return false;
+        }
         int sameTime = 0;
         for (Datagram waiting : queue) {
             if (waiting.startsWith("(sense_body ")) {
