@@ -109,6 +109,8 @@ class LiveTeamTest {
             assertEquals(0, TeamRunner.exitCode(result), result.toString());
             assertTrue(server.strayOnInitPorts().isEmpty(), "nothing after the init went to the init port");
             FakeSoccerServer.Client first = server.clients().get(0);
+            // init, a move, 5 x (dash, done), bye: the server may still be reading the last ones
+            awaitReceived(first, 13);
             List<String> sent = received(first);
             assertEquals("(init Live (version 9)(goalie))", sent.get(0));
             assertEquals("(init Live (version 9))", received(server.clients().get(1)).get(0));
@@ -231,6 +233,7 @@ class LiveTeamTest {
             assertEquals(1L, report.errors().get("illegal_command_form"));
             // one notice per kind: see, unbracketed, empty... and the last (see ...))) is a see too
             assertEquals(3, notices.size(), notices.toString());
+            awaitReceived(client, 3);
             List<String> sent = received(client);
             assertEquals(1, sent.stream().filter("(dash 50)"::equals).count(), "only the padded see was acted on: " + sent);
         }
@@ -364,5 +367,36 @@ class LiveTeamTest {
         PlayerReport twice = decideWhile("(hear 0 referee goal_l_1)", "(sense_body 5 (view_mode high normal))",
                 "(sense_body 5 (view_mode high normal))");
         assertEquals(1, twice.missed());
+    }
+
+    @Test
+    void afterAGoalThePlayerGoesBackToItsKickOffSpot() throws Exception {
+        BrainFactory placed = (team, random) -> (message, send) -> {
+            if (message.startsWith("(player_type")) {
+                send.accept("(move -10 5)");
+            } else if (message.startsWith("(see ")) {
+                send.accept("(dash 50)");
+            }
+        };
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Home"), 1, placed, 1,
+                    notices::add);
+            Future<List<PlayerReport>> reports = start(runner);
+            awaitClients(server, 1);
+            FakeSoccerServer.Client client = server.clients().get(0);
+            send(client, "(player_type (id 0))");
+            send(client, "(sense_body 1 (view_mode high normal))");
+            send(client, "(see 1 ((b) 10 0))");
+            send(client, "(hear 1 referee goal_l_1)");
+            for (int cycle = 2; cycle <= 4; cycle++) {
+                send(client, "(sense_body " + cycle + " (view_mode high normal))");
+                send(client, "(see " + cycle + " ((b) 10 0))");
+            }
+            send(client, "(hear 5 referee time_over)");
+            assertEquals(Outcome.GAME_OVER, reports.get(10, TimeUnit.SECONDS).get(0).outcome());
+            awaitReceived(client, 9);
+            assertEquals(List.of("(init Home (version 9))", "(move -10 5)", "(dash 50)", "(move -10 5)", "(dash 50)",
+                    "(move -10 5)", "(dash 50)", "(dash 50)", "(bye)"), received(client));
+        }
     }
 }

@@ -56,11 +56,12 @@ import org.scenes.protocol.ServerNotice;
  * The decision-time sample is the brain's answers that held a body command: its mean and 99th
  * percentile describe the same calls.
  *
- * <p><b>Kick-off positions.</b> The brain's own {@code move} before kick-off is remembered; the
- * real server does not put players back after a goal, so while the referee's {@code goal_*}
- * mode lasts the player sends that move again at the start of each cycle (before the brain's
- * command, so the server takes it), and once after {@code half_time}. A brain that never moved
- * gets a formation spot by uniform number at the first {@code sense_body}.
+ * <p><b>Kick-off positions.</b> The brain's own {@code move} before kick-off is remembered. The
+ * real server does not put players back after a goal (the embedded simulator does), so after the
+ * referee's {@code goal_*}, and after {@code half_time}, the player sends that move again at the
+ * start of the next two cycles: the server executes the first body command of a cycle, and a
+ * cycle's {@code see} may come before its {@code sense_body}. A brain that never moved gets a
+ * formation spot by uniform number at the first {@code sense_body}.
  */
 public final class LivePlayer implements Runnable {
     /** How long one wait on the socket lasts before the stop flag is looked at again. */
@@ -97,8 +98,8 @@ public final class LivePlayer implements Runnable {
     private long dueCycle = -1;
     private long missedCycle = -1;
     private String kickOffMove;
-    private boolean goalPause;
-    private boolean moveOnce;
+    /** Kick-off moves still to send, one per cycle start. */
+    private int movesOwed;
     private boolean gameOver;
     private boolean synchronous;
     /** The latest time a timed message (see, sense_body, hear) carried. */
@@ -295,13 +296,8 @@ public final class LivePlayer implements Runnable {
     }
 
     private void referee(String mode) {
-        if (mode.startsWith("goal_")) {
-            goalPause = true;
-        } else if (mode.equals("half_time")) {
-            goalPause = false;
-            moveOnce = true;
-        } else if (mode.startsWith("kick_off_") || mode.equals("play_on") || mode.equals("before_kick_off")) {
-            goalPause = false;
+        if (mode.startsWith("goal_") || mode.equals("half_time")) {
+            movesOwed = 2;
         } else if (mode.equals("time_over")) {
             gameOver = true;
         }
@@ -313,8 +309,8 @@ public final class LivePlayer implements Runnable {
             double[] spot = FORMATION[(Math.max(1, unum) - 1) % FORMATION.length];
             kickOffMove = "(move " + format(spot[0]) + " " + format(spot[1]) + ")";
             send(kickOffMove);
-        } else if (kickOffMove != null && (goalPause || moveOnce)) {
-            moveOnce = false;
+        } else if (kickOffMove != null && movesOwed > 0) {
+            movesOwed--;
             send(kickOffMove);
         }
     }
