@@ -77,6 +77,10 @@ final class PlayCommand implements Callable<Integer> {
             description = "Where the player logs go (the simulator; required there). On a server: --log-dir.")
     Path outDir;
 
+    @Option(names = "--record", paramLabel = "DIR",
+            description = "The simulator: also write the server's game log (.rcg) and command log (.rcl) there.")
+    Path recordDir;
+
     @Override
     public Integer call() throws IOException, InterruptedException {
         List<MatchConfig> configs = match.configs();
@@ -116,15 +120,23 @@ final class PlayCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         out.printf(Locale.ROOT, "%-14s %d scenes from %d files; %s%n", "Learnt", knowledge.size(), sceneFiles.size(),
                 config.describe());
-        GameResult result = SimulateCommand.play(setup);
+        org.scenes.agent.sim.Simulator simulator = new org.scenes.agent.sim.Simulator(setup);
+        if (recordDir != null) {
+            simulator.recordTo(recordDir);
+        }
+        GameResult result = SimulateCommand.play(simulator, setup.cycles());
         SimulateCommand.printSummary(out, setup, result, (System.nanoTime() - started) / 1e9);
+        for (Path log : simulator.recorded()) {
+            out.printf(Locale.ROOT, "%-14s %s%n", "Server log", log.toAbsolutePath());
+        }
+        out.flush();
         return ExitCodes.OK;
     }
 
     private Integer onServer(MatchConfig config, PluginRegistry registry, ImitationBrain.Guards guards)
             throws IOException, InterruptedException {
         CommandLine.ParseResult parsed = spec.commandLine().getParseResult();
-        for (String simulatorOnly : List.of("--opponent", "--names", "--cycles", "--out-dir")) {
+        for (String simulatorOnly : List.of("--opponent", "--names", "--cycles", "--out-dir", "--record")) {
             if (parsed.hasMatchedOption(simulatorOnly)) {
                 throw new UsageException(simulatorOnly + ": only for the embedded simulator; on a server the server"
                         + " decides the opponent and the game length (--team names this team, --log-dir keeps the logs)");
