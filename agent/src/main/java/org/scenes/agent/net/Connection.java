@@ -12,7 +12,7 @@ import java.nio.charset.StandardCharsets;
 /**
  * One player's UDP socket. The first datagram goes to the server's init port; the server answers
  * from a port of its own for this client, and from then on everything goes to that port and only
- * datagrams from it are taken (others are counted and dropped). The socket is not
+ * datagrams from it are taken (others are dropped). The socket is not
  * {@code connect}ed: connecting may discard what already waits in its buffer, and the server
  * sends its parameters right after the init answer. Every datagram sent ends with a NUL, as the
  * real server expects from version 8 on.
@@ -26,7 +26,6 @@ final class Connection implements AutoCloseable {
     private final ByteBuffer in = ByteBuffer.allocate(MAX_DATAGRAM);
     private final InetSocketAddress initPort;
     private InetSocketAddress clientPort;
-    private long strays;
 
     /** One message received: its bytes without trailing NULs, when it arrived. */
     record Datagram(byte[] bytes, long receivedNanos) {
@@ -125,13 +124,7 @@ final class Connection implements AutoCloseable {
             if (from.equals(clientPort)) {
                 return datagram();
             }
-            strays++;
         }
-    }
-
-    /** Datagrams that came from elsewhere than the server's port for this client. */
-    long strays() {
-        return strays;
     }
 
     /** Waits up to {@code timeoutMillis} for a datagram; null when none came (or {@link #wakeup} was called). */
