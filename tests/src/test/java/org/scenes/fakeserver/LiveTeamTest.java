@@ -109,6 +109,8 @@ class LiveTeamTest {
             assertEquals(0, TeamRunner.exitCode(result), result.toString());
             assertTrue(server.strayOnInitPorts().isEmpty(), "nothing after the init went to the init port");
             FakeSoccerServer.Client first = server.clients().get(0);
+            // init, a move, 5 x (dash, done), bye: the server may still be reading the last ones
+            awaitReceived(first, 13);
             List<String> sent = received(first);
             assertEquals("(init Live (version 9)(goalie))", sent.get(0));
             assertEquals("(init Live (version 9))", received(server.clients().get(1)).get(0));
@@ -231,6 +233,7 @@ class LiveTeamTest {
             assertEquals(1L, report.errors().get("illegal_command_form"));
             // one notice per kind: see, unbracketed, empty... and the last (see ...))) is a see too
             assertEquals(3, notices.size(), notices.toString());
+            awaitReceived(client, 3);
             List<String> sent = received(client);
             assertEquals(1, sent.stream().filter("(dash 50)"::equals).count(), "only the padded see was acted on: " + sent);
         }
@@ -290,6 +293,110 @@ class LiveTeamTest {
             assertTrue(notices.stream().anyMatch(n -> n.contains("player 2") && n.contains("brain broke")), notices.toString());
             assertEquals(1, TeamRunner.exitCode(result));
             assertFalse(received(healthy).isEmpty());
+        }
+    }
+
+    /**
+     * The brain is held in its decision on the see of cycle 5 while the test sends {@code next};
+     * the report says whether that made the decision late.
+     */
+    private PlayerReport decideWhile(String before, String... next) throws Exception {
+        java.util.concurrent.CountDownLatch deciding = new java.util.concurrent.CountDownLatch(1);
+        java.util.concurrent.CountDownLatch release = new java.util.concurrent.CountDownLatch(1);
+        BrainFactory held = (team, random) -> (message, send) -> {
+            if (message.startsWith("(see 5")) {
+                deciding.countDown();
+                try {
+                    release.await(5, TimeUnit.SECONDS);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+                send.accept("(dash 80)");
+            }
+        };
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Held"), 1, held, 1,
+                    notices::add);
+            Future<List<PlayerReport>> reports = start(runner);
+            awaitClients(server, 1);
+            FakeSoccerServer.Client client = server.clients().get(0);
+            send(client, before);
+            send(client, "(sense_body 5 (view_mode high normal))");
+            send(client, "(see 5 ((b) 10 0))");
+            assertTrue(deciding.await(5, TimeUnit.SECONDS));
+            for (String message : next) {
+                send(client, message);
+            }
+            // loopback delivers in microseconds; the wait only makes sure it is in the socket
+            Thread.sleep(200);
+            release.countDown();
+            awaitReceived(client, 3);
+            send(client, "(hear 6 referee time_over)");
+            return reports.get(10, TimeUnit.SECONDS).get(0);
+        }
+    }
+
+    @Test
+    void aDecisionIsLateWhenTheNextCyclesSenseBodyCameFirst() throws Exception {
+        PlayerReport report = decideWhile("(hear 0 referee play_on)", "(sense_body 6 (view_mode high normal))");
+        assertEquals(1, report.due());
+        assertEquals(1, report.missed());
+    }
+
+    @Test
+    void aCyclesOwnSenseBodyAfterItsSeeDoesNotMakeTheDecisionLate() throws Exception {
+        PlayerReport report = decideWhile("(hear 0 referee play_on)", "(sense_body 5 (view_mode high normal))");
+        assertEquals(1, report.due());
+        assertEquals(0, report.missed());
+    }
+
+    @Test
+    void inSynchronousModeAThinkWaitingMeansTheDecisionStillCounts() throws Exception {
+        // the server executes what came before the (done), which follows the dash; a see it sent after
+        // its think (as rcssserver does before version 18) is answered in the next cycle, as intended
+        PlayerReport report = decideWhile("(think)", "(think)", "(sense_body 6 (view_mode high normal))");
+        assertEquals(1, report.due());
+        assertEquals(0, report.missed());
+        assertEquals(2, report.thinks());
+    }
+
+    @Test
+    void whileTheClockStandsStillASecondSenseBodyOfTheSameTimeMakesTheDecisionLate() throws Exception {
+        PlayerReport once = decideWhile("(hear 0 referee goal_l_1)", "(sense_body 5 (view_mode high normal))");
+        assertEquals(0, once.missed());
+        PlayerReport twice = decideWhile("(hear 0 referee goal_l_1)", "(sense_body 5 (view_mode high normal))",
+                "(sense_body 5 (view_mode high normal))");
+        assertEquals(1, twice.missed());
+    }
+
+    @Test
+    void afterAGoalThePlayerGoesBackToItsKickOffSpot() throws Exception {
+        BrainFactory placed = (team, random) -> (message, send) -> {
+            if (message.startsWith("(player_type")) {
+                send.accept("(move -10 5)");
+            } else if (message.startsWith("(see ")) {
+                send.accept("(dash 50)");
+            }
+        };
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Home"), 1, placed, 1,
+                    notices::add);
+            Future<List<PlayerReport>> reports = start(runner);
+            awaitClients(server, 1);
+            FakeSoccerServer.Client client = server.clients().get(0);
+            send(client, "(player_type (id 0))");
+            send(client, "(sense_body 1 (view_mode high normal))");
+            send(client, "(see 1 ((b) 10 0))");
+            send(client, "(hear 1 referee goal_l_1)");
+            for (int cycle = 2; cycle <= 4; cycle++) {
+                send(client, "(sense_body " + cycle + " (view_mode high normal))");
+                send(client, "(see " + cycle + " ((b) 10 0))");
+            }
+            send(client, "(hear 5 referee time_over)");
+            assertEquals(Outcome.GAME_OVER, reports.get(10, TimeUnit.SECONDS).get(0).outcome());
+            awaitReceived(client, 9);
+            assertEquals(List.of("(init Home (version 9))", "(move -10 5)", "(dash 50)", "(move -10 5)", "(dash 50)",
+                    "(move -10 5)", "(dash 50)", "(dash 50)", "(bye)"), received(client));
         }
     }
 }

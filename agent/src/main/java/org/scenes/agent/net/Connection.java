@@ -12,7 +12,7 @@ import java.nio.charset.StandardCharsets;
 /**
  * One player's UDP socket. The first datagram goes to the server's init port; the server answers
  * from a port of its own for this client, and from then on everything goes to that port and only
- * datagrams from it are taken (others are counted and dropped). The socket is not
+ * datagrams from it are taken (others are dropped). The socket is not
  * {@code connect}ed: connecting may discard what already waits in its buffer, and the server
  * sends its parameters right after the init answer. Every datagram sent ends with a NUL, as the
  * real server expects from version 8 on.
@@ -26,12 +26,25 @@ final class Connection implements AutoCloseable {
     private final ByteBuffer in = ByteBuffer.allocate(MAX_DATAGRAM);
     private final InetSocketAddress initPort;
     private InetSocketAddress clientPort;
-    private long strays;
 
     /** One message received: its bytes without trailing NULs, when it arrived. */
     record Datagram(byte[] bytes, long receivedNanos) {
         String text() {
             return new String(bytes, StandardCharsets.UTF_8);
+        }
+
+        /** The integer after the head word ({@code (sense_body 42 ...)}: 42), -1 when there is none. */
+        int time() {
+            int i = 0;
+            while (i < bytes.length && bytes[i] != ' ') {
+                i++;
+            }
+            int value = 0;
+            int digits = 0;
+            for (i++; i < bytes.length && bytes[i] >= '0' && bytes[i] <= '9' && digits < 9; i++, digits++) {
+                value = value * 10 + (bytes[i] - '0');
+            }
+            return digits == 0 ? -1 : value;
         }
 
         boolean startsWith(String head) {
@@ -111,13 +124,7 @@ final class Connection implements AutoCloseable {
             if (from.equals(clientPort)) {
                 return datagram();
             }
-            strays++;
         }
-    }
-
-    /** Datagrams that came from elsewhere than the server's port for this client. */
-    long strays() {
-        return strays;
     }
 
     /** Waits up to {@code timeoutMillis} for a datagram; null when none came (or {@link #wakeup} was called). */

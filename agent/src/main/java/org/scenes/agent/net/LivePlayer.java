@@ -19,7 +19,9 @@ import org.scenes.protocol.Hear;
 import org.scenes.protocol.InitReply;
 import org.scenes.protocol.Message;
 import org.scenes.protocol.MessageParser;
+import org.scenes.protocol.Parameters;
 import org.scenes.protocol.ProtocolException;
+import org.scenes.protocol.See;
 import org.scenes.protocol.SenseBody;
 import org.scenes.protocol.ServerNotice;
 
@@ -33,20 +35,33 @@ import org.scenes.protocol.ServerNotice;
  * has acted on everything before it.
  *
  * <p><b>Cycles, due and missed.</b> A cycle is the time from one {@code sense_body} to the next
- * (the server sends one as each cycle starts). A body command ({@code dash}, {@code turn},
- * {@code kick}, {@code move}, {@code catch}, {@code tackle}) is <em>due</em> in a cycle when the
- * brain answers a message that arrived in that cycle with one; brains that choose to wait (the
+ * (the server sends one per cycle); cycles played counts them. A body command ({@code dash},
+ * {@code turn}, {@code kick}, {@code move}, {@code catch}, {@code tackle}) is <em>due</em> in a
+ * cycle when the brain answers a message of that cycle with one; brains that choose to wait (the
  * classic Krislet acts every second cycle) owe nothing in the cycles they skip. A due cycle is
- * <em>missed</em> when its body command leaves after the next {@code sense_body} has arrived: just
- * before sending, the player takes in everything the socket holds, and a {@code sense_body} among
- * it means the server has moved on. The decision-time sample is the brain's answers that held a
- * body command: its mean and 99th percentile describe the same calls.
+ * <em>missed</em> when its command left too late for the server to execute it in that cycle.
+ * Just before sending, the player takes in everything its socket holds; the command is late when
+ * a {@code sense_body} of a later cycle is among it: one stamped with a later time than the
+ * message answered, or, for an answer to a {@code sense_body}, any. (The server may send a
+ * cycle's {@code see} just before that cycle's own {@code sense_body}; while the clock stands
+ * still, before kick-off and after goals, all carry the same time, so a {@code see}'s answer is
+ * late when two {@code sense_body}s of its time are waiting.) That is real-time mode. In
+ * synchronous mode (a {@code (think)} has come, or {@code server_param} said {@code synch_mode 1})
+ * a cycle ends with this player's {@code (done)}: the server executes everything that came before
+ * it, and steps only when every player is done. This player answers a {@code (think)} only after
+ * acting on everything before it, so no synchronous cycle is missed; a {@code see} the server
+ * sends after its {@code (think)} (version 17 and older: the view does not keep to the cycle)
+ * is answered in the next cycle, as intended. There the figure that counts is the decision time:
+ * how long the server waits.
+ * The decision-time sample is the brain's answers that held a body command: its mean and 99th
+ * percentile describe the same calls.
  *
- * <p><b>Kick-off positions.</b> The brain's own {@code move} before kick-off is remembered; the
- * real server does not put players back after a goal, so while the referee's {@code goal_*}
- * mode lasts the player sends that move again at the start of each cycle (before the brain's
- * command, so the server takes it), and once after {@code half_time}. A brain that never moved
- * gets a formation spot by uniform number at the first {@code sense_body}.
+ * <p><b>Kick-off positions.</b> The brain's own {@code move} before kick-off is remembered. The
+ * real server does not put players back after a goal (the embedded simulator does), so after the
+ * referee's {@code goal_*}, and after {@code half_time}, the player sends that move again at the
+ * start of the next two cycles: the server executes the first body command of a cycle, and a
+ * cycle's {@code see} may come before its {@code sense_body}. A brain that never moved gets a
+ * formation spot by uniform number at the first {@code sense_body}.
  */
 public final class LivePlayer implements Runnable {
     /** How long one wait on the socket lasts before the stop flag is looked at again. */
@@ -83,9 +98,12 @@ public final class LivePlayer implements Runnable {
     private long dueCycle = -1;
     private long missedCycle = -1;
     private String kickOffMove;
-    private boolean goalPause;
-    private boolean moveOnce;
+    /** Kick-off moves still to send, one per cycle start. */
+    private int movesOwed;
     private boolean gameOver;
+    private boolean synchronous;
+    /** The latest time a timed message (see, sense_body, hear) carried. */
+    private int lastTime;
 
     /**
      * @param goalie whether this player inits as goalie
@@ -220,16 +238,25 @@ public final class LivePlayer implements Runnable {
         }
         boolean think = false;
         boolean cycleStart = false;
-        if (message instanceof SenseBody) {
+        if (message instanceof SenseBody body) {
             cycles++;
             cycleStart = true;
+            lastTime = body.time();
+        } else if (message instanceof See see) {
+            lastTime = see.time();
         } else if (message instanceof ServerNotice notice) {
             if (notice.isError()) {
                 errors.merge(notice.text(), 1L, Long::sum);
             }
             think = notice.head().equals("think");
-        } else if (message instanceof Hear hear && hear.speaker() == Hear.Speaker.REFEREE) {
-            referee(hear.text());
+            synchronous |= think;
+        } else if (message instanceof Hear hear) {
+            lastTime = hear.time();
+            if (hear.speaker() == Hear.Speaker.REFEREE) {
+                referee(hear.text());
+            }
+        } else if (message instanceof Parameters parameters && parameters.head().equals("server_param")) {
+            synchronous |= parameters.number("synch_mode") == 1;
         }
         if (cycleStart) {
             positionIfNeeded();
@@ -253,7 +280,7 @@ public final class LivePlayer implements Runnable {
                     due++;
                 }
                 takeWaiting();
-                if (missedCycle != cycles && nextCycleArrived()) {
+                if (missedCycle != cycles && late(cycleStart)) {
                     missedCycle = cycles;
                     missed++;
                 }
@@ -269,13 +296,8 @@ public final class LivePlayer implements Runnable {
     }
 
     private void referee(String mode) {
-        if (mode.startsWith("goal_")) {
-            goalPause = true;
-        } else if (mode.equals("half_time")) {
-            goalPause = false;
-            moveOnce = true;
-        } else if (mode.startsWith("kick_off_") || mode.equals("play_on") || mode.equals("before_kick_off")) {
-            goalPause = false;
+        if (mode.startsWith("goal_") || mode.equals("half_time")) {
+            movesOwed = 2;
         } else if (mode.equals("time_over")) {
             gameOver = true;
         }
@@ -287,8 +309,8 @@ public final class LivePlayer implements Runnable {
             double[] spot = FORMATION[(Math.max(1, unum) - 1) % FORMATION.length];
             kickOffMove = "(move " + format(spot[0]) + " " + format(spot[1]) + ")";
             send(kickOffMove);
-        } else if (kickOffMove != null && (goalPause || moveOnce)) {
-            moveOnce = false;
+        } else if (kickOffMove != null && movesOwed > 0) {
+            movesOwed--;
             send(kickOffMove);
         }
     }
@@ -309,10 +331,18 @@ public final class LivePlayer implements Runnable {
         }
     }
 
-    private boolean nextCycleArrived() {
+    /** Whether what waits in the queue shows the server has moved past the cycle being answered. */
+    private boolean late(boolean answeringSenseBody) {
+        if (synchronous) {
+            return false;
+        }
+        int sameTime = 0;
         for (Datagram waiting : queue) {
-            if (waiting.startsWith("(sense_body")) {
-                return true;
+            if (waiting.startsWith("(sense_body ")) {
+                int time = waiting.time();
+                if (answeringSenseBody || time > lastTime || (time == lastTime && ++sameTime == 2)) {
+                    return true;
+                }
             }
         }
         return false;
