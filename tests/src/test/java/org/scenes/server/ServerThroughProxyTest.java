@@ -138,7 +138,8 @@ class ServerThroughProxyTest {
             assertTrue(fromServer.get(fromServer.size() - 1).endsWith("referee time_over)"), "to the end: " + log);
             ConversionReport report = converter.convert(log, scene -> { });
             assertEquals(0, report.malformed(), log + ": " + report.malformedLines());
-            assertTrue(report.scenes() > CYCLES / 2, log + " gives scenes: " + report.scenes());
+            // a see on two cycles of three, three in four answered: about half a scene per cycle
+            assertTrue(report.scenes() > CYCLES * 0.4, log + " gives scenes: " + report.scenes());
         }
     }
 }
