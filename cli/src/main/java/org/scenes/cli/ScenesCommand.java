@@ -15,7 +15,8 @@ import picocli.CommandLine.Spec;
         subcommands = {CommandLine.HelpCommand.class, PluginsCommand.class, ConvertCommand.class,
                 ShowCommand.class, StatsCommand.class, ExportCommand.class,
                 ValidateCommand.class, TuneCommand.class, ExperimentCommand.class, BenchCommand.class,
-                SimulateCommand.class, PlayCommand.class, DemoCommand.class, ProxyCommand.class})
+                SimulateCommand.class, PlayCommand.class, EvaluateCommand.class, DemoCommand.class,
+                ProxyCommand.class})
 final class ScenesCommand implements Runnable {
     @Spec
     CommandLine.Model.CommandSpec spec;
