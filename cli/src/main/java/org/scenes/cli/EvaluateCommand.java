@@ -19,6 +19,7 @@ import org.scenes.evaluate.Comparison;
 import org.scenes.evaluate.Evaluation;
 import org.scenes.evaluate.HtmlReport;
 import org.scenes.evaluate.Learner;
+import org.scenes.evaluate.PacedBrain;
 import org.scenes.evaluate.Tables;
 import org.scenes.match.KnowledgeBase;
 import org.scenes.plugin.PluginRegistry;
@@ -80,6 +81,11 @@ final class EvaluateCommand implements Callable<Integer> {
                     + " evaluation seed). Default: ${DEFAULT-VALUE}.")
     int trainGames;
 
+    @Option(names = "--think-steps", paramLabel = "N", defaultValue = "0",
+            description = "Pace the imitator like the Krislet client's think loop: decide on the latest see every N"
+                    + " steps (Krislet: 2); 0 answers every see, as 'scenes play' does. Default: ${DEFAULT-VALUE}.")
+    int thinkSteps;
+
     @Option(names = "--json", description = "Print one JSON object instead of the table.")
     boolean json;
 
@@ -121,7 +127,8 @@ final class EvaluateCommand implements Callable<Integer> {
 
     /** Everything the evaluation needs, checked. */
     record Setup(String teacherName, GameSetup.Team teacher, GameSetup.Team opponent, MatchConfig config,
-                 PluginRegistry registry, List<Path> sceneFiles, int trainGames, int cycles, List<Long> seeds) {
+                 PluginRegistry registry, List<Path> sceneFiles, int trainGames, int cycles, List<Long> seeds,
+                 int thinkSteps) {
     }
 
     /** The evaluation's games, figures and a description of what was compared. */
@@ -146,9 +153,12 @@ final class EvaluateCommand implements Callable<Integer> {
         for (int i = 0; i < seeds; i++) {
             seedList.add(firstSeed + i);
         }
+        if (thinkSteps < 0) {
+            throw new UsageException("--think-steps: must be 0 or more, not " + thinkSteps);
+        }
         return new Setup(teacher, SimulateCommand.team(teacher + ":" + players, "Teal"),
                 SimulateCommand.team(opponent, "Amber"), configs.get(0), top.global.registry(), sceneFiles, trainGames,
-                cycles, seedList);
+                cycles, seedList, thinkSteps);
     }
 
     /** Learns the imitator and plays the games, with a progress bar per stage on a terminal. */
@@ -187,12 +197,15 @@ final class EvaluateCommand implements Callable<Integer> {
                     + " scenes): " + String.join(" ", setup.sceneFiles().stream().map(Path::toString).toList()));
         }
         about.put("matching", setup.config().describe());
+        about.put("imitator tempo", setup.thinkSteps() == 0 ? "answers every see"
+                : "decides on the latest see every " + setup.thinkSteps() + " steps (the Krislet client's think loop)");
         about.put("games", setup.seeds().size() + " per side of " + setup.cycles() + " cycles, seeds " + setup.seeds());
         if (out != null) {
             out.printf(Locale.ROOT, "%-14s %d scenes; %s%n", "Learnt", imitator.scenes(), setup.config().describe());
             out.flush();
         }
-        Evaluation.Plan plan = new Evaluation.Plan(setup.teacher(), imitator.brains(), setup.opponent(), setup.cycles(),
+        Evaluation.Plan plan = new Evaluation.Plan(setup.teacher(),
+                PacedBrain.pace(imitator.brains(), setup.thinkSteps()), setup.opponent(), setup.cycles(),
                 setup.seeds());
         Evaluation.Results results;
         try (ProgressBar bar = bar("Evaluating", plan.totalCycles())) {
