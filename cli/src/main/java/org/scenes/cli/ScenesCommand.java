@@ -15,7 +15,7 @@ import picocli.CommandLine.Spec;
         subcommands = {CommandLine.HelpCommand.class, PluginsCommand.class, ConvertCommand.class,
                 ShowCommand.class, StatsCommand.class, ExportCommand.class,
                 ValidateCommand.class, TuneCommand.class, ExperimentCommand.class, BenchCommand.class,
-                SimulateCommand.class, PlayCommand.class, EvaluateCommand.class, DemoCommand.class,
+                SimulateCommand.class, PlayCommand.class, EvaluateCommand.class, MatchCommand.class, DemoCommand.class,
                 ProxyCommand.class})
 final class ScenesCommand implements Runnable {
     @Spec

@@ -11,6 +11,7 @@ import org.scenes.agent.BrainFactory;
 import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.gamelog.GameFrame;
+import org.scenes.scene.Side;
 
 /**
  * Teacher and imitator in the same situations: for every seed, one game with the teacher team on
@@ -71,14 +72,7 @@ public final class Evaluation {
     public static PlayedGame play(PlayedGame.Role role, GameSetup.Team left, BrainFactory shadow, Plan plan, long seed,
                                   Arena arena, long[] done, LongConsumer progress) throws IOException {
         List<PlayerTrace> traces = new ArrayList<>();
-        BrainFactory traced = (team, random) -> {
-            PlayerTrace trace = new PlayerTrace(traces.size() + 1);
-            traces.add(trace);
-            Brain driver = left.brains().create(team, random);
-            // the shadow's own random source: it must not draw from the driver's
-            Brain shadowBrain = shadow == null ? null : shadow.create(team, new Random(seed * 31 + traces.size()));
-            return new TracedBrain(driver, shadowBrain, trace);
-        };
+        BrainFactory traced = traced(left.brains(), shadow, seed, traces);
         GameSetup setup = new GameSetup(new GameSetup.Team(left.name(), left.players(), traced), plan.opponent(),
                 plan.cycles(), seed, null);
         List<GameFrame> frames = new ArrayList<>();
@@ -87,7 +81,22 @@ public final class Evaluation {
         done[0] = before + plan.cycles();
         progress.accept(done[0]);
         traces.forEach(PlayerTrace::close);
-        return new PlayedGame(role, seed, result, frames, traces);
+        return new PlayedGame(role, Side.LEFT, seed, result, frames, traces);
+    }
+
+    /**
+     * Brains of {@code driver}, each traced into a new entry of {@code traces} (in the order the
+     * simulator seats them: uniform numbers 1, 2, ...), with a {@code shadow} brain (or none) beside.
+     */
+    static BrainFactory traced(BrainFactory driver, BrainFactory shadow, long seed, List<PlayerTrace> traces) {
+        return (team, random) -> {
+            PlayerTrace trace = new PlayerTrace(traces.size() + 1);
+            traces.add(trace);
+            Brain driving = driver.create(team, random);
+            // the shadow's own random source: it must not draw from the driver's
+            Brain shadowBrain = shadow == null ? null : shadow.create(team, new Random(seed * 31 + traces.size()));
+            return new TracedBrain(driving, shadowBrain, trace);
+        };
     }
 
     /** The games played, teacher's and imitator's, in seed order. */

@@ -8,7 +8,7 @@ import org.scenes.protocol.PlayerCommand;
 import org.scenes.scene.Side;
 
 /**
- * The behaviour figures of the left team in one game. Counted while the game is not paused
+ * The behaviour figures of one team in one game. Counted while the game is not paused
  * (before kick-off, after a goal, at half time nothing a player does moves it).
  *
  * @param dashes body commands sent on sees, by type (the action mix)
@@ -88,8 +88,9 @@ public record GameFigures(int dashes, int turns, int kicks, double answered, dou
         }
         double cycles = Math.max(1, game.result().cycles());
         return new GameFigures(dashes, turns, kicks, share(answered, sees),
-                1000 * game.result().kicksLeft() / cycles, 1000 * game.result().scoreLeft() / cycles,
-                1000 * game.result().scoreRight() / cycles, ballDistance(game.frames()), firstTouch(game.frames()),
+                1000 * game.kicks() / cycles, 1000 * game.goalsFor() / cycles,
+                1000 * game.goalsAgainst() / cycles, ballDistance(game.frames(), game.side()),
+                firstTouch(game.frames(), game.side()),
                 share(stuck, answered), share(agreed, compared), share(agreedType, compared));
     }
 
@@ -103,7 +104,7 @@ public record GameFigures(int dashes, int turns, int kicks, double answered, dou
         return whole == 0 ? Double.NaN : (double) part / whole;
     }
 
-    static double ballDistance(List<GameFrame> frames) {
+    static double ballDistance(List<GameFrame> frames, Side side) {
         double sum = 0;
         long count = 0;
         for (GameFrame frame : frames) {
@@ -111,7 +112,7 @@ public record GameFigures(int dashes, int turns, int kicks, double answered, dou
                 continue;
             }
             for (PlayerState player : frame.players()) {
-                if (player.side() == Side.LEFT) {
+                if (player.side() == side) {
                     sum += Math.hypot(player.x() - frame.ball().x(), player.y() - frame.ball().y());
                     count++;
                 }
@@ -121,7 +122,7 @@ public record GameFigures(int dashes, int turns, int kicks, double answered, dou
     }
 
     /** Mean cycles from each kick-off to the team's first reach of the ball; kick-offs it never reached are left out. */
-    static double firstTouch(List<GameFrame> frames) {
+    static double firstTouch(List<GameFrame> frames, Side side) {
         double sum = 0;
         int count = 0;
         int kickOff = -1;
@@ -136,7 +137,7 @@ public record GameFigures(int dashes, int turns, int kicks, double answered, dou
                 continue;
             }
             for (PlayerState player : frame.players()) {
-                if (player.side() == Side.LEFT
+                if (player.side() == side
                         && Math.hypot(player.x() - frame.ball().x(), player.y() - frame.ball().y()) <= KICKABLE) {
                     sum += frame.time() - kickOff;
                     count++;

@@ -109,6 +109,48 @@ public final class Tables {
         return Double.isNaN(v) || Double.isInfinite(v) ? null : v;
     }
 
+    /** Two teams of one game side by side, one line per figure. */
+    public static String match(String leftLabel, GameFigures left, String rightLabel, GameFigures right) {
+        StringBuilder out = new StringBuilder();
+        out.append(String.format(Locale.ROOT, "%-34s %14s %14s%n", "figure", leftLabel, rightLabel));
+        Map<String, double[]> rows = rows(left, right);
+        rows.forEach((label, values) -> out.append(String.format(Locale.ROOT, "%-34s %14s %14s%n", label,
+                value(label, values[0]), value(label, values[1]))));
+        out.append(String.format(Locale.ROOT, "%-34s %14s %14s%n", "action-mix divergence (JSD, bits)", "",
+                String.format(Locale.ROOT, "%.4f", Comparison.jensenShannon(left.mix(), right.mix()))));
+        return out.toString();
+    }
+
+    /** One game's figures of one team for a JSON writer. */
+    public static Map<String, Object> json(GameFigures figures) {
+        Map<String, Object> map = new LinkedHashMap<>();
+        rows(figures, figures).forEach((label, values) -> map.put(label, nullable(values[0])));
+        return map;
+    }
+
+    private static Map<String, double[]> rows(GameFigures a, GameFigures b) {
+        Map<String, double[]> rows = new LinkedHashMap<>();
+        rows.put("dash share", new double[] {a.mix()[0], b.mix()[0]});
+        rows.put("turn share", new double[] {a.mix()[1], b.mix()[1]});
+        rows.put("kick share", new double[] {a.mix()[2], b.mix()[2]});
+        rows.put("sees answered", new double[] {a.answered(), b.answered()});
+        rows.put("kicks / 1000 cycles", new double[] {a.kicksPer1000(), b.kicksPer1000()});
+        rows.put("goals / 1000 cycles", new double[] {a.goalsPer1000(), b.goalsPer1000()});
+        rows.put("mean distance to ball (m)", new double[] {a.ballDistance(), b.ballDistance()});
+        rows.put("kick-off to first touch (cycles)", new double[] {a.firstTouch(), b.firstTouch()});
+        rows.put("stuck share", new double[] {a.stuckShare(), b.stuckShare()});
+        rows.put("agreement with shadow teacher", new double[] {a.agreement(), b.agreement()});
+        return rows;
+    }
+
+    private static String value(String label, double v) {
+        if (Double.isNaN(v)) {
+            return "-";
+        }
+        boolean percent = label.contains("share") || label.contains("agreement") || label.contains("answered");
+        return percent ? String.format(Locale.ROOT, "%.1f%%", 100 * v) : String.format(Locale.ROOT, "%.2f", v);
+    }
+
     static List<String> labels(List<Comparison.Figure> figures) {
         return figures.stream().map(Tables::shortLabel).toList();
     }

@@ -102,7 +102,7 @@ public final class TuringTest {
         accuracies.add((teacherRight + imitatorRight) / 2);
     }
 
-    /** The feature vectors of one game's windows, every left player. */
+    /** The feature vectors of one game's windows, every player of the game's side. */
     static List<double[]> windows(PlayedGame game) {
         int players = game.traces().size();
         int windowCount = game.result().cycles() / WINDOW + 1;
@@ -112,11 +112,11 @@ public final class TuringTest {
             if (frame.playMode().equals("play_on") && previous != null && previous.time() == frame.time() - 1) {
                 int w = Math.min(windowCount - 1, frame.time() / WINDOW);
                 for (PlayerState player : frame.players()) {
-                    if (player.side() != Side.LEFT || player.unum() > players) {
+                    if (player.side() != game.side() || player.unum() > players) {
                         continue;
                     }
                     PlayerState before = previous.players().stream()
-                            .filter(p -> p.side() == Side.LEFT && p.unum() == player.unum()).findFirst().orElse(null);
+                            .filter(p -> p.side() == game.side() && p.unum() == player.unum()).findFirst().orElse(null);
                     if (before == null) {
                         continue;
                     }
