@@ -13,6 +13,7 @@ import org.scenes.match.KnowledgeBase;
 import org.scenes.match.Recognizer;
 import org.scenes.plugin.PluginRegistry;
 import org.scenes.validate.MatchConfig;
+import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -21,12 +22,22 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
 
-/** {@code scenes play}: imitating players, learnt from scene files, play a game in the embedded simulator. */
-@Command(name = "play", mixinStandardHelpOptions = true,
-        description = {"Play a game in the embedded simulator with imitating players on the left: each see becomes"
-                + " a scene, the nearest stored scenes (--metric, --k) and the selector choose the command."
-                + " The right team is a teacher. Each player's log is written like 'scenes simulate' does."})
+/**
+ * {@code scenes play}: imitating players, learnt from scene files, play a game in the embedded
+ * simulator, or on a soccer server over UDP with {@code --server}.
+ */
+@Command(name = "play",
+        description = {"Play with imitating players: each see becomes a scene, the nearest stored scenes (--metric,"
+                + " --k) and the selector choose the command.",
+                "Without --server: a game in the embedded simulator, imitators on the left, a teacher on the right;"
+                + " each player's log is written like 'scenes simulate' does.",
+                "With --server HOST:PORT: the imitation team plays on that soccer server (rcssserver or any other) over"
+                + " UDP, a thread per player, until the referee says time_over or Ctrl-C; 'scenes team --teacher'"
+                + " starts a teacher team the same way. Exit 1 when a player found no server, lost it or failed."})
 final class PlayCommand implements Callable<Integer> {
+    @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help message and exit.")
+    boolean help;
+
     @Spec
     CommandSpec spec;
 
@@ -39,9 +50,16 @@ final class PlayCommand implements Callable<Integer> {
     @Mixin
     MatchOptions match;
 
-    @Option(names = "--players", paramLabel = "N", defaultValue = "5",
-            description = "Imitating players (1 to 11). Default: ${DEFAULT-VALUE}.")
-    int players;
+    @Option(names = "--players", paramLabel = "N",
+            description = "Imitating players (1 to 11). Default: 5 in the simulator, 11 on a server.")
+    Integer players;
+
+    @Option(names = "--guard", description = "Loop guards: no kick with the ball out of reach, another neighbour's"
+            + " action when the same one leaves the view unchanged for 5 sees. Off: pure imitation.")
+    boolean guard;
+
+    @Mixin
+    LiveOptions live;
 
     @Option(names = "--opponent", paramLabel = "TEACHER:N", defaultValue = "krislet:5",
             description = "The right team: teacher and number of players. Default: ${DEFAULT-VALUE}.")
@@ -55,11 +73,16 @@ final class PlayCommand implements Callable<Integer> {
             description = "Game length in cycles. Default: ${DEFAULT-VALUE}.")
     int cycles;
 
-    @Option(names = "--out-dir", paramLabel = "DIR", required = true, description = "Where the player logs go.")
+    @Option(names = "--out-dir", paramLabel = "DIR",
+            description = "Where the player logs go (the simulator; required there). On a server: --log-dir.")
     Path outDir;
 
+    @Option(names = "--record", paramLabel = "DIR",
+            description = "The simulator: also write the server's game log (.rcg) and command log (.rcl) there.")
+    Path recordDir;
+
     @Override
-    public Integer call() throws IOException {
+    public Integer call() throws IOException, InterruptedException {
         List<MatchConfig> configs = match.configs();
         if (configs.size() != 1) {
             throw new UsageException("play uses one configuration: give one --metric and one --k");
@@ -67,6 +90,14 @@ final class PlayCommand implements Callable<Integer> {
         MatchConfig config = configs.get(0);
         PluginRegistry registry = top.global.registry();
         config.check(registry);
+        ImitationBrain.Guards guards = guard ? ImitationBrain.Guards.ON : ImitationBrain.Guards.OFF;
+        if (live.server != null) {
+            return onServer(config, registry, guards);
+        }
+        if (outDir == null) {
+            throw new UsageException("--out-dir: say where the player logs go (or play on a server with --server)");
+        }
+        int players = this.players == null ? 5 : this.players;
         String[] teamNames = names.split(",", -1);
         if (teamNames.length != 2) {
             throw new UsageException("--names: give two team names, e.g. Imitator,Amber, not '" + names + "'");
@@ -81,7 +112,7 @@ final class PlayCommand implements Callable<Integer> {
         GameSetup setup;
         try {
             GameSetup.Team left = new GameSetup.Team(teamNames[0].trim(), players, ImitationBrain.factory(recognizer,
-                    config.selectorFactory(registry), config.transformFactory(registry)));
+                    config.selectorFactory(registry), config.transformFactory(registry), guards));
             setup = new GameSetup(left, right, cycles, config.seed(), outDir);
         } catch (IllegalArgumentException e) {
             throw new UsageException(e.getMessage());
@@ -89,8 +120,37 @@ final class PlayCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         out.printf(Locale.ROOT, "%-14s %d scenes from %d files; %s%n", "Learnt", knowledge.size(), sceneFiles.size(),
                 config.describe());
-        GameResult result = SimulateCommand.play(setup);
+        org.scenes.agent.sim.Simulator simulator = new org.scenes.agent.sim.Simulator(setup);
+        if (recordDir != null) {
+            simulator.recordTo(recordDir);
+        }
+        GameResult result = SimulateCommand.play(simulator, setup.cycles());
         SimulateCommand.printSummary(out, setup, result, (System.nanoTime() - started) / 1e9);
+        for (Path log : simulator.recorded()) {
+            out.printf(Locale.ROOT, "%-14s %s%n", "Server log", log.toAbsolutePath());
+        }
+        out.flush();
         return ExitCodes.OK;
+    }
+
+    private Integer onServer(MatchConfig config, PluginRegistry registry, ImitationBrain.Guards guards)
+            throws IOException, InterruptedException {
+        CommandLine.ParseResult parsed = spec.commandLine().getParseResult();
+        for (String simulatorOnly : List.of("--opponent", "--names", "--cycles", "--out-dir", "--record")) {
+            if (parsed.hasMatchedOption(simulatorOnly)) {
+                throw new UsageException(simulatorOnly + ": only for the embedded simulator; on a server the server"
+                        + " decides the opponent and the game length (--team names this team, --log-dir keeps the logs)");
+            }
+        }
+        var options = live.clientOptions("Imitator");
+        KnowledgeBase knowledge = KnowledgeBase.load(sceneFiles, config.transformFactory(registry));
+        Recognizer recognizer = new Recognizer(knowledge, config.metricFactory(registry), config.k());
+        PrintWriter err = spec.commandLine().getErr();
+        err.printf(Locale.ROOT, "%-14s %d scenes from %d files; %s%n", "Learnt", knowledge.size(), sceneFiles.size(),
+                config.describe());
+        err.flush();
+        return LiveTeam.play(options, players == null ? 11 : players, ImitationBrain.factory(recognizer,
+                config.selectorFactory(registry), config.transformFactory(registry), guards), config.seed(),
+                live.json, spec.commandLine().getOut(), err);
     }
 }

@@ -53,6 +53,11 @@ final class SimulateCommand implements Callable<Integer> {
             description = "Where the player logs go (created if missing; existing logs of the same names are replaced).")
     Path outDir;
 
+    @Option(names = "--record", paramLabel = "DIR",
+            description = "Also write the server's logs of the game there: the game log (.rcg, rcssserver 19's"
+                    + " text format, for rcssmonitor and other log tools) and the command log (.rcl).")
+    Path recordDir;
+
     /** The teacher names for the help text. */
     static final class TeacherNames implements Iterable<String> {
         @Override
@@ -82,18 +87,31 @@ final class SimulateCommand implements Callable<Integer> {
             throw new UsageException(e.getMessage());
         }
         long started = System.nanoTime();
-        GameResult result = play(setup);
+        Simulator simulator = new Simulator(setup);
+        if (recordDir != null) {
+            simulator.recordTo(recordDir);
+        }
+        GameResult result = play(simulator, setup.cycles());
         printSummary(spec.commandLine().getOut(), setup, result, (System.nanoTime() - started) / 1e9);
+        for (Path log : simulator.recorded()) {
+            spec.commandLine().getOut().printf(Locale.ROOT, "%-14s %s%n", "Server log", log.toAbsolutePath());
+        }
+        spec.commandLine().getOut().flush();
         return ExitCodes.OK;
     }
 
     /** Runs the game with a progress bar in game cycles on a terminal, silent when piped. */
     static GameResult play(GameSetup setup) throws IOException {
+        return play(new Simulator(setup), setup.cycles());
+    }
+
+    /** Runs the simulator's game with a progress bar in game cycles on a terminal, silent when piped. */
+    static GameResult play(Simulator simulator, int cycles) throws IOException {
         try (ProgressBar bar = System.console() == null ? null
-                : new ProgressBarBuilder().setTaskName("Simulating").setInitialMax(setup.cycles())
+                : new ProgressBarBuilder().setTaskName("Simulating").setInitialMax(cycles)
                         .setUnit(" cycles", 1).setConsumer(new ConsoleProgressBarConsumer(System.err))
                         .clearDisplayOnFinish().build()) {
-            return new Simulator(setup).run(time -> {
+            return simulator.run(time -> {
                 if (bar != null) {
                     bar.stepTo(time);
                 }

@@ -15,8 +15,12 @@ import org.scenes.match.SceneTransform;
 import org.scenes.protocol.InitReply;
 import org.scenes.protocol.Message;
 import org.scenes.protocol.MessageParser;
+import org.scenes.protocol.Parameters;
 import org.scenes.protocol.See;
 import org.scenes.scene.Action;
+import org.scenes.scene.ActionType;
+import org.scenes.scene.ObjectKind;
+import org.scenes.scene.SeenObject;
 import org.scenes.scene.Observer;
 import org.scenes.scene.Scene;
 
@@ -31,6 +35,13 @@ import org.scenes.scene.Scene;
  * In validation that is the recorded action; here it is the action this brain chose, which is
  * known only after the query: so each decision runs fresh transforms over the last
  * {@link #HISTORY} scenes, each with its chosen action, and then over the new scene.
+ *
+ * <p>With {@link Guards} on, two of the thesis' remedies overrule the selector: a kick with the
+ * ball out of reach (not seen within {@code player_size + ball_size + kickable_margin} of the
+ * server's parameters) becomes the action of the nearest neighbour that is not a kick; and when
+ * the same action has left what the player sees exactly unchanged for
+ * {@link Guards#stuckSees()} sees in a row, the nearest neighbour with another action is taken.
+ * Each firing is counted ({@link #counters()}).
  */
 public final class ImitationBrain implements Brain {
     /** Scenes replayed through the transforms before each query; enough for one-step memory and more. */
@@ -45,8 +56,38 @@ public final class ImitationBrain implements Brain {
     private final MessageParser parser = new MessageParser();
     private Observer observer = Observer.UNKNOWN;
     private boolean placed;
+    private final Guards guards;
+    private double kickable = DEFAULT_KICKABLE;
     private long decisions;
     private long silent;
+    private long kickGuarded;
+    private long stuckGuarded;
+    private Action lastAction;
+    private List<SeenObject> lastSeen;
+    private int unchanged;
+    private Consumer<Scene> decided = scene -> { };
+
+    /** Kickable distance of the default server: player_size 0.3 + ball_size 0.085 + kickable_margin 0.7. */
+    static final double DEFAULT_KICKABLE = 1.085;
+
+    /**
+     * The loop guards.
+     *
+     * @param enabled whether they overrule the selector at all
+     * @param stuckSees how many sees in a row an action may leave the view unchanged before another is taken
+     */
+    public record Guards(boolean enabled, int stuckSees) {
+        /** Pure imitation: the selector's choice always stands. */
+        public static final Guards OFF = new Guards(false, 0);
+        /** Both guards, stuck after 5 unchanged sees (half a second of normal vision). */
+        public static final Guards ON = new Guards(true, 5);
+
+        public Guards {
+            if (enabled && stuckSees < 2) {
+                throw new IllegalArgumentException("the stuck guard needs at least 2 sees, not " + stuckSees);
+            }
+        }
+    }
 
     /**
      * @param transforms makes a fresh chain of the scene transforms the knowledge base was built
@@ -54,6 +95,12 @@ public final class ImitationBrain implements Brain {
      */
     public ImitationBrain(String team, Recognizer recognizer, ActionSelector selector,
                           Supplier<List<SceneTransform>> transforms, Random random) {
+        this(team, recognizer, selector, transforms, random, Guards.OFF);
+    }
+
+    public ImitationBrain(String team, Recognizer recognizer, ActionSelector selector,
+                          Supplier<List<SceneTransform>> transforms, Random random, Guards guards) {
+        this.guards = Objects.requireNonNull(guards, "guards");
         this.team = Objects.requireNonNull(team, "team");
         this.recognizer = Objects.requireNonNull(recognizer, "recognizer");
         this.selector = Objects.requireNonNull(selector, "selector");
@@ -64,7 +111,13 @@ public final class ImitationBrain implements Brain {
     /** A factory sharing one recognizer (it is thread-safe) with a fresh selector and transforms per player. */
     public static BrainFactory factory(Recognizer recognizer, Supplier<ActionSelector> selectors,
                                        Supplier<List<SceneTransform>> transforms) {
-        return (team, random) -> new ImitationBrain(team, recognizer, selectors.get(), transforms, random);
+        return factory(recognizer, selectors, transforms, Guards.OFF);
+    }
+
+    /** The same, every brain with the given guards. */
+    public static BrainFactory factory(Recognizer recognizer, Supplier<ActionSelector> selectors,
+                                       Supplier<List<SceneTransform>> transforms, Guards guards) {
+        return (team, random) -> new ImitationBrain(team, recognizer, selectors.get(), transforms, random, guards);
     }
 
     @Override
@@ -75,6 +128,12 @@ public final class ImitationBrain implements Brain {
         } else if (!placed && text.startsWith("(player_type")) {
             placed = true;
             send.accept(Action.move(-random.nextDouble() * 52.5, 34 - random.nextDouble() * 68).command());
+        } else if (message instanceof Parameters parameters && parameters.head().equals("server_param")) {
+            double reach = parameters.number("player_size") + parameters.number("ball_size")
+                    + parameters.number("kickable_margin");
+            if (!Double.isNaN(reach)) {
+                kickable = reach;
+            }
         } else if (message instanceof See see) {
             String command = decide(see);
             if (command != null) {
@@ -98,16 +157,66 @@ public final class ImitationBrain implements Brain {
         List<Neighbour> nearest = recognizer.nearest(query);
         decisions++;
         Action action = nearest.isEmpty() ? null : selector.select(nearest, random);
+        if (guards.enabled() && action != null) {
+            action = guard(action, seen.objects(), nearest);
+        }
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
-        history.addLast(new Scene(seen.cycle(), seen.observer(), seen.objects(),
-                action == null ? List.of() : List.of(action)));
+        Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(),
+                action == null ? List.of() : List.of(action));
+        history.addLast(made);
+        decided.accept(made);
         if (action == null) {
             silent++;
             return null;
         }
         return action.command();
+    }
+
+    private Action guard(Action chosen, List<SeenObject> seen, List<Neighbour> nearest) {
+        Action action = chosen;
+        if (action.type() == ActionType.KICK && !ballWithin(seen, kickable)) {
+            kickGuarded++;
+            action = nearestOther(nearest, candidate -> candidate.type() != ActionType.KICK);
+            if (action == null) {
+                return null;
+            }
+        }
+        unchanged = action.equals(lastAction) && seen.equals(lastSeen) ? unchanged + 1 : 0;
+        if (unchanged + 1 >= guards.stuckSees()) {
+            Action stuck = action;
+            Action other = nearestOther(nearest, candidate -> !candidate.equals(stuck)
+                    && (candidate.type() != ActionType.KICK || ballWithin(seen, kickable)));
+            if (other != null) {
+                stuckGuarded++;
+                action = other;
+                unchanged = 0;
+            }
+        }
+        lastAction = action;
+        lastSeen = seen;
+        return action;
+    }
+
+    /** The primary action of the nearest neighbour whose action passes, or null. */
+    private static Action nearestOther(List<Neighbour> nearest, java.util.function.Predicate<Action> wanted) {
+        for (Neighbour neighbour : nearest) {
+            Action action = neighbour.scene().primaryAction();
+            if (action != null && wanted.test(action)) {
+                return action;
+            }
+        }
+        return null;
+    }
+
+    private static boolean ballWithin(List<SeenObject> seen, double reach) {
+        for (SeenObject object : seen) {
+            if (object.kind() == ObjectKind.BALL && object.distance() <= reach) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static Scene applyAll(List<SceneTransform> chain, Scene scene) {
@@ -117,6 +226,14 @@ public final class ImitationBrain implements Brain {
         return scene;
     }
 
+    /**
+     * Tells {@code listener} of every scene this brain builds from a see, with the action it chose
+     * (none when silent): the scenes a log of the same traffic converts to.
+     */
+    public void onScene(Consumer<Scene> listener) {
+        decided = Objects.requireNonNull(listener, "listener");
+    }
+
     /** Sees answered so far, and how many of them got no action. */
     public long decisions() {
         return decisions;
@@ -124,5 +241,17 @@ public final class ImitationBrain implements Brain {
 
     public long silent() {
         return silent;
+    }
+
+    /** What this brain counts of itself, by name, for the runtime's report. */
+    public java.util.Map<String, Long> counters() {
+        java.util.Map<String, Long> counters = new java.util.LinkedHashMap<>();
+        counters.put("decisions", decisions);
+        counters.put("silent", silent);
+        if (guards.enabled()) {
+            counters.put("guard.kick_out_of_reach", kickGuarded);
+            counters.put("guard.stuck", stuckGuarded);
+        }
+        return counters;
     }
 }

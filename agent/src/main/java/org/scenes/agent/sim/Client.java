@@ -2,22 +2,26 @@ package org.scenes.agent.sim;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.util.ArrayList;
-import java.util.List;
 import org.scenes.agent.Brain;
 
-/** The simulator's end of one player's connection: delivers text to the brain, logs both ways. */
+/**
+ * An in-process client: delivers the engine's messages to a brain and hands its commands back
+ * to the engine, logging both ways in the player's log.
+ */
 final class Client {
-    final Player player;
     private final Brain brain;
     private final PlayerLog log;
-    /** Commands sent since the server last executed this client's commands. */
-    final List<String> sent = new ArrayList<>();
+    private final Engine engine;
+    private Seat seat;
 
-    Client(Player player, Brain brain, PlayerLog log) {
-        this.player = player;
+    Client(Brain brain, PlayerLog log, Engine engine) {
         this.brain = brain;
         this.log = log;
+        this.engine = engine;
+    }
+
+    void seat(Seat taken) {
+        this.seat = taken;
     }
 
     /** Something the client sent on its own (its init). */
@@ -29,7 +33,9 @@ final class Client {
         record(message);
         brain.receive(message, command -> {
             record(command);
-            sent.add(command);
+            if (!engine.answerNow(seat, command)) {
+                engine.received(seat, command);
+            }
         });
     }
 

@@ -7,6 +7,8 @@ enum PlayMode {
     KICK_IN(true, "kick_in"),
     CORNER_KICK(true, "corner_kick"),
     GOAL_KICK(true, "goal_kick"),
+    /** After a goalie caught the ball: the goalie's side kicks. */
+    FREE_KICK(true, "free_kick"),
     PLAY_ON(true, "play_on"),
     /** After a goal, until the next kick-off: the clock stands still. */
     AFTER_GOAL(false, "goal"),
@@ -24,7 +26,7 @@ enum PlayMode {
 
     /** A restart: only the side awarded it may kick, the other keeps its distance. */
     boolean restart() {
-        return this == KICK_OFF || this == KICK_IN || this == CORNER_KICK || this == GOAL_KICK;
+        return this == KICK_OFF || this == KICK_IN || this == CORNER_KICK || this == GOAL_KICK || this == FREE_KICK;
     }
 
     /** Whether players may {@code move} (teleport) in this mode. */

@@ -2,11 +2,12 @@ package org.scenes.agent.sim;
 
 import org.scenes.scene.Side;
 
-/** One player's body as the server keeps it, with its command counters. */
+/** One player's body as the server keeps it, with its view mode and command counters. */
 final class Player extends MovingObject {
     final String team;
     final Side side;
     final int unum;
+    final boolean goalie;
     /** Body direction in degrees, world frame (0 = towards x+, positive = clockwise on screen). */
     double body;
     /** Neck angle relative to the body. */
@@ -14,23 +15,52 @@ final class Player extends MovingObject {
     double stamina;
     double effort = 1;
     double recovery = 1;
+    ViewWidth viewWidth = ViewWidth.NORMAL;
+    boolean highQuality = true;
     int kicks;
     int dashes;
     int turns;
     int turnNecks;
     int moves;
+    int catches;
+    int changeViews;
+    int says;
     /** Whether a world-changing command was already executed this cycle. */
     boolean acted;
 
-    Player(String team, Side side, int unum, double stamina) {
+    Player(String team, Side side, int unum, boolean goalie, double stamina) {
         this.team = team;
         this.side = side;
         this.unum = unum;
+        this.goalie = goalie;
         this.stamina = stamina;
         this.body = side == Side.LEFT ? 0 : 180;
     }
 
     double head() {
         return Numbers.normalize(body + neck);
+    }
+
+    /** The view widths of {@code change_view}: cone in degrees and see period relative to normal. */
+    enum ViewWidth {
+        NARROW("narrow", 0.5), NORMAL("normal", 1), WIDE("wide", 2);
+
+        final String word;
+        /** The cone's width and the see period, as multiples of visible_angle and send_step. */
+        final double factor;
+
+        ViewWidth(String word, double factor) {
+            this.word = word;
+            this.factor = factor;
+        }
+
+        static ViewWidth of(String word) {
+            for (ViewWidth width : values()) {
+                if (width.word.equals(word)) {
+                    return width;
+                }
+            }
+            return null;
+        }
     }
 }

@@ -66,6 +66,19 @@ final class Referee {
         }
     }
 
+    /**
+     * A goalie caught the ball: the referee says {@code goalie_catch_ball_X}, and the goalie's
+     * side takes a free kick from where the ball is.
+     */
+    void caught(Player goalie) {
+        world.lastTouch = goalie.side;
+        announce("goalie_catch_ball_" + goalie.side.letter());
+        world.mode = PlayMode.FREE_KICK;
+        world.restartSide = goalie.side;
+        waited = 0;
+        announce("free_kick_" + goalie.side.letter());
+    }
+
     /** Ends a step: judges the ball, then advances the clock or the pause. */
     void endStep() {
         switch (world.mode) {

@@ -75,4 +75,112 @@ record ServerParams(double ballAccelMax, double ballDecay, double ballRand, doub
     private static String pair(String name, double value) {
         return "(" + name + " " + Numbers.format(value, 6) + ")";
     }
+
+    /**
+     * The version 7 {@code server_param}: values only, in the server's fixed order. The modelled
+     * parameters take this simulator's values; the others the server's defaults, but coach
+     * modes off.
+     */
+    String serverParamMessageV7(int halfTime, int dropBallTime) {
+        java.util.Map<String, String> ours = new java.util.HashMap<>();
+        ours.put("goalWidth", n(goalWidth));
+        ours.put("inertiaMoment", n(inertiaMoment));
+        ours.put("playerSize", n(playerSize));
+        ours.put("playerDecay", n(playerDecay));
+        ours.put("playerRand", n(playerRand));
+        ours.put("playerSpeedMax", n(playerSpeedMax));
+        ours.put("playerAccelMax", n(playerAccelMax));
+        ours.put("staminaMax", n(staminaMax));
+        ours.put("staminaInc", n(staminaIncMax));
+        ours.put("recoverDecThr", n(recoverDecThr));
+        ours.put("recoverMin", n(recoverMin));
+        ours.put("recoverDec", n(recoverDec));
+        ours.put("effortDecThr", n(effortDecThr));
+        ours.put("effortMin", n(effortMin));
+        ours.put("effortDec", n(effortDec));
+        ours.put("effortIncThr", n(effortIncThr));
+        ours.put("effortInc", n(effortInc));
+        ours.put("kickRand", n(kickRand));
+        ours.put("ballSize", n(ballSize));
+        ours.put("ballDecay", n(ballDecay));
+        ours.put("ballRand", n(ballRand));
+        ours.put("ballSpeedMax", n(ballSpeedMax));
+        ours.put("ballAccelMax", n(ballAccelMax));
+        ours.put("dashPowerRate", n(dashPowerRate));
+        ours.put("kickPowerRate", n(kickPowerRate));
+        ours.put("kickableMargin", n(kickableMargin));
+        ours.put("maxPower", n(maxPower));
+        ours.put("minPower", n(minPower));
+        ours.put("maxMoment", n(maxMoment));
+        ours.put("minMoment", n(minMoment));
+        ours.put("maxNeckAngle", n(maxNeckAng));
+        ours.put("minNeckAngle", n(minNeckAng));
+        ours.put("visibleAngleDegree", n(visibleAngle));
+        ours.put("visibleDistance", n(visibleDistance));
+        ours.put("kickableArea", n(kickableDistance()));
+        ours.put("catchAreaLength", n(CATCHABLE_AREA_L));
+        ours.put("catchAreaWidth", n(CATCHABLE_AREA_W));
+        ours.put("catchBanCycle", Integer.toString(CATCH_BAN_CYCLE));
+        ours.put("halfTime", Integer.toString(halfTime));
+        ours.put("simStep", Integer.toString(simulatorStep));
+        ours.put("sendStep", Integer.toString(sendStep));
+        ours.put("senseBodyStep", Integer.toString(senseBodyStep));
+        ours.put("quantizeStep", n(quantizeStep));
+        ours.put("landmarkQuantizeStep", n(quantizeStepL));
+        ours.put("coachMode", "0");
+        ours.put("coachWithRefereeMode", "0");
+        ours.put("dropTime", Integer.toString(dropBallTime));
+        StringBuilder text = new StringBuilder("(server_param");
+        for (String entry : V7_ORDER) {
+            int space = entry.indexOf(' ');
+            String name = entry.substring(0, space);
+            text.append(' ').append(ours.getOrDefault(name, entry.substring(space + 1)));
+        }
+        return text.append(')').toString();
+    }
+
+    /** The version 7 {@code player_param}: one player type, no substitutions. */
+    String playerParamMessageV7() {
+        return "(player_param 1 0 1 0 0 0 -0.1 0.1 25 0 0 -100 -0.1 0.1 1 0 50 -0.004 -0.004)";
+    }
+
+    /** The version 7 {@code player_type}: the default type's values in the server's order. */
+    String playerTypeMessageV7() {
+        return "(player_type 0 " + n(playerSpeedMax) + ' ' + n(staminaIncMax) + ' ' + n(playerDecay) + ' '
+                + n(inertiaMoment) + ' ' + n(dashPowerRate) + ' ' + n(playerSize) + ' ' + n(kickableMargin) + ' '
+                + n(kickRand) + " 0 1 " + n(effortMin) + ")";
+    }
+
+    private static String n(double value) {
+        return Numbers.format(value, 6);
+    }
+
+    /** Goalie catches: the catchable area's length and width, and the cycles between attempts. */
+    static final double CATCHABLE_AREA_L = 1.2;
+    static final double CATCHABLE_AREA_W = 1;
+    static final int CATCH_BAN_CYCLE = 5;
+
+    /** The version 7 server_param's order (the server's accessor names) with the server's defaults. */
+    private static final java.util.List<String> V7_ORDER = java.util.List.of(
+            "goalWidth 14.02", "inertiaMoment 5", "playerSize 0.3", "playerDecay 0.4", "playerRand 0.1",
+            "playerWeight 60", "playerSpeedMax 1.05", "playerAccelMax 1", "staminaMax 8000", "staminaInc 45",
+            "recoverInit 1", "recoverDecThr 0.3", "recoverMin 0.5", "recoverDec 0.002", "effortInit 1",
+            "effortDecThr 0.3", "effortMin 0.6", "effortDec 0.005", "effortIncThr 0.6", "effortInc 0.01",
+            "kickRand 0.1", "teamActuatorNoise 0", "playerRandFactorLeft 1", "playerRandFactorRight 1", "kickRandFactorLeft 1",
+            "kickRandFactorRight 1", "ballSize 0.085", "ballDecay 0.94", "ballRand 0.05", "ballWeight 0.2",
+            "ballSpeedMax 3", "ballAccelMax 2.7", "dashPowerRate 0.006", "kickPowerRate 0.027", "kickableMargin 0.7",
+            "controlRadius 2", "controlRadiusWidth 1.7", "maxPower 100", "minPower -100", "maxMoment 180",
+            "minMoment -180", "maxNeckMoment 180", "minNeckMoment -180", "maxNeckAngle 90", "minNeckAngle -90",
+            "visibleAngleDegree 90", "visibleDistance 3", "windDir 0", "windForce 0", "windAngle 0",
+            "windRand 0", "kickableArea 1.085", "catchAreaLength 1.2", "catchAreaWidth 1", "catchProbability 1",
+            "goalieMaxMoves 2", "cornerKickMargin 1", "offsideActiveArea 2.5", "windNone 0", "windRandom 0",
+            "freeformCountMax 128", "freeformMsgSize 128", "clangWinSize 300", "clangDefineWin 1", "clangMetaWin 1",
+            "clangAdviceWin 1", "clangInfoWin 1", "clangMessDelay 50", "clangMessPerCycle 1", "halfTime 3000",
+            "simStep 100", "sendStep 150", "recvStep 10", "senseBodyStep 100", "lcmStep 300",
+            "sayMsgSize 10", "hearMax 1", "hearInc 1", "hearDecay 1", "catchBanCycle 5",
+            "slowDownFactor 1", "useOffside 1", "kickOffOffside 1", "offsideKickMargin 9.15", "audioCutDist 50",
+            "quantizeStep 0.1", "landmarkQuantizeStep 0.01", "dirQStep -1", "distQStepLeft -1", "distQStepRight -1",
+            "landQStepLeft -1", "landQStepRight -1", "dirQStepLeft -1", "dirQStepRight -1", "coachMode 1",
+            "coachWithRefereeMode 1", "coachOldHear 0", "coachVisualStep 100", "startGoalLeft 0", "startGoalRight 0",
+            "fullstateLeft 0", "fullstateRight 0", "dropTime 100");
 }

@@ -21,12 +21,13 @@ final class Vision {
 
     private final World world;
     private final ServerParams p;
-    private final double halfAngle;
-    /** Squared cosine of half the view angle plus a degree, and squared visible distance plus a metre. */
-    private final double clearlyOutsideCos2;
+    /** Squared visible distance plus a metre. */
     private final double clearlyFar2;
-    /** Whether the cone is narrow enough (under 178 degrees) for the cheap test. */
-    private final boolean narrowView;
+    /** The view cone of the see being written: half its angle, the cheap test's bound, whether it applies. */
+    private double halfAngle;
+    private double clearlyOutsideCos2;
+    private boolean narrowView;
+    private boolean highQuality;
     /** The head's unit vector of the see being written. */
     private double headX;
     private double headY;
@@ -34,14 +35,22 @@ final class Vision {
     Vision(World world) {
         this.world = world;
         this.p = world.params;
-        this.halfAngle = p.visibleAngle() / 2;
-        double cos = Math.cos(Math.toRadians(halfAngle + 1));
-        this.clearlyOutsideCos2 = cos * cos;
         this.clearlyFar2 = (p.visibleDistance() + 1) * (p.visibleDistance() + 1);
-        this.narrowView = halfAngle + 1 < 90;
+        cone(Player.ViewWidth.NORMAL);
+    }
+
+    /** The cone of a view width: visible_angle 90 for normal, half for narrow, twice for wide. */
+    private void cone(Player.ViewWidth width) {
+        halfAngle = p.visibleAngle() * width.factor / 2;
+        double cos = Math.cos(Math.toRadians(halfAngle + 1));
+        clearlyOutsideCos2 = cos * cos;
+        // The cheap test needs a cone under 178 degrees.
+        narrowView = halfAngle + 1 < 90;
     }
 
     String see(Player self) {
+        cone(self.viewWidth);
+        highQuality = self.highQuality;
         StringBuilder text = new StringBuilder(2048).append("(see ").append(world.time);
         double head = self.head();
         headX = Math.cos(Math.toRadians(head));
@@ -77,6 +86,10 @@ final class Vision {
         double direction = Numbers.normalize(Math.toDegrees(Math.atan2(dy, dx)) - head);
         double seenDistance = Numbers.seenDistance(distance, quantizeStep);
         String seenDirection = Numbers.format(Math.rint(direction), 0);
+        if (!highQuality) {
+            appendLowQuality(text, name, behindName, direction, distance, seenDirection, other);
+            return;
+        }
         if (Math.abs(direction) >= halfAngle) {
             if (distance <= p.visibleDistance()) {
                 text.append(" ((").append(behindName).append(") ").append(Numbers.format(seenDistance, 1))
@@ -91,6 +104,9 @@ final class Vision {
             text.append("p \"").append(other.team).append('"');
             if (seenDistance < UNUM_VISIBLE) {
                 text.append(' ').append(other.unum);
+                if (other.goalie) {
+                    text.append(" goalie");
+                }
             }
         } else {
             text.append('p');
@@ -115,6 +131,29 @@ final class Vision {
             }
         }
         text.append(')');
+    }
+
+    /**
+     * Low view quality: the server sends only the direction of what is in the cone (and of what
+     * is behind within visible_distance), without distance or changes; players by team alone.
+     */
+    private void appendLowQuality(StringBuilder text, String name, String behindName, double direction,
+                                  double distance, String seenDirection, Player other) {
+        if (Math.abs(direction) >= halfAngle) {
+            if (distance <= p.visibleDistance()) {
+                text.append(" ((").append(behindName).append(") ").append(seenDirection).append(')');
+            }
+            return;
+        }
+        text.append(" ((");
+        if (other == null) {
+            text.append(name);
+        } else if (distance < TEAM_VISIBLE) {
+            text.append("p \"").append(other.team).append('"');
+        } else {
+            text.append('p');
+        }
+        text.append(") ").append(seenDirection).append(')');
     }
 
     /**
@@ -172,16 +211,28 @@ final class Vision {
 
     /** The v9 {@code sense_body}, with the extra groups recent servers add in v9 too. */
     String senseBody(Player self) {
+        return senseBody(self, 9);
+    }
+
+    /**
+     * The {@code sense_body} of a protocol version: version 7 ends with the counters, version 8
+     * and later add the arm, focus and tackle groups (with constant values here).
+     */
+    String senseBody(Player self, int version) {
         double speed = self.speed();
         double speedDirection = speed < 1e-9 ? 0
                 : Math.rint(Numbers.normalize(Math.toDegrees(Math.atan2(self.vy, self.vx)) - self.head()));
-        return "(sense_body " + world.time + " (view_mode high normal) (stamina "
+        String head = "(sense_body " + world.time + " (view_mode " + (self.highQuality ? "high " : "low ")
+                + self.viewWidth.word + ") (stamina "
                 + Numbers.format(Math.rint(self.stamina), 0) + ' ' + Numbers.format(self.effort, 6) + ") (speed "
                 + Numbers.format(Numbers.quantize(speed, 0.01), 2) + ' ' + Numbers.format(speedDirection, 0)
                 + ") (head_angle " + Numbers.format(Math.rint(self.neck), 0) + ") (kick " + self.kicks
-                + ") (dash " + self.dashes + ") (turn " + self.turns + ") (say 0) (turn_neck " + self.turnNecks
-                + ") (catch 0) (move " + self.moves + ") (change_view 0)"
-                + " (arm (movable 0) (expires 0) (target 0 0) (count 0)) (focus (target none) (count 0))"
+                + ") (dash " + self.dashes + ") (turn " + self.turns + ") (say " + self.says + ") (turn_neck " + self.turnNecks
+                + ") (catch " + self.catches + ") (move " + self.moves + ") (change_view " + self.changeViews + ")";
+        if (version < 8) {
+            return head + ")";
+        }
+        return head + " (arm (movable 0) (expires 0) (target 0 0) (count 0)) (focus (target none) (count 0))"
                 + " (tackle (expires 0) (count 0)))";
     }
 

@@ -1,6 +1,7 @@
 package org.scenes.agent.sim;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Random;
 import org.scenes.scene.Side;
@@ -9,6 +10,8 @@ import org.scenes.scene.Side;
 final class World {
     /** New clients stand just outside the top touch line until they move, like on the real server's bench. */
     static final double BENCH_Y = ServerParams.PITCH_HALF_WIDTH + 3;
+    /** Players in a fixed order whatever order they connected in: left team first, by number. */
+    static final Comparator<Player> ORDER = Comparator.comparing((Player p) -> p.side).thenComparingInt(p -> p.unum);
 
     final ServerParams params;
     final Random random;
@@ -29,11 +32,20 @@ final class World {
     }
 
     Player add(String team, Side side, int unum) {
-        Player player = new Player(team, side, unum, params.staminaMax());
+        return add(team, side, unum, false);
+    }
+
+    Player add(String team, Side side, int unum, boolean goalie) {
+        Player player = new Player(team, side, unum, goalie, params.staminaMax());
         // Off the pitch until the client moves it, like the real server's bench.
         player.place(-3.0 * unum * (side == Side.LEFT ? 1 : -1), -BENCH_Y);
         players.add(player);
+        players.sort(ORDER);
         return player;
+    }
+
+    void remove(Player player) {
+        players.remove(player);
     }
 
     /** Uniform noise in [-range, range]. */

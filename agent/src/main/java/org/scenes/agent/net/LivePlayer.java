@@ -1,0 +1,405 @@
+package org.scenes.agent.net;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.TreeMap;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import org.scenes.agent.Brain;
+import org.scenes.agent.imitation.ImitationBrain;
+import org.scenes.agent.net.Connection.Datagram;
+import org.scenes.agent.net.PlayerReport.Outcome;
+import org.scenes.protocol.Hear;
+import org.scenes.protocol.InitReply;
+import org.scenes.protocol.Message;
+import org.scenes.protocol.MessageParser;
+import org.scenes.protocol.ProtocolException;
+import org.scenes.protocol.SenseBody;
+import org.scenes.protocol.ServerNotice;
+
+/**
+ * One player on a real (or fake) soccer server: its socket, its brain, its health.
+ *
+ * <p>Every datagram is parsed once with core's {@link MessageParser}; one the parser refuses is
+ * counted by head, logged once per head and not given to the brain. Everything else goes to the
+ * brain as text, in arrival order, and what the brain answers goes out at once, one datagram per
+ * command. A {@code (think)} (synchronous mode) is answered with {@code (done)} after the brain
+ * has acted on everything before it.
+ *
+ * <p><b>Cycles, due and missed.</b> A cycle is the time from one {@code sense_body} to the next
+ * (the server sends one as each cycle starts). A body command ({@code dash}, {@code turn},
+ * {@code kick}, {@code move}, {@code catch}, {@code tackle}) is <em>due</em> in a cycle when the
+ * brain answers a message that arrived in that cycle with one; brains that choose to wait (the
+ * classic Krislet acts every second cycle) owe nothing in the cycles they skip. A due cycle is
+ * <em>missed</em> when its body command leaves after the next {@code sense_body} has arrived: just
+ * before sending, the player takes in everything the socket holds, and a {@code sense_body} among
+ * it means the server has moved on. The decision-time sample is the brain's answers that held a
+ * body command: its mean and 99th percentile describe the same calls.
+ *
+ * <p><b>Kick-off positions.</b> The brain's own {@code move} before kick-off is remembered; the
+ * real server does not put players back after a goal, so while the referee's {@code goal_*}
+ * mode lasts the player sends that move again at the start of each cycle (before the brain's
+ * command, so the server takes it), and once after {@code half_time}. A brain that never moved
+ * gets a formation spot by uniform number at the first {@code sense_body}.
+ */
+public final class LivePlayer implements Runnable {
+    /** How long one wait on the socket lasts before the stop flag is looked at again. */
+    private static final long POLL_MILLIS = 100;
+    /** Own-half spots by uniform number, for brains that do not move themselves. */
+    private static final double[][] FORMATION = {
+        {-50, 0}, {-40, -20}, {-40, -7}, {-40, 7}, {-40, 20}, {-25, -20},
+        {-25, -7}, {-25, 7}, {-25, 20}, {-10, -8}, {-10, 8}};
+
+    private final ClientOptions options;
+    private final Brain brain;
+    private final boolean goalie;
+    private final Consumer<String> notices;
+    private final CountDownLatch answered = new CountDownLatch(1);
+    private final MessageParser parser = new MessageParser();
+    private final ArrayDeque<Datagram> queue = new ArrayDeque<>();
+    private final List<String> pending = new ArrayList<>(4);
+    private final DecisionTimes times = new DecisionTimes();
+    private final Map<String, Long> errors = new TreeMap<>();
+    private final Map<String, Long> malformed = new TreeMap<>();
+    private volatile boolean stopRequested;
+    private volatile Connection connection;
+    private volatile PlayerReport report;
+    private volatile int unum;
+    private volatile String side = "";
+
+    private Connection link;
+    private TrafficLog log;
+    private long cycles;
+    private long due;
+    private long missed;
+    private long thinks;
+    private long commands;
+    private long dueCycle = -1;
+    private long missedCycle = -1;
+    private String kickOffMove;
+    private boolean goalPause;
+    private boolean moveOnce;
+    private boolean gameOver;
+
+    /**
+     * @param goalie whether this player inits as goalie
+     * @param notices one-line messages for the user (a malformed message, a failure), from this
+     *                player's thread
+     */
+    public LivePlayer(ClientOptions options, Brain brain, boolean goalie, Consumer<String> notices) {
+        this.options = Objects.requireNonNull(options, "options");
+        this.brain = Objects.requireNonNull(brain, "brain");
+        this.goalie = goalie;
+        this.notices = Objects.requireNonNull(notices, "notices");
+    }
+
+    @Override
+    public void run() {
+        PlayerReport result;
+        try {
+            result = play();
+        } catch (RuntimeException | Error e) {
+            // a dead player says so; it never takes the team down silently
+            result = report(Outcome.FAILED, "failed: " + e);
+            notices.accept(name() + " " + result.reason());
+        } finally {
+            answered.countDown();
+        }
+        report = result;
+    }
+
+    /** Asks the player to send {@code (bye)} and stop; returns at once. */
+    public void stop() {
+        stopRequested = true;
+        Connection current = connection;
+        if (current != null) {
+            current.wakeup();
+        }
+    }
+
+    /** Waits until the server answered the init, or the player gave up; true when it answered. */
+    public boolean awaitAnswer(long timeout, TimeUnit unit) throws InterruptedException {
+        return answered.await(timeout, unit) && unum > 0;
+    }
+
+    /** The report once the player has stopped, else null. */
+    public PlayerReport report() {
+        return report;
+    }
+
+    /** {@code TEAM UNUM} as the user knows the player. */
+    public String name() {
+        return options.team() + " " + (unum > 0 ? "player " + unum : "(not connected)");
+    }
+
+    private PlayerReport play() {
+        try (Connection opened = new Connection(options.server())) {
+            link = opened;
+            connection = opened;
+            try {
+                return session();
+            } finally {
+                closeLog();
+            }
+        } catch (IOException e) {
+            return fail(unum > 0 ? Outcome.SERVER_LOST : Outcome.NO_SERVER, "network failure: " + e.getMessage());
+        }
+    }
+
+    private PlayerReport session() throws IOException {
+        String hello = options.hello(goalie);
+        link.sendHello(hello);
+        Datagram reply = null;
+        long deadline = System.nanoTime() + options.connectTimeout().toNanos();
+        while (reply == null && !stopRequested && System.nanoTime() < deadline) {
+            reply = link.awaitReply(Math.min(POLL_MILLIS * 1_000_000, deadline - System.nanoTime()));
+        }
+        if (reply == null) {
+            return stopRequested ? report(Outcome.STOPPED, "stopped before the server answered")
+                    : fail(Outcome.NO_SERVER, "no answer from a soccer server at " + options.server() + " to "
+                            + hello + " within " + seconds(options.connectTimeout().toMillis()) + " s");
+        }
+        Message first = parseQuietly(reply);
+        if (!(first instanceof InitReply init) || init.side() == null) {
+            return fail(Outcome.NO_SERVER, "the server at " + options.server() + " refused " + hello + ": "
+                    + reply.text());
+        }
+        side = String.valueOf(init.side().letter());
+        unum = init.uniformNumber() > 0 ? init.uniformNumber() : options.reconnect();
+        if (options.logDirectory() != null) {
+            log = new TrafficLog(options.logDirectory().resolve(options.team() + "_" + unum + ".log"));
+            log.sent(hello);
+        }
+        answered.countDown();
+        queue.add(reply);
+        long lastHeard = reply.receivedNanos();
+        long silence = options.silenceTimeout().toNanos();
+        while (!gameOver) {
+            while (!queue.isEmpty() && !gameOver) {
+                handle(queue.poll());
+            }
+            if (gameOver) {
+                break;
+            }
+            if (stopRequested) {
+                bye();
+                return report(Outcome.STOPPED, "");
+            }
+            Datagram next = link.await(POLL_MILLIS);
+            if (next == null) {
+                if (System.nanoTime() - lastHeard > silence) {
+                    return fail(Outcome.SERVER_LOST, "no message from the server for "
+                            + seconds(options.silenceTimeout().toMillis()) + " s: the server is gone");
+                }
+                continue;
+            }
+            lastHeard = next.receivedNanos();
+            queue.add(next);
+            takeWaiting();
+        }
+        bye();
+        return report(Outcome.GAME_OVER, "");
+    }
+
+    private void handle(Datagram datagram) throws IOException {
+        if (log != null) {
+            log.received(datagram.bytes());
+        }
+        Message message;
+        try {
+            message = parser.parse(datagram.bytes(), 0, datagram.bytes().length);
+        } catch (ProtocolException e) {
+            malformed(datagram, e);
+            return;
+        }
+        boolean think = false;
+        boolean cycleStart = false;
+        if (message instanceof SenseBody) {
+            cycles++;
+            cycleStart = true;
+        } else if (message instanceof ServerNotice notice) {
+            if (notice.isError()) {
+                errors.merge(notice.text(), 1L, Long::sum);
+            }
+            think = notice.head().equals("think");
+        } else if (message instanceof Hear hear && hear.speaker() == Hear.Speaker.REFEREE) {
+            referee(hear.text());
+        }
+        if (cycleStart) {
+            positionIfNeeded();
+        }
+        pending.clear();
+        long started = System.nanoTime();
+        brain.receive(datagram.text(), pending::add);
+        long took = System.nanoTime() - started;
+        if (!pending.isEmpty()) {
+            boolean body = false;
+            for (String command : pending) {
+                body |= isBody(command);
+                if (command.startsWith("(move")) {
+                    kickOffMove = command;
+                }
+            }
+            if (body) {
+                times.add(took);
+                if (dueCycle != cycles) {
+                    dueCycle = cycles;
+                    due++;
+                }
+                takeWaiting();
+                if (missedCycle != cycles && nextCycleArrived()) {
+                    missedCycle = cycles;
+                    missed++;
+                }
+            }
+            for (String command : pending) {
+                send(command);
+            }
+        }
+        if (think) {
+            thinks++;
+            send("(done)");
+        }
+    }
+
+    private void referee(String mode) {
+        if (mode.startsWith("goal_")) {
+            goalPause = true;
+        } else if (mode.equals("half_time")) {
+            goalPause = false;
+            moveOnce = true;
+        } else if (mode.startsWith("kick_off_") || mode.equals("play_on") || mode.equals("before_kick_off")) {
+            goalPause = false;
+        } else if (mode.equals("time_over")) {
+            gameOver = true;
+        }
+    }
+
+    /** The kick-off move, sent at the start of a cycle when the player must stand at its spot. */
+    private void positionIfNeeded() throws IOException {
+        if (kickOffMove == null && cycles == 1) {
+            double[] spot = FORMATION[(Math.max(1, unum) - 1) % FORMATION.length];
+            kickOffMove = "(move " + format(spot[0]) + " " + format(spot[1]) + ")";
+            send(kickOffMove);
+        } else if (kickOffMove != null && (goalPause || moveOnce)) {
+            moveOnce = false;
+            send(kickOffMove);
+        }
+    }
+
+    private static String format(double value) {
+        return value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
+    }
+
+    private static boolean isBody(String command) {
+        return command.startsWith("(dash") || command.startsWith("(turn ") || command.startsWith("(kick")
+                || command.startsWith("(move") || command.startsWith("(catch") || command.startsWith("(tackle");
+    }
+
+    /** Moves everything the socket holds into the queue, in order, without blocking. */
+    private void takeWaiting() throws IOException {
+        for (Datagram waiting = link.poll(); waiting != null; waiting = link.poll()) {
+            queue.add(waiting);
+        }
+    }
+
+    private boolean nextCycleArrived() {
+        for (Datagram waiting : queue) {
+            if (waiting.startsWith("(sense_body")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private void send(String command) throws IOException {
+        link.send(command);
+        commands++;
+        if (log != null) {
+            log.sent(command);
+        }
+    }
+
+    private void bye() {
+        try {
+            send("(bye)");
+        } catch (IOException e) {
+            // the server is gone already; nothing to say goodbye to
+        }
+    }
+
+    private void malformed(Datagram datagram, ProtocolException e) {
+        String kind = head(datagram.bytes());
+        if (malformed.merge(kind, 1L, Long::sum) == 1) {
+            String text = datagram.text();
+            notices.accept(name() + ": skipped a malformed " + kind + " message (" + e.getMessage() + "): "
+                    + (text.length() > 80 ? text.substring(0, 80) + "..." : text) + "; more of this kind are only counted");
+        }
+    }
+
+    /** The word after the opening parenthesis, or a description when there is none. */
+    static String head(byte[] bytes) {
+        if (bytes.length == 0) {
+            return "empty";
+        }
+        if (bytes[0] != '(') {
+            return "unbracketed";
+        }
+        int end = 1;
+        while (end < bytes.length && bytes[end] != ' ' && bytes[end] != '(' && bytes[end] != ')' && end < 40) {
+            end++;
+        }
+        return end == 1 ? "headless" : new String(bytes, 1, end - 1, java.nio.charset.StandardCharsets.UTF_8);
+    }
+
+    private Message parseQuietly(Datagram datagram) {
+        try {
+            return parser.parse(datagram.bytes(), 0, datagram.bytes().length);
+        } catch (ProtocolException e) {
+            return null;
+        }
+    }
+
+    private void closeLog() {
+        if (log == null) {
+            return;
+        }
+        try {
+            Path written = log.commit();
+            log = null;
+            notices.accept(name() + ": traffic logged to " + written);
+        } catch (IOException e) {
+            notices.accept(name() + ": could not write its traffic log: " + e.getMessage());
+        } finally {
+            try {
+                if (log != null) {
+                    log.close();
+                }
+            } catch (IOException ignored) {
+                // already reported
+            }
+        }
+    }
+
+    private PlayerReport fail(Outcome outcome, String reason) {
+        notices.accept(name() + ": " + reason);
+        return report(outcome, reason);
+    }
+
+    private PlayerReport report(Outcome outcome, String reason) {
+        Map<String, Long> counters = brain instanceof ImitationBrain imitation ? imitation.counters() : Map.of();
+        return new PlayerReport(options.team(), unum, side, outcome, reason, cycles, due, missed, times.count(),
+                times.meanMillis(), times.percentileMillis(99), times.maxMillis(), thinks, commands, errors,
+                malformed, counters);
+    }
+
+    private static String seconds(long millis) {
+        return millis % 1000 == 0 ? Long.toString(millis / 1000) : String.format(java.util.Locale.ROOT, "%.1f", millis / 1000.0);
+    }
+}

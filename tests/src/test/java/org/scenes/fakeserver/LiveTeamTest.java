@@ -1,0 +1,295 @@
+package org.scenes.fakeserver;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.nio.channels.DatagramChannel;
+import java.nio.charset.StandardCharsets;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.scenes.agent.Brain;
+import org.scenes.agent.BrainFactory;
+import org.scenes.agent.net.ClientOptions;
+import org.scenes.agent.net.PlayerReport;
+import org.scenes.agent.net.PlayerReport.Outcome;
+import org.scenes.agent.net.ServerAddress;
+import org.scenes.agent.net.TeamRunner;
+
+/** The client runtime against the fake server on loopback: init, port switch, synchronous play, failures. */
+class LiveTeamTest {
+    private final List<String> notices = Collections.synchronizedList(new ArrayList<>());
+    private final ExecutorService executor = Executors.newCachedThreadPool();
+
+    @AfterEach
+    void shutDown() {
+        executor.shutdownNow();
+    }
+
+    /** Dashes on every see; remembers nothing. */
+    static final BrainFactory DASHER = (team, random) -> new Brain() {
+        @Override
+        public void receive(String message, Consumer<String> send) {
+            if (message.startsWith("(see ")) {
+                send.accept("(dash 50)");
+            }
+        }
+    };
+
+    static ClientOptions options(InetSocketAddress server, String team) {
+        return ClientOptions.of(new ServerAddress("127.0.0.1", server.getPort()), team)
+                .withTimeouts(Duration.ofMillis(700), Duration.ofMillis(700));
+    }
+
+    private Future<List<PlayerReport>> start(TeamRunner runner) {
+        return executor.submit(runner::play);
+    }
+
+    private static void send(FakeSoccerServer.Client client, String message) throws IOException {
+        client.send((message + '\0').getBytes(StandardCharsets.UTF_8));
+    }
+
+    /** Every datagram the server got from a client, as text without the trailing NUL. */
+    private static List<String> received(FakeSoccerServer.Client client) {
+        List<String> texts = new ArrayList<>();
+        for (byte[] datagram : client.received()) {
+            assertEquals(0, datagram[datagram.length - 1], "NUL-terminated: " + new String(datagram, StandardCharsets.UTF_8));
+            texts.add(new String(datagram, 0, datagram.length - 1, StandardCharsets.UTF_8));
+        }
+        return texts;
+    }
+
+    private static void awaitClients(FakeSoccerServer server, int count) throws InterruptedException {
+        for (int i = 0; i < 200 && server.clients().size() < count; i++) {
+            Thread.sleep(10);
+        }
+        assertEquals(count, server.clients().size(), "clients connected");
+    }
+
+    private static void awaitReceived(FakeSoccerServer.Client client, int count) throws InterruptedException {
+        for (int i = 0; i < 300 && client.receivedCount() < count; i++) {
+            Thread.sleep(10);
+        }
+        assertTrue(client.receivedCount() >= count, "expected " + count + " datagrams from " + client);
+    }
+
+    @Test
+    void playsASynchronousGameOnTheClientsOwnPortAndSaysByeAtTimeOver() throws Exception {
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Live")
+                    .withGoalie(true), 2, DASHER, 1, notices::add);
+            Future<List<PlayerReport>> reports = start(runner);
+            awaitClients(server, 2);
+            for (int cycle = 1; cycle <= 5; cycle++) {
+                for (FakeSoccerServer.Client client : server.clients()) {
+                    int before = client.receivedCount();
+                    send(client, "(sense_body " + cycle + " (view_mode high normal) (stamina 8000 1 130600))");
+                    send(client, "(see " + cycle + " ((b) 10 0) ((g r) 50 3))");
+                    send(client, "(think)");
+                    awaitReceived(client, before + 2);
+                }
+            }
+            for (FakeSoccerServer.Client client : server.clients()) {
+                send(client, "(hear 6 referee time_over)");
+            }
+            List<PlayerReport> result = reports.get(10, TimeUnit.SECONDS);
+            assertEquals(2, result.size());
+            assertEquals(0, TeamRunner.exitCode(result), result.toString());
+            assertTrue(server.strayOnInitPorts().isEmpty(), "nothing after the init went to the init port");
+            FakeSoccerServer.Client first = server.clients().get(0);
+            List<String> sent = received(first);
+            assertEquals("(init Live (version 9)(goalie))", sent.get(0));
+            assertEquals("(init Live (version 9))", received(server.clients().get(1)).get(0));
+            // a formation move at the first cycle (the brain never moves), then per cycle: the see's dash, then done
+            assertEquals("(move -50 0)", sent.get(1));
+            for (int cycle = 0; cycle < 5; cycle++) {
+                int at = 2 + 2 * cycle;
+                assertEquals("(dash 50)", sent.get(at), sent.toString());
+                assertEquals("(done)", sent.get(at + 1), sent.toString());
+            }
+            assertEquals("(bye)", sent.get(sent.size() - 1));
+            PlayerReport report = result.get(0);
+            assertEquals(Outcome.GAME_OVER, report.outcome());
+            assertEquals(1, report.unum());
+            assertEquals("l", report.side());
+            assertEquals(5, report.cycles());
+            assertEquals(5, report.due());
+            assertEquals(0, report.missed());
+            assertEquals(5, report.decisions());
+            assertEquals(5, report.thinks());
+            assertTrue(report.decisionP99Millis() >= 0 && report.decisionP99Millis() <= report.decisionMaxMillis());
+        }
+    }
+
+    @Test
+    void noServerIsOneClearLineAfterTheTimeout() throws Exception {
+        int port;
+        try (DatagramChannel probe = DatagramChannel.open()) {
+            probe.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
+            port = ((InetSocketAddress) probe.getLocalAddress()).getPort();
+        }
+        TeamRunner runner = new TeamRunner(options(new InetSocketAddress("127.0.0.1", port), "Alone"), 3, DASHER, 1,
+                notices::add);
+        List<PlayerReport> result = start(runner).get(10, TimeUnit.SECONDS);
+        assertEquals(1, result.size(), "no further player is started once the first found no server");
+        assertEquals(Outcome.NO_SERVER, result.get(0).outcome());
+        assertEquals(1, TeamRunner.exitCode(result));
+        assertEquals(1, notices.size(), notices.toString());
+        assertTrue(notices.get(0).contains("no answer from a soccer server at 127.0.0.1:" + port), notices.get(0));
+    }
+
+    @Test
+    void aRefusedInitSaysWhatTheServerAnswered() throws Exception {
+        {
+            // a server that answers the init with an error, as rcssserver does when the team is full
+            try (DatagramChannel refusing = DatagramChannel.open()) {
+                refusing.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
+                Future<?> answer = executor.submit(() -> {
+                    java.nio.ByteBuffer buffer = java.nio.ByteBuffer.allocate(4096);
+                    java.net.SocketAddress from = refusing.receive(buffer);
+                    refusing.send(java.nio.ByteBuffer.wrap("(error no_more_team_or_player_or_goalie)\0"
+                            .getBytes(StandardCharsets.UTF_8)), from);
+                    return null;
+                });
+                TeamRunner runner = new TeamRunner(options((InetSocketAddress) refusing.getLocalAddress(), "Late"), 1,
+                        DASHER, 1, notices::add);
+                List<PlayerReport> result = start(runner).get(10, TimeUnit.SECONDS);
+                answer.get(5, TimeUnit.SECONDS);
+                assertEquals(Outcome.NO_SERVER, result.get(0).outcome());
+                assertTrue(result.get(0).reason().contains("(error no_more_team_or_player_or_goalie)"),
+                        result.get(0).reason());
+            }
+        }
+    }
+
+    @Test
+    void aServerThatVanishesMidGameEndsThePlayersAfterTheTimeout() throws Exception {
+        TeamRunner runner;
+        Future<List<PlayerReport>> reports;
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Orphan"), 2, DASHER, 1,
+                    notices::add);
+            reports = start(runner);
+            awaitClients(server, 2);
+            for (FakeSoccerServer.Client client : server.clients()) {
+                send(client, "(sense_body 1 (view_mode high normal))");
+                send(client, "(see 1 ((b) 10 0))");
+                awaitReceived(client, 3);
+            }
+        }
+        List<PlayerReport> result = reports.get(10, TimeUnit.SECONDS);
+        assertEquals(2, result.size());
+        for (PlayerReport report : result) {
+            assertEquals(Outcome.SERVER_LOST, report.outcome(), report.toString());
+            assertEquals(1, report.cycles());
+        }
+        assertEquals(1, TeamRunner.exitCode(result));
+    }
+
+    @Test
+    void garbageIsCountedLoggedOnceAndSkipped() throws Exception {
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Sturdy"), 1,
+                    DASHER, 1, notices::add);
+            Future<List<PlayerReport>> reports = start(runner);
+            awaitClients(server, 1);
+            FakeSoccerServer.Client client = server.clients().get(0);
+            send(client, "(see 1 ((b) 10 0)");
+            send(client, "(see abc)");
+            send(client, "garbage");
+            client.send(new byte[] {0, 0, 0});
+            send(client, "(see 2 ((b) 10 0)))");
+            send(client, "(error unknown_command)");
+            send(client, "(error unknown_command)");
+            send(client, "(error illegal_command_form)");
+            // padded to 4096 bytes with NULs, as Krislet pads
+            byte[] padded = new byte[4096];
+            byte[] see = "(see 3 ((b) 10 0))".getBytes(StandardCharsets.UTF_8);
+            System.arraycopy(see, 0, padded, 0, see.length);
+            client.send(padded);
+            send(client, "(hear 4 referee time_over)");
+            PlayerReport report = reports.get(10, TimeUnit.SECONDS).get(0);
+            assertEquals(Outcome.GAME_OVER, report.outcome());
+            assertEquals(3L, report.malformed().get("see"), report.malformed().toString());
+            assertEquals(1L, report.malformed().get("unbracketed"));
+            assertEquals(1L, report.malformed().get("empty"));
+            assertEquals(5, report.malformed().values().stream().mapToLong(Long::longValue).sum(),
+                    report.malformed().toString());
+            assertEquals(2L, report.errors().get("unknown_command"));
+            assertEquals(1L, report.errors().get("illegal_command_form"));
+            // one notice per kind: see, unbracketed, empty... and the last (see ...))) is a see too
+            assertEquals(3, notices.size(), notices.toString());
+            List<String> sent = received(client);
+            assertEquals(1, sent.stream().filter("(dash 50)"::equals).count(), "only the padded see was acted on: " + sent);
+        }
+    }
+
+    @Test
+    void stopSaysByeAndEndsCleanly() throws Exception {
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Polite")
+                    .withTimeouts(Duration.ofSeconds(2), Duration.ofSeconds(30)), 3, DASHER, 1, notices::add);
+            Future<List<PlayerReport>> reports = start(runner);
+            awaitClients(server, 3);
+            runner.stopAndAwait();
+            List<PlayerReport> result = reports.get(10, TimeUnit.SECONDS);
+            assertEquals(0, TeamRunner.exitCode(result), result.toString());
+            for (FakeSoccerServer.Client client : server.clients()) {
+                awaitReceived(client, 2);
+                List<String> sent = received(client);
+                assertEquals("(bye)", sent.get(sent.size() - 1));
+            }
+        }
+    }
+
+    @Test
+    void aPlayerWhoseBrainThrowsIsReportedAndTheOthersPlayOn() throws Exception {
+        BrainFactory thirdFails = new BrainFactory() {
+            int made;
+
+            @Override
+            public Brain create(String team, java.util.Random random) {
+                boolean faulty = ++made == 2;
+                Brain dasher = DASHER.create(team, random);
+                return (message, send) -> {
+                    if (faulty && message.startsWith("(see ")) {
+                        throw new IllegalStateException("brain broke");
+                    }
+                    dasher.receive(message, send);
+                };
+            }
+        };
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Mixed"), 2,
+                    thirdFails, 1, notices::add);
+            Future<List<PlayerReport>> reports = start(runner);
+            awaitClients(server, 2);
+            for (FakeSoccerServer.Client client : server.clients()) {
+                send(client, "(see 1 ((b) 10 0))");
+            }
+            FakeSoccerServer.Client healthy = server.clients().get(0);
+            awaitReceived(healthy, 2);
+            send(healthy, "(see 2 ((b) 10 0))");
+            send(healthy, "(hear 3 referee time_over)");
+            List<PlayerReport> result = reports.get(10, TimeUnit.SECONDS);
+            assertEquals(Outcome.GAME_OVER, result.get(0).outcome());
+            assertEquals(Outcome.FAILED, result.get(1).outcome());
+            assertTrue(result.get(1).reason().contains("brain broke"), result.get(1).reason());
+            assertTrue(notices.stream().anyMatch(n -> n.contains("player 2") && n.contains("brain broke")), notices.toString());
+            assertEquals(1, TeamRunner.exitCode(result));
+            assertFalse(received(healthy).isEmpty());
+        }
+    }
+}
