@@ -70,14 +70,14 @@ public final class HtmlReport {
         PlayedGame imitatorGame = results.imitator().get(0);
         html.append("<div>").append(ReportCharts.svg(ReportCharts.trajectories("Teacher: paths, first "
                 + TRAJECTORY_CYCLES + " cycles, seed " + teacherGame.seed(), teacherGame.frames(), TRAJECTORY_CYCLES),
-                620, 470)).append("</div>\n");
+                600, 455)).append("</div>\n");
         html.append("<div>").append(ReportCharts.svg(ReportCharts.trajectories("Imitator: paths, first "
                 + TRAJECTORY_CYCLES + " cycles, seed " + imitatorGame.seed(), imitatorGame.frames(), TRAJECTORY_CYCLES),
-                620, 470)).append("</div>\n");
+                600, 455)).append("</div>\n");
         html.append("<div>").append(ReportCharts.svg(ReportCharts.heatMap("Teacher: where the ball was (play on, all seeds)",
-                results.teacher()), 620, 440)).append("</div>\n");
+                results.teacher()), 600, 425)).append("</div>\n");
         html.append("<div>").append(ReportCharts.svg(ReportCharts.heatMap("Imitator: where the ball was (play on, all seeds)",
-                results.imitator()), 620, 440)).append("</div>\n</div>\n");
+                results.imitator()), 600, 425)).append("</div>\n</div>\n");
         html.append("<h2>Replay: teacher, seed ").append(teacherGame.seed()).append(", ")
                 .append(score(teacherGame)).append("</h2>\n").append(ReplayPage.section("replay-teacher",
                         teacherGame.frames()));

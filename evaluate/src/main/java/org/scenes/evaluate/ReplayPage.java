@@ -53,7 +53,7 @@ public final class ReplayPage {
     }
 
     static String style() {
-        return "body{font-family:sans-serif;margin:1.5em;color:#222;max-width:1300px}"
+        return "body{font-family:sans-serif;margin:1.5em;color:#222;max-width:1320px}"
                 + ".replay canvas{border:1px solid #444;max-width:100%}"
                 + ".replay-controls{display:flex;gap:.8em;align-items:center;margin:.4em 0 1.2em}"
                 + ".replay-cycle{flex:1}.replay-status{font-family:monospace;min-width:24em}\n";
