@@ -69,7 +69,7 @@ public final class Evaluation {
     }
 
     /** One game with {@code left} driving and {@code shadow} (or none) beside each of its players. */
-    public static PlayedGame play(PlayedGame.Role role, GameSetup.Team left, BrainFactory shadow, Plan plan, long seed,
+    static PlayedGame play(PlayedGame.Role role, GameSetup.Team left, BrainFactory shadow, Plan plan, long seed,
                                   Arena arena, long[] done, LongConsumer progress) throws IOException {
         List<PlayerTrace> traces = new ArrayList<>();
         BrainFactory traced = traced(left.brains(), shadow, seed, traces);

@@ -1,7 +1,6 @@
 package org.scenes.evaluate;
 
 import java.util.LinkedHashMap;
-import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 
@@ -149,9 +148,5 @@ public final class Tables {
         }
         boolean percent = label.contains("share") || label.contains("agreement") || label.contains("answered");
         return percent ? String.format(Locale.ROOT, "%.1f%%", 100 * v) : String.format(Locale.ROOT, "%.2f", v);
-    }
-
-    static List<String> labels(List<Comparison.Figure> figures) {
-        return figures.stream().map(Tables::shortLabel).toList();
     }
 }

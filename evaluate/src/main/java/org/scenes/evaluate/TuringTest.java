@@ -8,7 +8,6 @@ import org.scenes.gamelog.GameFrame;
 import org.scenes.gamelog.PlayerState;
 import org.scenes.protocol.CommandType;
 import org.scenes.protocol.PlayerCommand;
-import org.scenes.scene.Side;
 
 /**
  * Can a simple classifier tell the teacher from the imitator? Each left player's play is cut into
