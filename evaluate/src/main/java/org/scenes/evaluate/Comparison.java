@@ -69,8 +69,9 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
         double goalsI = byKey.get("goalsPer1000").imitator().mean();
         double off = goalsT == 0 ? (goalsI == 0 ? 0 : Double.POSITIVE_INFINITY) : Math.abs(goalsI - goalsT) / goalsT;
         targets.add(new Target("goals / 1000 cycles within 20% of the teacher's",
-                String.format(java.util.Locale.ROOT, "%.2f vs %.2f (%+.0f%%)", goalsI, goalsT,
-                        goalsT == 0 ? Double.NaN : 100 * (goalsI - goalsT) / goalsT), off <= 0.2));
+                goalsT == 0 ? String.format(java.util.Locale.ROOT, "%.2f vs %.2f", goalsI, goalsT)
+                        : String.format(java.util.Locale.ROOT, "%.2f vs %.2f (%+.0f%%)", goalsI, goalsT,
+                                100 * (goalsI - goalsT) / goalsT), off <= 0.2));
         targets.add(new Target("action-mix divergence <= 0.02",
                 String.format(java.util.Locale.ROOT, "%.4f", divergence.mean()), divergence.mean() <= 0.02));
         double stuck = byKey.get("stuckShare").imitator().mean();
