@@ -194,7 +194,8 @@ final class ReportCharts {
         LookupPaintScale scale = new LookupPaintScale(0, Math.max(max, 1e-9) * 1.0001, Color.WHITE);
         int steps = 8;
         for (int s = 0; s < steps; s++) {
-            float f = (float) s / (steps - 1);
+            // the lowest step already tinted: a cell the ball visited at all is not white
+            float f = (float) (s + 1) / steps;
             scale.add(s == 0 ? 1e-12 : max * s / steps, new Color(1f, 1f - 0.8f * f, 1f - 0.95f * f));
         }
         renderer.setPaintScale(scale);
