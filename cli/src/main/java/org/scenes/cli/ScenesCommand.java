@@ -15,8 +15,8 @@ import picocli.CommandLine.Spec;
         subcommands = {CommandLine.HelpCommand.class, PluginsCommand.class, ConvertCommand.class,
                 ShowCommand.class, StatsCommand.class, ExportCommand.class,
                 ValidateCommand.class, TuneCommand.class, ExperimentCommand.class, BenchCommand.class,
-                SimulateCommand.class, PlayCommand.class, TeamCommand.class, DemoCommand.class, ProxyCommand.class,
-                ServerCommand.class})
+                SimulateCommand.class, PlayCommand.class, TeamCommand.class, EvaluateCommand.class,
+                MatchCommand.class, ReplayCommand.class, DemoCommand.class, ProxyCommand.class, ServerCommand.class})
 final class ScenesCommand implements Runnable {
     @Spec
     CommandLine.Model.CommandSpec spec;

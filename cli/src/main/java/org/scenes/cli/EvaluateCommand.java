@@ -1,0 +1,237 @@
+package org.scenes.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.function.LongConsumer;
+import me.tongfei.progressbar.ConsoleProgressBarConsumer;
+import me.tongfei.progressbar.ProgressBar;
+import me.tongfei.progressbar.ProgressBarBuilder;
+import org.scenes.agent.sim.GameSetup;
+import org.scenes.evaluate.Arena;
+import org.scenes.evaluate.Comparison;
+import org.scenes.evaluate.Evaluation;
+import org.scenes.evaluate.HtmlReport;
+import org.scenes.evaluate.Learner;
+import org.scenes.evaluate.PacedBrain;
+import org.scenes.evaluate.Tables;
+import org.scenes.match.KnowledgeBase;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.validate.MatchConfig;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.Spec;
+
+/** {@code scenes evaluate}: teacher and imitator play the same games; do they play alike? */
+@Command(name = "evaluate", mixinStandardHelpOptions = true,
+        description = {"Closed-loop evaluation: the teacher team and an imitating team play the same games (same"
+                + " seeds, start positions, opponent) in the embedded simulator, and their behaviour is compared:"
+                + " action mix and its divergence, kicks and goals per 1000 cycles, distance to the ball, kick-off"
+                + " to first touch, stuck share, agreement with a shadow teacher, and a Turing figure.",
+                "The imitator is learnt from the teacher's own games (simulate, convert, knowledge base, in"
+                + " process), or from the SCENES files given."})
+final class EvaluateCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @ParentCommand
+    ScenesCommand top;
+
+    @Parameters(paramLabel = "SCENES", arity = "0..*",
+            description = "Scene files to learn the imitator from; default: the teacher's own games (--train-games).")
+    List<Path> sceneFiles = new ArrayList<>();
+
+    @Mixin
+    MatchOptions match;
+
+    @Option(names = "--teacher", paramLabel = "NAME", defaultValue = "krislet",
+            description = "The teacher the imitator is compared with: ${COMPLETION-CANDIDATES}. Default: ${DEFAULT-VALUE}.",
+            completionCandidates = SimulateCommand.TeacherNames.class)
+    String teacher;
+
+    @Option(names = "--players", paramLabel = "N", defaultValue = "5", description = "Players per side. Default: ${DEFAULT-VALUE}.")
+    int players;
+
+    @Option(names = "--opponent", paramLabel = "TEACHER:N", defaultValue = "krislet:5",
+            description = "The right team in every game. Default: ${DEFAULT-VALUE}.")
+    String opponent;
+
+    @Option(names = "--cycles", paramLabel = "N", defaultValue = "6000", description = "Cycles per game. Default: ${DEFAULT-VALUE}.")
+    int cycles;
+
+    @Option(names = "--seeds", paramLabel = "N", defaultValue = "5",
+            description = "Games per side, seeds --first-seed, --first-seed + 1, ... Default: ${DEFAULT-VALUE}.")
+    int seeds;
+
+    @Option(names = "--first-seed", paramLabel = "S", defaultValue = "1", description = "The first game seed. Default: ${DEFAULT-VALUE}.")
+    long firstSeed;
+
+    @Option(names = "--train-games", paramLabel = "N", defaultValue = "2",
+            description = "Teacher games learnt from when no SCENES are given (seeds 1001, 1002, ...: never an"
+                    + " evaluation seed). Default: ${DEFAULT-VALUE}.")
+    int trainGames;
+
+    @Option(names = "--think-steps", paramLabel = "N", defaultValue = "0",
+            description = "Pace the imitator like the Krislet client's think loop: decide on the latest see every N"
+                    + " steps (Krislet: 2); 0 answers every see, as 'scenes play' does. Default: ${DEFAULT-VALUE}.")
+    int thinkSteps;
+
+    @Option(names = "--json", description = "Print one JSON object instead of the table.")
+    boolean json;
+
+    @Option(names = "--report", paramLabel = "DIR", description = "Write the HTML report DIR/index.html (self-contained).")
+    Path report;
+
+    @Option(names = "--server", paramLabel = "HOST:PORT",
+            description = "Play on a live server through the UDP runtime (not available yet: embedded simulator only).")
+    String server;
+
+    @Override
+    public Integer call() throws IOException {
+        if (server != null) {
+            throw new UsageException("--server: evaluating on a live server is not available yet;"
+                    + " leave it out to use the embedded simulator");
+        }
+        Setup setup = setup();
+        PrintWriter out = spec.commandLine().getOut();
+        Outcome outcome = evaluate(setup, json ? null : out);
+        if (json) {
+            Map<String, Object> root = new LinkedHashMap<>();
+            root.put("about", outcome.about());
+            root.putAll(Tables.json(outcome.comparison()));
+            out.println(ConfigFiles.JSON.writeValueAsString(root));
+        } else {
+            out.print(Tables.text(outcome.comparison()));
+        }
+        if (report != null) {
+            Path page = HtmlReport.write(report, "scenes evaluate: " + setup.teacherName + " and its imitator",
+                    outcome.about(), outcome.comparison(), outcome.results());
+            if (!json) {
+                out.println();
+                out.println("Report written to " + page.toAbsolutePath());
+            }
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    /** Everything the evaluation needs, checked. */
+    record Setup(String teacherName, GameSetup.Team teacher, GameSetup.Team opponent, MatchConfig config,
+                 PluginRegistry registry, List<Path> sceneFiles, int trainGames, int cycles, List<Long> seeds,
+                 int thinkSteps) {
+    }
+
+    /** The evaluation's games, figures and a description of what was compared. */
+    record Outcome(Map<String, String> about, Comparison comparison, Evaluation.Results results) {
+    }
+
+    private Setup setup() {
+        List<MatchConfig> configs = match.configs();
+        if (configs.size() != 1) {
+            throw new UsageException("evaluate uses one configuration: give one --metric and one --k");
+        }
+        if (cycles < 1) {
+            throw new UsageException("--cycles: must be at least 1, not " + cycles);
+        }
+        if (seeds < 1) {
+            throw new UsageException("--seeds: must be at least 1, not " + seeds);
+        }
+        if (sceneFiles.isEmpty() && trainGames < 1) {
+            throw new UsageException("--train-games: must be at least 1 when no scene files are given, not " + trainGames);
+        }
+        List<Long> seedList = new ArrayList<>();
+        for (int i = 0; i < seeds; i++) {
+            seedList.add(firstSeed + i);
+        }
+        if (thinkSteps < 0) {
+            throw new UsageException("--think-steps: must be 0 or more, not " + thinkSteps);
+        }
+        return new Setup(teacher, SimulateCommand.team(teacher + ":" + players, "Teal"),
+                SimulateCommand.team(opponent, "Amber"), configs.get(0), top.global.registry(), sceneFiles, trainGames,
+                cycles, seedList, thinkSteps);
+    }
+
+    /** Learns the imitator and plays the games, with a progress bar per stage on a terminal. */
+    static Outcome evaluate(Setup setup, PrintWriter out) throws IOException {
+        Learner.Matching matching;
+        try {
+            matching = Learner.Matching.of(setup.config(), setup.registry());
+        } catch (IllegalArgumentException e) {
+            throw new UsageException(e.getMessage());
+        }
+        Map<String, String> about = new LinkedHashMap<>();
+        about.put("teacher", setup.teacherName() + ", " + setup.teacher().players() + " players");
+        about.put("opponent", describe(setup.opponent()));
+        Learner.Imitator imitator;
+        long started = System.nanoTime();
+        if (setup.sceneFiles().isEmpty()) {
+            List<Long> trainingSeeds = new ArrayList<>();
+            for (int i = 0; i < setup.trainGames(); i++) {
+                trainingSeeds.add(1001L + i);
+            }
+            try (ProgressBar bar = bar("Learning", (long) setup.trainGames() * setup.cycles())) {
+                imitator = Learner.fromTeacherGames(setup.teacher(), setup.opponent(), setup.cycles(), trainingSeeds,
+                        matching, step(bar));
+            }
+            about.put("imitator learnt from", setup.trainGames() + " teacher games of " + setup.cycles()
+                    + " cycles against the same opponent, seeds " + trainingSeeds + " (" + imitator.scenes() + " scenes)");
+        } else {
+            KnowledgeBase knowledge;
+            try {
+                knowledge = KnowledgeBase.load(setup.sceneFiles(), matching.transforms());
+            } catch (IllegalArgumentException e) {
+                throw new UsageException(e.getMessage());
+            }
+            imitator = Learner.of(knowledge, matching);
+            about.put("imitator learnt from", setup.sceneFiles().size() + " scene files (" + imitator.scenes()
+                    + " scenes): " + String.join(" ", setup.sceneFiles().stream().map(Path::toString).toList()));
+        }
+        about.put("matching", setup.config().describe());
+        about.put("imitator tempo", setup.thinkSteps() == 0 ? "answers every see"
+                : "decides on the latest see every " + setup.thinkSteps() + " steps (the Krislet client's think loop)");
+        about.put("games", setup.seeds().size() + " per side of " + setup.cycles() + " cycles, seeds " + setup.seeds());
+        if (out != null) {
+            out.printf(Locale.ROOT, "%-14s %d scenes; %s%n", "Learnt", imitator.scenes(), setup.config().describe());
+            out.flush();
+        }
+        Evaluation.Plan plan = new Evaluation.Plan(setup.teacher(),
+                PacedBrain.pace(imitator.brains(), setup.thinkSteps()), setup.opponent(), setup.cycles(),
+                setup.seeds());
+        Evaluation.Results results;
+        try (ProgressBar bar = bar("Evaluating", plan.totalCycles())) {
+            results = Evaluation.run(plan, Arena.embedded(), step(bar));
+        }
+        Comparison comparison = Comparison.of(results);
+        about.put("time", String.format(Locale.ROOT, "%.1f s", (System.nanoTime() - started) / 1e9));
+        return new Outcome(about, comparison, results);
+    }
+
+    static String describe(GameSetup.Team team) {
+        return team.name() + ", " + team.players() + " players";
+    }
+
+    /** A progress bar on a terminal, none when piped. */
+    static ProgressBar bar(String task, long max) {
+        return System.console() == null ? null
+                : new ProgressBarBuilder().setTaskName(task).setInitialMax(max).setUnit(" cycles", 1)
+                        .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build();
+    }
+
+    static LongConsumer step(ProgressBar bar) {
+        return done -> {
+            if (bar != null) {
+                bar.stepTo(done);
+            }
+        };
+    }
+}

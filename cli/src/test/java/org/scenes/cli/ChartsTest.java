@@ -1,0 +1,37 @@
+package org.scenes.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.jfree.chart.JFreeChart;
+import org.jfree.chart.axis.ValueAxis;
+import org.jfree.chart.plot.CategoryPlot;
+import org.jfree.data.category.DefaultCategoryDataset;
+import org.junit.jupiter.api.Test;
+
+class ChartsTest {
+    @Test
+    void closeFiguresGetAZoomedAxisThatStillShowsEveryBar() {
+        DefaultCategoryDataset data = new DefaultCategoryDataset();
+        data.addValue(98.4, "action %", "a");
+        data.addValue(98.9, "action %", "b");
+        data.addValue(99.7, "action %", "c");
+        JFreeChart chart = Charts.bars("t", "", "%", data, 100);
+        ValueAxis axis = ((CategoryPlot) chart.getPlot()).getRangeAxis();
+        assertTrue(axis.getLowerBound() > 90 && axis.getLowerBound() < 98.4, "lower " + axis.getLowerBound());
+        assertTrue(axis.getUpperBound() >= 99.7 && axis.getUpperBound() <= 100, "upper " + axis.getUpperBound());
+        // the difference between the bars is a visible share of the axis, not 1% of it
+        assertTrue((99.7 - 98.4) / (axis.getUpperBound() - axis.getLowerBound()) > 0.3);
+        assertTrue(((CategoryPlot) chart.getPlot()).getRenderer().getDefaultItemLabelsVisible(), "value labels");
+    }
+
+    @Test
+    void labelsLoseTheWordsTheyAllShare() {
+        List<String> labels = List.of("ball-goal w=1/1/1/1/0/1/1/1 k=1 vote", "ball-goal w=1/1/1/1/0/1/1/1 k=5 vote",
+                "continuous w=1/1/1/1/0/1/1/1 k=1 vote");
+        assertEquals(List.of("ball-goal k=1", "ball-goal k=5", "continuous k=1"), Charts.shortLabels(labels));
+        assertEquals("w=1/1/1/1/0/1/1/1 vote", Charts.commonPart(labels));
+        assertEquals(List.of("only one"), Charts.shortLabels(List.of("only one")));
+    }
+}

@@ -1,0 +1,85 @@
+package org.scenes.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class EvaluateCommandsTest {
+    @TempDir
+    Path dir;
+
+    private final CommandRunner cli = new CommandRunner();
+
+    @Test
+    void evaluateLearnsFromTheTeachersGamesAndReportsBothSides() throws Exception {
+        Path report = dir.resolve("report");
+        int status = cli.run("evaluate", "--metric", "ball-goal", "--players", "2", "--opponent", "krislet:2",
+                "--cycles", "300", "--seeds", "2", "--train-games", "1", "--json", "--report", report);
+        assertEquals(ExitCodes.OK, status, cli.err());
+        JsonNode root = ConfigFiles.JSON.readTree(cli.out());
+        assertEquals(2, root.get("seeds").size());
+        double agreement = root.at("/figures/agreement/imitator/mean").asDouble();
+        assertTrue(agreement > 0.5 && agreement <= 1, "agreement " + agreement);
+        assertTrue(root.at("/figures/agreement/teacher/mean").isNull(), "no shadow beside the teacher");
+        assertEquals(5, root.get("targets").size());
+        assertTrue(root.at("/about/imitator learnt from").asText().startsWith("1 teacher games of 300 cycles"));
+        String page = Files.readString(report.resolve("index.html"));
+        assertEquals(2, count(page, "class=\"replay\""));
+        assertTrue(page.contains("<svg"));
+        assertTrue(!page.contains("src=\"http") && !page.contains("href=\"http") && !page.contains("@import"),
+                "nothing fetched from the network");
+    }
+
+    @Test
+    void evaluateRefusesTheServerForNowAndBadNumbers() {
+        assertEquals(ExitCodes.USAGE, cli.run("evaluate", "--server", "localhost:6000"));
+        assertTrue(cli.err().contains("--server"), cli.err());
+        assertEquals(ExitCodes.USAGE, new CommandRunner().run("evaluate", "--seeds", "0"));
+    }
+
+    @Test
+    void matchPlaysTwoTeachersAndReportsTheScore() {
+        int status = cli.run("match", "--left", "krislet:2", "--right", "statebased:2", "--cycles", "300");
+        assertEquals(ExitCodes.OK, status, cli.err());
+        Matcher score = Pattern.compile("Score +Teal \\(krislet:2\\) (\\d+) : (\\d+) Amber \\(statebased:2\\)")
+                .matcher(cli.out());
+        assertTrue(score.find(), cli.out());
+        assertTrue(cli.out().contains("kicks / 1000 cycles"), cli.out());
+        CommandRunner bad = new CommandRunner();
+        assertEquals(ExitCodes.USAGE, bad.run("match", "--left", "imitator:2", "--right", "krislet:2"));
+        assertTrue(bad.err().contains("needs its scenes"), bad.err());
+    }
+
+    @Test
+    void replayWritesAPageForAGameLog() throws Exception {
+        assertEquals(ExitCodes.OK, cli.run("simulate", "--cycles", "200", "--teams", "krislet:2,krislet:2",
+                "--out-dir", dir.resolve("logs"), "--record", dir.resolve("rec")), cli.err());
+        Path log;
+        try (var files = Files.list(dir.resolve("rec"))) {
+            log = files.filter(f -> f.toString().endsWith(".rcg")).findFirst().orElseThrow();
+        }
+        CommandRunner replay = new CommandRunner();
+        Path page = dir.resolve("game.html");
+        assertEquals(ExitCodes.OK, replay.run("replay", log, "-o", page), replay.err());
+        String html = Files.readString(page);
+        assertTrue(html.contains("class=\"replay-data\""));
+        assertTrue(html.contains("\"left\":\"Teal\""), "team names in the data");
+        CommandRunner missing = new CommandRunner();
+        assertEquals(ExitCodes.FAILURE, missing.run("replay", dir.resolve("none.rcg"), "-o", dir.resolve("x.html")));
+    }
+
+    private static int count(String text, String part) {
+        int count = 0;
+        for (int i = text.indexOf(part); i >= 0; i = text.indexOf(part, i + 1)) {
+            count++;
+        }
+        return count;
+    }
+}

@@ -1,0 +1,29 @@
+package org.scenes.evaluate;
+
+import java.io.IOException;
+import java.util.function.Consumer;
+import java.util.function.IntConsumer;
+import org.scenes.agent.sim.GameResult;
+import org.scenes.agent.sim.GameSetup;
+import org.scenes.agent.sim.Simulator;
+import org.scenes.gamelog.GameFrame;
+
+/**
+ * Where the games of an evaluation are played. The embedded simulator is the one there is; a
+ * live server reached through the UDP runtime ({@code scenes evaluate --server HOST:PORT}) is
+ * meant to be another implementation: it connects the same brains, and its frames come from the
+ * server's game log or a monitor.
+ */
+@FunctionalInterface
+public interface Arena {
+    /**
+     * Plays one game; {@code frames} gets the world after connecting and after every step,
+     * {@code progress} the game clock.
+     */
+    GameResult play(GameSetup setup, IntConsumer progress, Consumer<GameFrame> frames) throws IOException;
+
+    /** The embedded simulator, in process and synchronous. */
+    static Arena embedded() {
+        return (setup, progress, frames) -> new Simulator(setup).run(progress, frames);
+    }
+}

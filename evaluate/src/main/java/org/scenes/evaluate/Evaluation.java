@@ -1,0 +1,109 @@
+package org.scenes.evaluate;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.Random;
+import java.util.function.LongConsumer;
+import org.scenes.agent.Brain;
+import org.scenes.agent.BrainFactory;
+import org.scenes.agent.sim.GameResult;
+import org.scenes.agent.sim.GameSetup;
+import org.scenes.gamelog.GameFrame;
+import org.scenes.scene.Side;
+
+/**
+ * Teacher and imitator in the same situations: for every seed, one game with the teacher team on
+ * the left and one with the imitating team in its place (same team name, seats, seed and
+ * opponent, so the same start positions and the same noise until their play differs). While
+ * the imitator plays, a shadow teacher is fed each imitating player's messages and what it
+ * would have sent is traced beside what the imitator sent.
+ */
+public final class Evaluation {
+    /**
+     * What to play.
+     *
+     * @param teacher the teacher team (its name is the imitating team's name too)
+     * @param imitator the imitating players' brains
+     * @param opponent the right team in every game
+     * @param cycles each game's length
+     * @param seeds one pair of games per seed
+     */
+    public record Plan(GameSetup.Team teacher, BrainFactory imitator, GameSetup.Team opponent, int cycles,
+                       List<Long> seeds) {
+        public Plan {
+            Objects.requireNonNull(teacher, "teacher");
+            Objects.requireNonNull(imitator, "imitator");
+            Objects.requireNonNull(opponent, "opponent");
+            seeds = List.copyOf(seeds);
+            if (seeds.isEmpty()) {
+                throw new IllegalArgumentException("an evaluation needs at least one seed");
+            }
+            if (cycles < 1) {
+                throw new IllegalArgumentException("cycles must be at least 1, not " + cycles);
+            }
+        }
+
+        /** Game cycles all the games of the plan run, for progress. */
+        public long totalCycles() {
+            return 2L * seeds.size() * cycles;
+        }
+    }
+
+    private Evaluation() {
+    }
+
+    /** Plays every game of the plan; {@code progress} gets the cycles played so far over all games. */
+    public static Results run(Plan plan, Arena arena, LongConsumer progress) throws IOException {
+        List<PlayedGame> teacherGames = new ArrayList<>();
+        List<PlayedGame> imitatorGames = new ArrayList<>();
+        long[] done = {0};
+        for (long seed : plan.seeds()) {
+            teacherGames.add(play(PlayedGame.Role.TEACHER, plan.teacher(), null, plan, seed, arena, done, progress));
+            GameSetup.Team imitating = new GameSetup.Team(plan.teacher().name(), plan.teacher().players(), plan.imitator());
+            imitatorGames.add(play(PlayedGame.Role.IMITATOR, imitating, plan.teacher().brains(), plan, seed, arena, done,
+                    progress));
+        }
+        return new Results(teacherGames, imitatorGames);
+    }
+
+    /** One game with {@code left} driving and {@code shadow} (or none) beside each of its players. */
+    static PlayedGame play(PlayedGame.Role role, GameSetup.Team left, BrainFactory shadow, Plan plan, long seed,
+                                  Arena arena, long[] done, LongConsumer progress) throws IOException {
+        List<PlayerTrace> traces = new ArrayList<>();
+        BrainFactory traced = traced(left.brains(), shadow, seed, traces);
+        GameSetup setup = new GameSetup(new GameSetup.Team(left.name(), left.players(), traced), plan.opponent(),
+                plan.cycles(), seed, null);
+        List<GameFrame> frames = new ArrayList<>();
+        long before = done[0];
+        GameResult result = arena.play(setup, time -> progress.accept(before + time), frames::add);
+        done[0] = before + plan.cycles();
+        progress.accept(done[0]);
+        traces.forEach(PlayerTrace::close);
+        return new PlayedGame(role, Side.LEFT, seed, result, frames, traces);
+    }
+
+    /**
+     * Brains of {@code driver}, each traced into a new entry of {@code traces} (in the order the
+     * simulator seats them: uniform numbers 1, 2, ...), with a {@code shadow} brain (or none) beside.
+     */
+    static BrainFactory traced(BrainFactory driver, BrainFactory shadow, long seed, List<PlayerTrace> traces) {
+        return (team, random) -> {
+            PlayerTrace trace = new PlayerTrace(traces.size() + 1);
+            traces.add(trace);
+            Brain driving = driver.create(team, random);
+            // the shadow's own random source: it must not draw from the driver's
+            Brain shadowBrain = shadow == null ? null : shadow.create(team, new Random(seed * 31 + traces.size()));
+            return new TracedBrain(driving, shadowBrain, trace);
+        };
+    }
+
+    /** The games played, teacher's and imitator's, in seed order. */
+    public record Results(List<PlayedGame> teacher, List<PlayedGame> imitator) {
+        public Results {
+            teacher = List.copyOf(teacher);
+            imitator = List.copyOf(imitator);
+        }
+    }
+}

@@ -1,0 +1,107 @@
+package org.scenes.evaluate;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.scenes.files.AtomicOutput;
+
+/**
+ * The evaluation as one self-contained web page ({@code index.html}, nothing fetched when it is
+ * opened): the targets, the figures as a table and as bars (teacher and imitator side by side,
+ * error bars the spread over seeds), the Turing figure, both sides' trajectories and ball heat
+ * maps on the pitch, and a replay of the first seed's game of each side.
+ */
+public final class HtmlReport {
+    /** Game cycles of the first seed's game drawn as trajectories. */
+    static final int TRAJECTORY_CYCLES = 1200;
+
+    private HtmlReport() {
+    }
+
+    /** Writes {@code DIR/index.html} atomically and returns its path. */
+    public static Path write(Path directory, String title, Map<String, String> about, Comparison comparison,
+                             Evaluation.Results results) throws IOException {
+        Files.createDirectories(directory);
+        Path file = directory.resolve("index.html");
+        StringBuilder html = new StringBuilder(1 << 20);
+        html.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>")
+                .append(ReplayPage.escape(title)).append("</title>\n<style>\n").append(ReplayPage.style())
+                .append("table{border-collapse:collapse;margin:.5em 0 1.5em}td,th{border:1px solid #bbb;"
+                        + "padding:.25em .6em;text-align:right}th:first-child,td:first-child{text-align:left}"
+                        + ".met{color:#186018;font-weight:bold}.missed{color:#a01010;font-weight:bold}"
+                        + ".row{display:flex;flex-wrap:wrap;gap:1em}.note{color:#555;max-width:60em}\n")
+                .append("</style>\n</head>\n<body>\n<h1>").append(ReplayPage.escape(title)).append("</h1>\n");
+        html.append("<table>\n");
+        about.forEach((key, value) -> html.append("<tr><th>").append(ReplayPage.escape(key)).append("</th><td>")
+                .append(ReplayPage.escape(value)).append("</td></tr>\n"));
+        html.append("</table>\n<h2>Targets</h2>\n<table>\n<tr><th>target</th><th>reached</th><th></th></tr>\n");
+        for (Comparison.Target target : comparison.targets()) {
+            html.append("<tr><td>").append(ReplayPage.escape(target.what())).append("</td><td>")
+                    .append(ReplayPage.escape(target.reached())).append("</td><td class=\"")
+                    .append(target.met() ? "met\">met" : "missed\">not met").append("</td></tr>\n");
+        }
+        html.append("</table>\n<h2>Figures</h2>\n<p class=\"note\">Mean over ").append(comparison.seeds().size())
+                .append(" seeds (").append(comparison.seeds()).append("), &plusmn; the standard deviation over seeds."
+                        + " Teacher and imitator play the same seeds, start positions and opponent.</p>\n");
+        html.append(Tables.html(comparison));
+        html.append("<div class=\"row\">\n");
+        html.append(bars(comparison, "Action mix", "% of body commands",
+                List.of("dashShare", "turnShare", "kickShare"), 100, "0.0"));
+        html.append(bars(comparison, "Shares", "%", List.of("answered", "stuckShare", "agreement", "typeAgreement"),
+                100, "0.0"));
+        html.append(bars(comparison, "Per 1000 cycles", "per 1000 cycles",
+                List.of("kicksPer1000", "goalsPer1000", "goalsAgainstPer1000"), 1, "0.00"));
+        html.append(bars(comparison, "Distance to ball", "m", List.of("ballDistance"), 1, "0.0"));
+        html.append(bars(comparison, "Kick-off to first touch", "cycles", List.of("firstTouch"), 1, "0.0"));
+        html.append("<div>").append(ReportCharts.svg(ReportCharts.turing(comparison.turing()), 420, 360))
+                .append("</div>\n</div>\n");
+        TuringTest.Outcome turing = comparison.turing();
+        html.append(String.format(Locale.ROOT, "<p class=\"note\">Turing figure: a logistic regression on windows of"
+                        + " %d cycles of each player (%d teacher and %d imitator windows), trained on the other seeds'"
+                        + " games and tested on the held-out seed's (%d folds); balanced accuracy %.1f%% &plusmn; %.1f."
+                        + " It sees: %s.</p>\n", TuringTest.WINDOW, turing.teacherWindows(), turing.imitatorWindows(),
+                turing.folds(), 100 * turing.accuracy(), 100 * turing.spread(), String.join(", ", TuringTest.FEATURES)));
+        html.append("<h2>On the pitch</h2>\n<div class=\"row\">\n");
+        PlayedGame teacherGame = results.teacher().get(0);
+        PlayedGame imitatorGame = results.imitator().get(0);
+        html.append("<div>").append(ReportCharts.svg(ReportCharts.trajectories("Teacher: paths, first "
+                + TRAJECTORY_CYCLES + " cycles, seed " + teacherGame.seed(), teacherGame.frames(), TRAJECTORY_CYCLES),
+                600, 455)).append("</div>\n");
+        html.append("<div>").append(ReportCharts.svg(ReportCharts.trajectories("Imitator: paths, first "
+                + TRAJECTORY_CYCLES + " cycles, seed " + imitatorGame.seed(), imitatorGame.frames(), TRAJECTORY_CYCLES),
+                600, 455)).append("</div>\n");
+        html.append("<div>").append(ReportCharts.svg(ReportCharts.heatMap("Teacher: where the ball was (play on, all seeds)",
+                results.teacher()), 600, 425)).append("</div>\n");
+        html.append("<div>").append(ReportCharts.svg(ReportCharts.heatMap("Imitator: where the ball was (play on, all seeds)",
+                results.imitator()), 600, 425)).append("</div>\n</div>\n");
+        html.append("<h2>Replay: teacher, seed ").append(teacherGame.seed()).append(", ")
+                .append(score(teacherGame)).append("</h2>\n").append(ReplayPage.section("replay-teacher",
+                        teacherGame.frames()));
+        html.append("<h2>Replay: imitator, seed ").append(imitatorGame.seed()).append(", ")
+                .append(score(imitatorGame)).append("</h2>\n").append(ReplayPage.section("replay-imitator",
+                        imitatorGame.frames()));
+        html.append("<script>\n").append(ReplayPage.script()).append("</script>\n</body>\n</html>\n");
+        try (AtomicOutput output = AtomicOutput.create(file)) {
+            output.stream().write(html.toString().getBytes(StandardCharsets.UTF_8));
+            output.commit();
+        }
+        return file;
+    }
+
+    private static String score(PlayedGame game) {
+        return game.result().scoreLeft() + " : " + game.result().scoreRight();
+    }
+
+    private static String bars(Comparison comparison, String title, String unit, List<String> keys, double factor,
+                               String format) {
+        List<Comparison.Figure> figures = keys.stream().map(comparison::figure).toList();
+        return "<div>" + ReportCharts.svg(ReportCharts.bars(title, unit, figures.stream().map(Tables::shortLabel).toList(),
+                figures.stream().map(Comparison.Figure::teacher).toList(),
+                figures.stream().map(Comparison.Figure::imitator).toList(), factor, format),
+                Math.max(320, 150 + 130 * keys.size()), 360) + "</div>\n";
+    }
+}

@@ -1,0 +1,100 @@
+package org.scenes.evaluate;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.function.LongConsumer;
+import java.util.stream.Stream;
+import org.scenes.agent.BrainFactory;
+import org.scenes.agent.imitation.ImitationBrain;
+import org.scenes.agent.sim.GameResult;
+import org.scenes.agent.sim.GameSetup;
+import org.scenes.agent.sim.Simulator;
+import org.scenes.convert.SceneConverter;
+import org.scenes.match.ActionSelector;
+import org.scenes.match.KnowledgeBase;
+import org.scenes.match.Recognizer;
+import org.scenes.match.SceneMetric;
+import org.scenes.match.SceneTransform;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.Grid;
+import org.scenes.validate.MatchConfig;
+import org.scenes.scene.Scene;
+
+/**
+ * Learns an imitator from its teacher's own games, in process, through the same steps a user
+ * types: simulate (player logs), convert (scenes), knowledge base. The logs go to a temporary
+ * directory that is deleted afterwards.
+ */
+public final class Learner {
+    /** The learnt imitator: its brains and how many scenes it learnt from. */
+    public record Imitator(BrainFactory brains, int scenes) {
+    }
+
+    /** How to match: the metric, k, selector and transforms, as made from a configuration. */
+    public record Matching(java.util.function.Supplier<SceneMetric> metric, int k,
+                           java.util.function.Supplier<ActionSelector> selector,
+                           java.util.function.Supplier<List<SceneTransform>> transforms) {
+        /** The matching a configuration (of {@code validate}, {@code tune}) describes. */
+        public static Matching of(MatchConfig config, PluginRegistry registry) {
+            config.check(registry);
+            return new Matching(config.metricFactory(registry), config.k(), config.selectorFactory(registry),
+                    config.transformFactory(registry));
+        }
+    }
+
+    private Learner() {
+    }
+
+    /**
+     * Plays one game per training seed with the teacher on the left against {@code opponent} and
+     * learns from the teacher's players' scenes; {@code progress} gets the cycles played so far.
+     */
+    public static Imitator fromTeacherGames(GameSetup.Team teacher, GameSetup.Team opponent, int cycles,
+                                            List<Long> trainingSeeds, Matching matching, LongConsumer progress)
+            throws IOException {
+        Path directory = Files.createTempDirectory("scenes-evaluate-");
+        try {
+            KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
+            SceneConverter converter = new SceneConverter(Grid.DEFAULT, false, line -> { });
+            long done = 0;
+            for (long seed : trainingSeeds) {
+                Path logs = directory.resolve("seed-" + seed);
+                long before = done;
+                GameResult result = new Simulator(new GameSetup(teacher, opponent, cycles, seed, logs))
+                        .run(time -> progress.accept(before + time));
+                done += cycles;
+                progress.accept(done);
+                for (Path log : result.logs()) {
+                    if (!log.getFileName().toString().startsWith(teacher.name() + "_")) {
+                        continue;
+                    }
+                    List<Scene> scenes = new ArrayList<>();
+                    converter.convert(log, scenes::add);
+                    builder.addSequence(scenes, matching.transforms().get());
+                }
+            }
+            return of(builder.build(), matching);
+        } finally {
+            deleteTree(directory);
+        }
+    }
+
+    /** An imitator on a knowledge base already built (from scene files, say). */
+    public static Imitator of(KnowledgeBase knowledge, Matching matching) {
+        Recognizer recognizer = new Recognizer(knowledge, matching.metric(), matching.k());
+        return new Imitator(ImitationBrain.factory(recognizer, matching.selector(), matching.transforms()),
+                knowledge.size());
+    }
+
+    private static void deleteTree(Path directory) throws IOException {
+        try (Stream<Path> paths = Files.walk(directory)) {
+            for (Path path : paths.sorted(Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(path);
+            }
+        }
+    }
+}

@@ -1,0 +1,131 @@
+package org.scenes.evaluate;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.scenes.files.AtomicOutput;
+import org.scenes.gamelog.GameFrame;
+import org.scenes.gamelog.PlayerState;
+import org.scenes.scene.Side;
+
+/**
+ * A replay of one game in a web page that needs no network: the frames as JSON inside the page
+ * and a small script drawing them on a canvas (pitch, players, ball, score, play mode), with a
+ * cycle slider, play/pause and speed.
+ */
+public final class ReplayPage {
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    private ReplayPage() {
+    }
+
+    /** Writes a page holding only the replay, atomically. */
+    public static void write(Path file, String title, List<GameFrame> frames) throws IOException {
+        if (frames.isEmpty()) {
+            throw new IllegalArgumentException("a replay needs at least one frame");
+        }
+        String html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + escape(title)
+                + "</title>\n<style>\n" + style() + "</style>\n</head>\n<body>\n<h1>" + escape(title) + "</h1>\n"
+                + section("replay", frames) + "<script>\n" + script() + "</script>\n</body>\n</html>\n";
+        try (AtomicOutput output = AtomicOutput.create(file)) {
+            output.stream().write(html.getBytes(StandardCharsets.UTF_8));
+            output.commit();
+        }
+    }
+
+    /** The replay's markup and data; the page needs {@link #script()} once after all replays. */
+    static String section(String id, List<GameFrame> frames) {
+        return "<div class=\"replay\" id=\"" + escape(id) + "\">\n"
+                + "<canvas width=\"920\" height=\"624\"></canvas>\n<div class=\"replay-controls\">"
+                + "<button class=\"replay-play\" type=\"button\">&#9654; play</button>"
+                + "<input class=\"replay-cycle\" type=\"range\" min=\"0\" max=\"0\" value=\"0\" aria-label=\"frame\">"
+                + "<select class=\"replay-speed\" aria-label=\"speed\"><option value=\"1\">x1</option>"
+                + "<option value=\"4\" selected>x4</option><option value=\"10\">x10</option></select>"
+                + "<span class=\"replay-status\"></span></div>\n"
+                + "<script type=\"application/json\" class=\"replay-data\">" + data(frames) + "</script>\n</div>\n";
+    }
+
+    static String style() {
+        return "body{font-family:sans-serif;margin:1.5em;color:#222;max-width:1320px}"
+                + ".replay canvas{border:1px solid #444;max-width:100%}"
+                + ".replay-controls{display:flex;gap:.8em;align-items:center;margin:.4em 0 1.2em}"
+                + ".replay-cycle{flex:1}.replay-status{font-family:monospace;min-width:24em}\n";
+    }
+
+    static String script() {
+        try (InputStream in = ReplayPage.class.getResourceAsStream("replay.js")) {
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /**
+     * The frames compactly: team names, the play modes once, the players' sides and numbers once,
+     * then per frame [time, mode index, score left, score right, ball x, ball y, [x, y, body ...]]
+     * in the order of the last frame's players (a player missing later stays where it was).
+     */
+    static String data(List<GameFrame> frames) {
+        // the last frame: every player that connected is in it
+        GameFrame complete = frames.get(frames.size() - 1);
+        List<String> keys = new ArrayList<>();
+        List<List<Object>> players = new ArrayList<>();
+        for (PlayerState p : complete.players()) {
+            keys.add(key(p));
+            players.add(List.of(p.side() == Side.LEFT ? "l" : "r", p.unum()));
+        }
+        Map<String, Integer> modeIndex = new LinkedHashMap<>();
+        List<Object> rows = new ArrayList<>(frames.size());
+        double[] last = new double[3 * keys.size()];
+        for (GameFrame frame : frames) {
+            for (PlayerState p : frame.players()) {
+                int i = keys.indexOf(key(p));
+                if (i >= 0) {
+                    last[3 * i] = round(p.x());
+                    last[3 * i + 1] = round(p.y());
+                    last[3 * i + 2] = Math.round(p.body());
+                }
+            }
+            List<Object> row = new ArrayList<>(7);
+            row.add(frame.time());
+            row.add(modeIndex.computeIfAbsent(frame.playMode(), m -> modeIndex.size()));
+            row.add(frame.scoreLeft());
+            row.add(frame.scoreRight());
+            row.add(round(frame.ball().x()));
+            row.add(round(frame.ball().y()));
+            row.add(last.clone());
+            rows.add(row);
+        }
+        Map<String, Object> data = new LinkedHashMap<>();
+        data.put("left", complete.leftTeam());
+        data.put("right", complete.rightTeam());
+        data.put("modes", new ArrayList<>(modeIndex.keySet()));
+        data.put("players", players);
+        data.put("frames", rows);
+        try {
+            // "</" cannot end the script element early: JSON allows the slash escaped
+            return JSON.writeValueAsString(data).replace("</", "<\\/");
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    private static String key(PlayerState p) {
+        return p.side() + "_" + p.unum();
+    }
+
+    private static double round(double v) {
+        return Math.round(v * 10) / 10.0;
+    }
+
+    static String escape(String text) {
+        return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
+    }
+}

@@ -1,0 +1,185 @@
+package org.scenes.evaluate;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.scenes.gamelog.GameFrame;
+import org.scenes.gamelog.PlayerState;
+import org.scenes.protocol.CommandType;
+import org.scenes.protocol.PlayerCommand;
+
+/**
+ * Can a simple classifier tell the teacher from the imitator? Each left player's play is cut into
+ * windows of {@link #WINDOW} game cycles of play on; each window becomes the {@link #FEATURES}
+ * below; a logistic regression learns teacher against imitator, cross-validated by game seed
+ * (trained on the other seeds' windows of both, tested on the held-out seed's), so windows of one
+ * game never sit on both sides. The figure is the balanced accuracy on the held-out windows:
+ * 0.5 means it cannot tell them apart, 1.0 always can.
+ */
+public final class TuringTest {
+    /** Game cycles per window. */
+    public static final int WINDOW = 50;
+    /** What the classifier sees of each window, in order. */
+    public static final List<String> FEATURES = List.of(
+            "mean speed", "speed spread", "mean distance to ball", "mean body turn per cycle",
+            "share of cycles closing on the ball", "dash share", "turn share", "kick share",
+            "answered share of sees", "mean |turn moment|", "mean dash power");
+
+    /** The accuracy over held-out folds and its spread, and how many windows each side gave. */
+    public record Outcome(double accuracy, double spread, int teacherWindows, int imitatorWindows, int folds) {
+    }
+
+    private TuringTest() {
+    }
+
+    public static Outcome run(List<PlayedGame> teacher, List<PlayedGame> imitator) {
+        Map<Long, List<double[]>> teacherBySeed = new HashMap<>();
+        Map<Long, List<double[]>> imitatorBySeed = new HashMap<>();
+        int teacherCount = 0;
+        int imitatorCount = 0;
+        for (PlayedGame game : teacher) {
+            List<double[]> windows = windows(game);
+            teacherBySeed.computeIfAbsent(game.seed(), s -> new ArrayList<>()).addAll(windows);
+            teacherCount += windows.size();
+        }
+        for (PlayedGame game : imitator) {
+            List<double[]> windows = windows(game);
+            imitatorBySeed.computeIfAbsent(game.seed(), s -> new ArrayList<>()).addAll(windows);
+            imitatorCount += windows.size();
+        }
+        List<Long> seeds = teacher.stream().map(PlayedGame::seed).distinct().toList();
+        List<Double> accuracies = new ArrayList<>();
+        if (seeds.size() >= 2) {
+            for (long held : seeds) {
+                List<double[]> trainT = new ArrayList<>();
+                List<double[]> trainI = new ArrayList<>();
+                for (long seed : seeds) {
+                    if (seed != held) {
+                        trainT.addAll(teacherBySeed.getOrDefault(seed, List.of()));
+                        trainI.addAll(imitatorBySeed.getOrDefault(seed, List.of()));
+                    }
+                }
+                fold(trainT, trainI, teacherBySeed.getOrDefault(held, List.of()),
+                        imitatorBySeed.getOrDefault(held, List.of()), accuracies);
+            }
+        } else {
+            // one game each: alternate blocks of windows instead of seeds
+            List<double[]> allT = teacherBySeed.values().stream().flatMap(List::stream).toList();
+            List<double[]> allI = imitatorBySeed.values().stream().flatMap(List::stream).toList();
+            int folds = 5;
+            for (int f = 0; f < folds; f++) {
+                List<double[]> trainT = new ArrayList<>();
+                List<double[]> trainI = new ArrayList<>();
+                List<double[]> testT = new ArrayList<>();
+                List<double[]> testI = new ArrayList<>();
+                split(allT, f, folds, trainT, testT);
+                split(allI, f, folds, trainI, testI);
+                fold(trainT, trainI, testT, testI, accuracies);
+            }
+        }
+        double mean = accuracies.stream().mapToDouble(Double::doubleValue).average().orElse(Double.NaN);
+        double spread = Spread.of(accuracies.stream().mapToDouble(Double::doubleValue).toArray()).sd();
+        return new Outcome(mean, spread, teacherCount, imitatorCount, accuracies.size());
+    }
+
+    private static void split(List<double[]> all, int fold, int folds, List<double[]> train, List<double[]> test) {
+        int block = Math.max(1, all.size() / folds);
+        for (int i = 0; i < all.size(); i++) {
+            (Math.min(i / block, folds - 1) == fold ? test : train).add(all.get(i));
+        }
+    }
+
+    private static void fold(List<double[]> trainT, List<double[]> trainI, List<double[]> testT, List<double[]> testI,
+                             List<Double> accuracies) {
+        if (trainT.isEmpty() || trainI.isEmpty() || testT.isEmpty() || testI.isEmpty()) {
+            return;
+        }
+        LogisticRegression model = LogisticRegression.fit(trainT, trainI);
+        double teacherRight = testT.stream().filter(x -> model.probability(x) < 0.5).count() / (double) testT.size();
+        double imitatorRight = testI.stream().filter(x -> model.probability(x) >= 0.5).count() / (double) testI.size();
+        accuracies.add((teacherRight + imitatorRight) / 2);
+    }
+
+    /** The feature vectors of one game's windows, every player of the game's side. */
+    static List<double[]> windows(PlayedGame game) {
+        int players = game.traces().size();
+        int windowCount = game.result().cycles() / WINDOW + 1;
+        double[][][] sums = new double[players][windowCount][14];
+        GameFrame previous = null;
+        for (GameFrame frame : game.frames()) {
+            if (frame.playMode().equals("play_on") && previous != null && previous.time() == frame.time() - 1) {
+                int w = Math.min(windowCount - 1, frame.time() / WINDOW);
+                for (PlayerState player : frame.players()) {
+                    if (player.side() != game.side() || player.unum() > players) {
+                        continue;
+                    }
+                    PlayerState before = previous.players().stream()
+                            .filter(p -> p.side() == game.side() && p.unum() == player.unum()).findFirst().orElse(null);
+                    if (before == null) {
+                        continue;
+                    }
+                    double[] s = sums[player.unum() - 1][w];
+                    double speed = Math.hypot(player.x() - before.x(), player.y() - before.y());
+                    double distance = Math.hypot(player.x() - frame.ball().x(), player.y() - frame.ball().y());
+                    double distanceBefore = Math.hypot(before.x() - previous.ball().x(), before.y() - previous.ball().y());
+                    s[0]++;
+                    s[1] += speed;
+                    s[2] += speed * speed;
+                    s[3] += distance;
+                    s[4] += Math.abs(angle(player.body() - before.body()));
+                    s[5] += distance < distanceBefore ? 1 : 0;
+                }
+            }
+            previous = frame;
+        }
+        for (PlayerTrace trace : game.traces()) {
+            for (PlayerTrace.Decision decision : trace.decisions()) {
+                if (decision.paused()) {
+                    continue;
+                }
+                double[] s = sums[trace.unum() - 1][Math.min(windowCount - 1, Math.max(0, decision.time() / WINDOW))];
+                s[6]++;
+                PlayerCommand command = decision.driver();
+                if (command == null) {
+                    continue;
+                }
+                s[7]++;
+                if (command.type() == CommandType.DASH) {
+                    s[8]++;
+                    s[11] += command.first();
+                } else if (command.type() == CommandType.TURN) {
+                    s[9]++;
+                    s[12] += Math.abs(command.first());
+                } else {
+                    s[10]++;
+                }
+            }
+        }
+        List<double[]> windows = new ArrayList<>();
+        for (double[][] player : sums) {
+            for (double[] s : player) {
+                if (s[0] < WINDOW / 2.0 || s[6] < 1) {
+                    continue; // too little play in this window to say anything
+                }
+                double n = s[0];
+                double mean = s[1] / n;
+                double answered = Math.max(1, s[7]);
+                windows.add(new double[] {mean, Math.sqrt(Math.max(0, s[2] / n - mean * mean)), s[3] / n, s[4] / n,
+                        s[5] / n, s[8] / answered, s[9] / answered, s[10] / answered, s[7] / s[6],
+                        s[9] == 0 ? 0 : s[12] / s[9], s[8] == 0 ? 0 : Math.min(100, s[11] / s[8])});
+            }
+        }
+        return windows;
+    }
+
+    private static double angle(double degrees) {
+        double a = degrees % 360;
+        if (a > 180) {
+            a -= 360;
+        } else if (a < -180) {
+            a += 360;
+        }
+        return a;
+    }
+}
