@@ -101,10 +101,17 @@ public final class Folds {
     public static Map<String, ToDoubleFunction<ValidationReport>> figures() {
         Map<String, ToDoubleFunction<ValidationReport>> figures = new LinkedHashMap<>();
         figures.put("accuracy", ValidationReport::accuracy);
+        figures.put("accuracyMajority", r -> r.majorityBaseline(ActionLabel.PRIMARY));
+        figures.put("accuracyRepeatPrevious", r -> r.repeatPreviousBaseline(ActionLabel.PRIMARY));
         figures.put("directionAccuracy", ValidationReport::directionAccuracy);
         figures.put("macroF1", ValidationReport::macroF1);
         figures.put("kickRecall", r -> r.recall(ActionType.KICK));
         figures.put("turnSignAgreement", ValidationReport::turnSignAgreement);
+        for (ActionLabel label : List.of(ActionLabel.BODY, ActionLabel.NECK, ActionLabel.BOTH)) {
+            figures.put(label.figure(), r -> r.accuracy(label));
+            figures.put(label.figure() + "Majority", r -> r.majorityBaseline(label));
+            figures.put(label.figure() + "RepeatPrevious", r -> r.repeatPreviousBaseline(label));
+        }
         figures.put("meanDecisionMicros", ValidationReport::meanDecisionMicros);
         return figures;
     }
