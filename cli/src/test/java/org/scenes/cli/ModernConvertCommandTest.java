@@ -83,4 +83,28 @@ class ModernConvertCommandTest {
         assertEquals(1, cli.err().strip().lines().count(), cli.err());
         assertTrue(cli.err().contains(coach + ":2: this is an online coach's log"), cli.err());
     }
+
+    @Test
+    void validatePrintsTheBaselinesBesideEveryAccuracy() throws IOException {
+        Path scenes = dir.resolve("helios.json");
+        assertEquals(0, cli.run("convert", modernLog(200), "-o", scenes), cli.err());
+        assertEquals(0, cli.run("validate", "--train", scenes, "--self", "--metric", "ball-goal"), cli.err());
+        String text = cli.out();
+        for (String line : List.of("Action accuracy", "Body action", "Neck action", "Body and neck")) {
+            String row = text.lines().filter(l -> l.startsWith(line)).findFirst().orElseThrow();
+            assertTrue(row.contains("baselines: majority (") && row.contains("repeat previous"), row);
+        }
+        assertTrue(text.contains("body classes           noop 100, dash 99"), text);
+        assertTrue(text.contains("dash direction error"), text);
+
+        assertEquals(0, cli.run("validate", "--train", scenes, "--self", "--metric", "ball-goal", "--json"), cli.err());
+        assertTrue(cli.out().contains("\"bodyAccuracy\":{\"accuracy\":"), cli.out());
+        assertTrue(cli.out().contains("\"repeatPreviousBaseline\":0.0"), "body alternates dash / noop: " + cli.out());
+
+        Path half = dir.resolve("half.json");
+        assertEquals(0, cli.run("convert", modernLog(120), "-o", half), cli.err());
+        assertEquals(0, cli.run("validate", "--folds", scenes, half, "--metric", "ball-goal"), cli.err());
+        assertTrue(cli.out().contains("bodyAccuracyRepeatPrevious"), cli.out());
+        assertTrue(cli.out().contains("accuracyMajority"), cli.out());
+    }
 }
