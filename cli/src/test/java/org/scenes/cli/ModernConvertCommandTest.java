@@ -98,8 +98,11 @@ class ModernConvertCommandTest {
         assertTrue(text.contains("dash direction error"), text);
 
         assertEquals(0, cli.run("validate", "--train", scenes, "--self", "--metric", "ball-goal", "--json"), cli.err());
-        assertTrue(cli.out().contains("\"bodyAccuracy\":{\"accuracy\":"), cli.out());
-        assertTrue(cli.out().contains("\"repeatPreviousBaseline\":0.0"), "body alternates dash / noop: " + cli.out());
+        com.fasterxml.jackson.databind.JsonNode body = new com.fasterxml.jackson.databind.ObjectMapper()
+                .readTree(cli.out()).path("labels").path("bodyAccuracy");
+        assertEquals(1.0, body.path("accuracy").asDouble(), "one view, two cycles: the see age tells them apart");
+        assertEquals(0.0, body.path("repeatPreviousBaseline").asDouble(-1), "body alternates dash / noop");
+        assertEquals("noop", body.path("majorityClass").asText());
 
         Path half = dir.resolve("half.json");
         assertEquals(0, cli.run("convert", modernLog(120), "-o", half), cli.err());
