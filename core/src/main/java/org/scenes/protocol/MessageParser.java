@@ -91,13 +91,12 @@ public final class MessageParser {
                 }
                 return count;
             }
-            int close = bytes[at] == '(' ? messageEnd(bytes, at, limit) : -1;
-            int pieceEnd = close < 0 ? limit : close;
             origin = offset;
-            Message message = parseOne(bytes, at, pieceEnd - at);
+            // the balance check finds where this message ends: one pass over the bytes, as for one message
+            Message message = parseOne(bytes, at, limit - at, true);
+            at = end;
             sink.accept(message);
             count++;
-            at = pieceEnd;
         }
     }
 
@@ -109,35 +108,12 @@ public final class MessageParser {
         return messages;
     }
 
-    /**
-     * The end (exclusive) of the balanced list opening at {@code bytes[from]}, strings skipped,
-     * or -1 when it does not close before {@code limit}.
-     */
-    private static int messageEnd(byte[] bytes, int from, int limit) {
-        int depth = 0;
-        for (int i = from; i < limit; i++) {
-            byte c = bytes[i];
-            if (c == '(') {
-                depth++;
-            } else if (c == ')') {
-                if (--depth == 0) {
-                    return i + 1;
-                }
-            } else if (c == '"') {
-                int close = i + 1;
-                while (close < limit && bytes[close] != '"') {
-                    close++;
-                }
-                if (close >= limit) {
-                    return -1;
-                }
-                i = close;
-            }
-        }
-        return -1;
+    private Message parseOne(byte[] bytes, int offset, int length) {
+        return parseOne(bytes, offset, length, false);
     }
 
-    private Message parseOne(byte[] bytes, int offset, int length) {
+    /** @param more whether more messages may follow this one (then {@code end} is left where it ends) */
+    private Message parseOne(byte[] bytes, int offset, int length, boolean more) {
         buf = bytes;
         start = offset;
         end = offset + length;
@@ -146,7 +122,7 @@ public final class MessageParser {
         }
         pos = start;
         skipSpace();
-        checkBalanced();
+        checkBalanced(more);
         pos++;
         skipSpace();
         int headStart = pos;
@@ -175,8 +151,11 @@ public final class MessageParser {
 
     // ---- structure -------------------------------------------------------------------------
 
-    /** One pass over the message: one list, parentheses balanced outside strings, nothing after it. */
-    private void checkBalanced() {
+    /**
+     * One pass over the message: one list, parentheses balanced outside strings, nothing after it
+     * unless {@code more} messages may follow. Leaves {@code end} just after the closing ')'.
+     */
+    private void checkBalanced(boolean more) {
         if (pos >= end) {
             throw error("empty message");
         }
@@ -191,7 +170,7 @@ public final class MessageParser {
             } else if (c == ')') {
                 depth--;
                 if (depth == 0) {
-                    for (int j = i + 1; j < end; j++) {
+                    for (int j = i + 1; j < end && !more; j++) {
                         if (!isSpace(buf[j]) && buf[j] != 0) {
                             throw errorAt(j, "unexpected text after the message's closing ')'"
                                     + " (a datagram with several messages is read with parseAll)");
