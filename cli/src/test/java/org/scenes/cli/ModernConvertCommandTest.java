@@ -110,4 +110,21 @@ class ModernConvertCommandTest {
         assertTrue(cli.out().contains("bodyAccuracyRepeatPrevious"), cli.out());
         assertTrue(cli.out().contains("accuracyMajority"), cli.out());
     }
+
+    @Test
+    void exportAndStatsShowBodyNeckAndSeeAge() throws IOException {
+        Path scenes = dir.resolve("helios.json");
+        assertEquals(0, cli.run("convert", modernLog(20), "-o", scenes), cli.err());
+        assertEquals(0, cli.run("export", "--format", "csv", scenes, "--label", "both", "--see-age", "--players", "0"),
+                cli.err());
+        List<String> rows = cli.out().lines().toList();
+        assertTrue(rows.get(0).endsWith(",unknown_players,see_age,both"), rows.get(0));
+        assertTrue(rows.get(1).startsWith("2,") && rows.get(1).endsWith(",0,noop+turn_neck"), rows.get(1));
+        assertTrue(rows.get(2).startsWith("3,") && rows.get(2).endsWith(",1,dash+turn_neck"), rows.get(2));
+        assertEquals(0, cli.run("export", "--format", "arff", scenes, "--label", "neck"), cli.err());
+        assertTrue(cli.out().contains("@attribute neck {none,noop,turn_neck}"), cli.out());
+        assertEquals(0, cli.run("stats", scenes), cli.err());
+        assertTrue(cli.out().contains("See age (cycles)         0 10, 1 9"), cli.out());
+        assertTrue(cli.out().contains("Body classes             noop 10, dash 9"), cli.out());
+    }
 }
