@@ -94,11 +94,11 @@ final class ReportTables {
     static void printFolds(PrintWriter out, Folds folds) {
         out.printf("Folds                    %d (each file tested against %s)%n", folds.reports().size(),
                 folds.protocol() == Folds.Protocol.NEXT ? "the next one" : "all the others");
-        out.printf("  %-22s %10s %10s%n", "figure", "mean", "std");
-        for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : Folds.figures().entrySet()) {
+        out.printf("  %-28s %10s %10s%n", "figure", "mean", "std");
+        for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : Folds.figuresWithBaselines().entrySet()) {
             boolean time = figure.getKey().contains("Micros");
             double scale = time ? 1 : 100;
-            out.printf("  %-22s %10.3f %10.3f%s%n", figure.getKey(), scale * folds.mean(figure.getValue()),
+            out.printf("  %-28s %10.3f %10.3f%s%n", figure.getKey(), scale * folds.mean(figure.getValue()),
                     scale * folds.std(figure.getValue()), time ? " us" : " %");
         }
         out.println();
