@@ -16,6 +16,7 @@ import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.convert.ConversionReport;
 import org.scenes.convert.DropReason;
 import org.scenes.convert.MalformedLine;
+import org.scenes.convert.Pairing;
 import org.scenes.convert.SceneConverter;
 import org.scenes.scene.Grid;
 import org.scenes.scene.Observer;
@@ -35,7 +36,8 @@ import picocli.CommandLine.Spec;
 /** {@code scenes convert}: player logs to scene files, with a summary of what was kept and dropped. */
 @Command(name = "convert", mixinStandardHelpOptions = true,
         description = {"Convert player logs (.lsf, the scenes proxy's .log, timestamped captures; gzip or plain)"
-                + " into scenes: each see with the actions sent after it. Rules: docs/conversion.md."})
+                + " into scenes: each see with the actions sent after it (or, under synchronous vision, each cycle"
+                + " with the latest see). Rules: docs/conversion.md."})
 final class ConvertCommand implements Callable<Integer> {
     /** Malformed-line warnings printed; the rest are only counted. */
     private static final int WARNINGS_SHOWN = 50;
@@ -69,26 +71,49 @@ final class ConvertCommand implements Callable<Integer> {
     @Option(names = "--strict", description = "Stop at the first malformed line instead of skipping it.")
     boolean strict;
 
+    @Option(names = "--pairing", paramLabel = "see|cycle|auto", defaultValue = "auto",
+            converter = PairingConverter.class,
+            description = {"How sees and actions become scenes: see (a scene per see, the classic rule),"
+                    + " cycle (a scene per cycle with the latest see and its age, for players that act every cycle),"
+                    + " auto (cycle once the server confirms synchronous vision with (ok synch_see); default)."})
+    Pairing pairing;
+
+    static final class PairingConverter implements picocli.CommandLine.ITypeConverter<Pairing> {
+        @Override
+        public Pairing convert(String value) {
+            Pairing pairing = Pairing.fromKey(value);
+            if (pairing == null) {
+                throw new picocli.CommandLine.TypeConversionException("expected see, cycle or auto, not '" + value + "'");
+            }
+            return pairing;
+        }
+    }
+
     private int warningsShown;
 
     @Override
     public Integer call() throws IOException {
         Grid grid = gridOptions.grid();
         PrintWriter err = spec.commandLine().getErr();
-        SceneConverter converter = new SceneConverter(grid, strict, line -> warn(err, line));
+        SceneConverter converter = new SceneConverter(grid, pairing, strict, line -> warn(err, line));
         ConversionReport total = new ConversionReport();
         List<Path> written = new ArrayList<>();
+        int failed = 0;
         long started = System.nanoTime();
         try (Progress progress = Progress.start(logs)) {
             if (output.file != null) {
                 try (LazyWriter writer = new LazyWriter(output.file, grid, sourceName(logs))) {
                     for (Path log : logs) {
-                        total.add(converter.convert(log, writer::write, progress::step));
+                        ConversionReport report = converter.convert(log, writer::write, progress::step);
+                        total.add(report);
+                        failed += noScenes(err, log, report) ? 1 : 0;
                         progress.logDone(log);
                     }
-                    writer.commit();
+                    if (failed == 0) {
+                        writer.commit();
+                        written.add(output.file);
+                    }
                 }
-                written.add(output.file);
             } else {
                 Files.createDirectories(output.directory);
                 List<String> names = outputNames(logs);
@@ -96,11 +121,16 @@ final class ConvertCommand implements Callable<Integer> {
                     Path log = logs.get(i);
                     Path target = output.directory.resolve(names.get(i) + ".json.gz");
                     try (LazyWriter writer = new LazyWriter(target, grid, log.getFileName().toString())) {
-                        total.add(converter.convert(log, writer::write, progress::step));
-                        writer.commit();
+                        ConversionReport report = converter.convert(log, writer::write, progress::step);
+                        total.add(report);
+                        if (noScenes(err, log, report)) {
+                            failed++;
+                        } else {
+                            writer.commit();
+                            written.add(target);
+                        }
                     }
                     progress.logDone(log);
-                    written.add(target);
                 }
             }
         }
@@ -109,7 +139,26 @@ final class ConvertCommand implements Callable<Integer> {
         }
         err.flush();
         printSummary(spec.commandLine().getOut(), total, grid, written, (System.nanoTime() - started) / 1e9);
+        if (failed > 0) {
+            err.printf("scenes: error: %d of %d logs gave no scenes%s%n", failed, logs.size(),
+                    output.file != null ? "; " + output.file + " not written" : "");
+            err.flush();
+            return ExitCodes.FAILURE;
+        }
         return ExitCodes.OK;
+    }
+
+    /** A log with messages but no scene is a failed conversion: says so in one line naming the log. */
+    private static boolean noScenes(PrintWriter err, Path log, ConversionReport report) {
+        if (report.scenes() > 0 || (report.messages() == 0 && report.malformed() == 0)) {
+            return false;
+        }
+        long commands = report.commands().values().stream().mapToLong(Long::longValue).sum();
+        err.printf(Locale.ROOT, "scenes: error: %s: no scenes from %d lines (%d see, %d commands, %d malformed lines)%s%n",
+                log, report.lines(), report.sees(), commands, report.malformed(),
+                report.sees() == 0 ? ": no see at all; is this a player's log?"
+                        : commands == 0 ? ": the player sent no command" : "");
+        return true;
     }
 
     private void warn(PrintWriter err, MalformedLine line) {
@@ -215,6 +264,13 @@ final class ConvertCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "%-22s %s%n", "Logs read", report.logs());
         out.printf(Locale.ROOT, "%-22s %s (%.1f MB of text)%n", "Lines read", report.lines(), report.bytes() / 1e6);
         out.printf(Locale.ROOT, "%-22s %s (%s repeated while paused, collapsed)%n", "See messages", report.sees(), report.repeatedSees());
+        if (report.perCycleLogs() > 0) {
+            out.printf(Locale.ROOT, "%-22s %s of %s logs (synchronous vision): %s cycles, %s sense_body repeated while paused;"
+                            + " scenes by see age %s%n", "Scene per cycle", report.perCycleLogs(), report.logs(),
+                    report.cycles(), report.repeatedSenseBodies(), report.seeAges().isEmpty() ? "none"
+                            : report.seeAges().entrySet().stream().map(e -> e.getKey() + ": " + e.getValue())
+                            .collect(Collectors.joining(", ")));
+        }
         out.printf(Locale.ROOT, "%-22s %s  (grid %s)%n", "Scenes written", report.scenes(), grid.describe());
         out.printf(Locale.ROOT, "%-22s %s%n", "Scenes dropped", report.droppedTotal());
         for (DropReason reason : DropReason.values()) {

@@ -20,6 +20,7 @@ import org.scenes.scene.Relation;
 import org.scenes.scene.Scene;
 import org.scenes.scene.SceneFileReader;
 import org.scenes.scene.SeenObject;
+import org.scenes.validate.ActionLabel;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -53,6 +54,16 @@ final class ExportCommand implements Callable<Integer> {
     @Option(names = "--players", paramLabel = "K", defaultValue = "3",
             description = "Nearest teammates and opponents to export; default ${DEFAULT-VALUE}.")
     int players;
+
+    enum Label { primary, body, neck, both }
+
+    @Option(names = "--label", paramLabel = "primary|body|neck|both", defaultValue = "primary",
+            description = {"The class column: the primary action's type (default), the body command class, the neck"
+                    + " class or both (noop: a turn, dash, kick or turn_neck of 0; docs/validation.md)."})
+    Label label;
+
+    @Option(names = "--see-age", description = "Add a see_age column before the class: cycles since the see the scene shows.")
+    boolean seeAge;
 
     @Option(names = "--missing", paramLabel = "TEXT", defaultValue = "",
             description = "CSV text for a value the scene lacks; default empty (ARFF always uses '?').")
@@ -89,7 +100,10 @@ final class ExportCommand implements Callable<Integer> {
             }
         }
         columns.add("unknown_players");
-        columns.add("action");
+        if (seeAge) {
+            columns.add("see_age");
+        }
+        columns.add(label == Label.primary ? "action" : label.name());
         return columns;
     }
 
@@ -103,8 +117,8 @@ final class ExportCommand implements Callable<Integer> {
                 for (String column : columns.subList(0, columns.size() - 1)) {
                     out.write("@attribute " + column + " numeric\n");
                 }
-                out.write("@attribute action {" + Arrays.stream(ActionType.values()).filter(t -> t != ActionType.NONE)
-                        .map(ActionType::key).collect(Collectors.joining(",")) + "}\n\n@data\n");
+                out.write("@attribute " + columns.get(columns.size() - 1) + " {" + String.join(",", classValues())
+                        + "}\n\n@data\n");
             } else {
                 out.write(String.join(",", columns) + "\n");
             }
@@ -136,7 +150,32 @@ final class ExportCommand implements Callable<Integer> {
         }
         row.append(',').append(objects.stream()
                 .filter(o -> o.kind() == ObjectKind.PLAYER && o.relation() == Relation.UNKNOWN).count());
-        row.append(',').append(scene.actionType().key());
+        if (seeAge) {
+            row.append(',').append(scene.seeAge());
+        }
+        row.append(',').append(label == Label.primary ? scene.actionType().key() : actionLabel().of(scene.actions()));
+    }
+
+    private ActionLabel actionLabel() {
+        return switch (label) {
+            case primary -> ActionLabel.PRIMARY;
+            case body -> ActionLabel.BODY;
+            case neck -> ActionLabel.NECK;
+            case both -> ActionLabel.BOTH;
+        };
+    }
+
+    /** The ARFF class values: every class the label can take. */
+    private List<String> classValues() {
+        List<String> body = new ArrayList<>(List.of(ActionLabel.NONE, ActionLabel.NO_OP));
+        Arrays.stream(ActionType.values()).filter(ActionType::worldChanging).forEach(t -> body.add(t.key()));
+        List<String> neck = List.of(ActionLabel.NONE, ActionLabel.NO_OP, ActionType.TURN_NECK.key());
+        return switch (label) {
+            case primary -> Arrays.stream(ActionType.values()).filter(t -> t != ActionType.NONE).map(ActionType::key).toList();
+            case body -> body;
+            case neck -> neck;
+            case both -> body.stream().flatMap(b -> neck.stream().map(n -> b + "+" + n)).toList();
+        };
     }
 
     private static SeenObject nearest(List<SeenObject> objects, ObjectKind kind, Relation relation) {

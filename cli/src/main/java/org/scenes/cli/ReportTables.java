@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.ToDoubleFunction;
 import org.scenes.scene.ActionType;
+import org.scenes.validate.ActionLabel;
 import org.scenes.validate.Folds;
 import org.scenes.validate.ValidationReport;
 
@@ -24,17 +25,33 @@ final class ReportTables {
             out.println();
         }
         if (outcomes.size() > 1) {
-            out.printf("%-60s %9s %9s%n", "Configuration", "Action%", "Kick%");
+            out.printf("%-60s %9s %9s %9s %9s%n", "Configuration", "Action%", "Majority%", "Previous%", "Kick%");
             for (ValidateCommand.Outcome outcome : outcomes) {
-                out.printf("%-60s %9.3f %9.3f%n", outcome.label(), 100 * outcome.accuracy(), 100 * outcome.kickRecall());
+                ValidationReport pooled = outcome.report() != null ? outcome.report() : outcome.folds().pooled();
+                out.printf("%-60s %9.3f %9.3f %9.3f %9.3f%n", outcome.label(), 100 * outcome.accuracy(),
+                        100 * pooled.majorityBaseline(ActionLabel.PRIMARY), 100 * pooled.repeatPreviousBaseline(ActionLabel.PRIMARY),
+                        100 * outcome.kickRecall());
             }
         }
     }
 
     static void printRun(PrintWriter out, ValidationReport report) {
         out.printf("Scenes                   train %d, test %d%n", report.trainScenes(), report.testScenes());
-        out.printf("Action accuracy          %.3f %% (%d of %d)%n", 100 * report.accuracy(), report.correct(), report.testScenes());
+        out.printf("Action accuracy          %.3f %% (%d of %d)%s%n", 100 * report.accuracy(), report.correct(),
+                report.testScenes(), baselines(report, ActionLabel.PRIMARY));
         out.printf("Action with direction    %.3f %% (turns count only with the right sign)%n", 100 * report.directionAccuracy());
+        out.printf("Body action              %.3f %%%s%n", 100 * report.accuracy(ActionLabel.BODY),
+                baselines(report, ActionLabel.BODY));
+        if (report.classCounts(ActionLabel.NECK).keySet().equals(java.util.Set.of(ActionLabel.NONE))) {
+            out.println("Neck action              - (no turn_neck in the test scenes)");
+        } else {
+            out.printf("Neck action              %.3f %%%s%n", 100 * report.accuracy(ActionLabel.NECK),
+                    baselines(report, ActionLabel.NECK));
+        }
+        out.printf("Body and neck            %.3f %%%s%n", 100 * report.accuracy(ActionLabel.BOTH),
+                baselines(report, ActionLabel.BOTH));
+        out.printf("  body classes           %s (noop: a turn, dash or kick of 0)%n", classes(report, ActionLabel.BODY));
+        out.printf("  neck classes           %s%n", classes(report, ActionLabel.NECK));
         out.printf("Kicks                    %d of %d recalled (%.3f %%), %d predicted, precision %.3f, F1 %.3f%n",
                 report.truePositives(ActionType.KICK), report.support(ActionType.KICK),
                 100 * nanToZero(report.recall(ActionType.KICK)), report.predictedCount(ActionType.KICK),
@@ -67,6 +84,9 @@ final class ReportTables {
         out.printf("  dash power error       %s%n", number(report.dashPowerError()));
         out.printf("  kick power error       %s%n", number(report.kickPowerError()));
         out.printf("  kick direction error   %s%n", number(report.kickDirectionError()));
+        out.printf("  dash direction error   %s (body dashes on both sides; a plain dash is 0)%n",
+                number(report.dashDirectionError()));
+        out.printf("  neck angle error       %s%n", number(report.neckAngleError()));
         out.printf("Decision time            mean %.1f us, p99 %.1f us%n", report.meanDecisionMicros(), report.p99DecisionMicros());
         out.printf("Scenes per 100 ms        %d (stored scenes one decision could scan)%n", report.scenesPer100ms());
     }
@@ -74,16 +94,39 @@ final class ReportTables {
     static void printFolds(PrintWriter out, Folds folds) {
         out.printf("Folds                    %d (each file tested against %s)%n", folds.reports().size(),
                 folds.protocol() == Folds.Protocol.NEXT ? "the next one" : "all the others");
-        out.printf("  %-22s %10s %10s%n", "figure", "mean", "std");
-        for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : Folds.figures().entrySet()) {
+        out.printf("  %-28s %10s %10s%n", "figure", "mean", "std");
+        for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : Folds.figuresWithBaselines().entrySet()) {
             boolean time = figure.getKey().contains("Micros");
             double scale = time ? 1 : 100;
-            out.printf("  %-22s %10.3f %10.3f%s%n", figure.getKey(), scale * folds.mean(figure.getValue()),
+            out.printf("  %-28s %10.3f %10.3f%s%n", figure.getKey(), scale * folds.mean(figure.getValue()),
                     scale * folds.std(figure.getValue()), time ? " us" : " %");
         }
         out.println();
         out.println("Pooled over the decisions of all folds:");
         printRun(out, folds.pooled());
+    }
+
+    /**
+     * The two baselines beside an accuracy, flagged when the accuracy does not beat them: a figure
+     * below "repeat the previous action" says matching learnt nothing a lookup could not.
+     */
+    static String baselines(ValidationReport report, ActionLabel label) {
+        double majority = report.majorityBaseline(label);
+        double previous = report.repeatPreviousBaseline(label);
+        if (Double.isNaN(majority) && Double.isNaN(previous)) {
+            return "";
+        }
+        double accuracy = report.accuracy(label);
+        String flag = accuracy < Math.max(majority, previous) ? "  << BELOW A BASELINE" : "";
+        return String.format("   baselines: majority (%s) %.3f %%, repeat previous %.3f %%%s",
+                report.majorityClass(label), 100 * majority, 100 * previous, flag);
+    }
+
+    private static String classes(ValidationReport report, ActionLabel label) {
+        StringBuilder text = new StringBuilder();
+        report.classCounts(label).forEach((name, count) -> text.append(text.length() == 0 ? "" : ", ")
+                .append(name).append(' ').append(count));
+        return text.length() == 0 ? "none" : text.toString();
     }
 
     private static double nanToZero(double value) {

@@ -9,6 +9,7 @@ import java.util.TreeMap;
 import java.util.concurrent.Callable;
 import org.scenes.scene.Action;
 import org.scenes.scene.ActionType;
+import org.scenes.validate.ActionLabel;
 import org.scenes.scene.ObjectKind;
 import org.scenes.scene.Relation;
 import org.scenes.scene.Scene;
@@ -41,6 +42,9 @@ final class StatsCommand implements Callable<Integer> {
         Map<ObjectKind, Long> kinds = new EnumMap<>(ObjectKind.class);
         Map<String, Long> relations = new TreeMap<>();
         Map<String, Long> observers = new TreeMap<>();
+        Map<String, Long> bodyClasses = new TreeMap<>();
+        Map<String, Long> neckClasses = new TreeMap<>();
+        Map<Integer, Long> seeAges = new TreeMap<>();
         SceneFileHeader header;
         try (SceneFileReader reader = SceneFileReader.open(file)) {
             header = reader.header();
@@ -51,6 +55,9 @@ final class StatsCommand implements Callable<Integer> {
                 lastCycle = Math.max(lastCycle, scene.cycle());
                 observers.merge(scene.observer().label(), 1L, Long::sum);
                 primary.merge(scene.actionType(), 1L, Long::sum);
+                bodyClasses.merge(ActionLabel.BODY.of(scene.actions()), 1L, Long::sum);
+                neckClasses.merge(ActionLabel.NECK.of(scene.actions()), 1L, Long::sum);
+                seeAges.merge(scene.seeAge(), 1L, Long::sum);
                 for (Action action : scene.actions().subList(Math.min(1, scene.actions().size()), scene.actions().size())) {
                     secondary.merge(action.type(), 1L, Long::sum);
                 }
@@ -83,6 +90,9 @@ final class StatsCommand implements Callable<Integer> {
                 out.printf(Locale.ROOT, "  %-22s %8d %8.1f %8d%n", type.key(), count, scenes == 0 ? 0 : 100.0 * count / scenes, second);
             }
         }
+        out.printf(Locale.ROOT, "%-24s %s%n", "Body classes", classes(bodyClasses));
+        out.printf(Locale.ROOT, "%-24s %s%n", "Neck classes", classes(neckClasses));
+        out.printf(Locale.ROOT, "%-24s %s%n", "See age (cycles)", classes(seeAges));
         out.println();
         out.printf(Locale.ROOT, "%-24s %8s %8s%n", "Object kind", "count", "/scene");
         for (ObjectKind kind : ObjectKind.values()) {
@@ -95,5 +105,12 @@ final class StatsCommand implements Callable<Integer> {
         relations.forEach((relation, count) -> out.printf(Locale.ROOT, "  %-22s %8d%n", relation, count));
         out.flush();
         return ExitCodes.OK;
+    }
+
+    /** {@code noop 120, dash 80}: most common first. */
+    private static <K> String classes(Map<K, Long> counts) {
+        return counts.isEmpty() ? "none" : counts.entrySet().stream()
+                .sorted(Map.Entry.<K, Long>comparingByValue().reversed())
+                .map(e -> e.getKey() + " " + e.getValue()).collect(java.util.stream.Collectors.joining(", "));
     }
 }

@@ -30,7 +30,9 @@ import picocli.CommandLine.Spec;
 /** {@code scenes validate}: how often matching picks the action the recorded player took. */
 @Command(name = "validate", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Predict the action of every test scene from the training scenes and compare with the recorded one.",
-                "Reports action accuracy, kicks, per-action precision/recall/F1, parameter errors and decision time."})
+                "Reports action accuracy, body, neck and body+neck accuracy, each beside the majority-class and"
+                        + " repeat-previous-action baselines, kicks, per-action precision/recall/F1, parameter errors"
+                        + " and decision time."})
 final class ValidateCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;

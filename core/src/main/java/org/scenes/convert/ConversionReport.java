@@ -28,6 +28,10 @@ public final class ConversionReport {
     private long extraActions;
     private long illFormedCommands;
     private long malformed;
+    private long perCycleLogs;
+    private long cycles;
+    private long repeatedSenseBodies;
+    private final Map<Integer, Long> seeAges = new TreeMap<>();
     private final Map<DropReason, Long> dropped = new EnumMap<>(DropReason.class);
     private final Map<CommandType, Long> commands = new EnumMap<>(CommandType.class);
     private final Map<ActionType, Long> actions = new EnumMap<>(ActionType.class);
@@ -55,6 +59,22 @@ public final class ConversionReport {
     void scene(ActionType primary) {
         scenes++;
         actions.merge(primary, 1L, Long::sum);
+    }
+
+    void perCycle() {
+        perCycleLogs++;
+    }
+
+    void cycle() {
+        cycles++;
+    }
+
+    void repeatedSenseBody() {
+        repeatedSenseBodies++;
+    }
+
+    void seeAge(int age) {
+        seeAges.merge(age, 1L, Long::sum);
     }
 
     void drop(DropReason reason) {
@@ -96,6 +116,10 @@ public final class ConversionReport {
         extraActions += other.extraActions;
         illFormedCommands += other.illFormedCommands;
         malformed += other.malformed;
+        perCycleLogs += other.perCycleLogs;
+        cycles += other.cycles;
+        repeatedSenseBodies += other.repeatedSenseBodies;
+        other.seeAges.forEach((k, v) -> seeAges.merge(k, v, Long::sum));
         other.dropped.forEach((k, v) -> dropped.merge(k, v, Long::sum));
         other.commands.forEach((k, v) -> commands.merge(k, v, Long::sum));
         other.actions.forEach((k, v) -> actions.merge(k, v, Long::sum));
@@ -133,6 +157,26 @@ public final class ConversionReport {
     /** {@code see} messages identical to the one before, collapsed into it. */
     public long repeatedSees() {
         return repeatedSees;
+    }
+
+    /** Logs converted a scene per cycle (the server confirmed synchronous vision, or pairing was cycle). */
+    public long perCycleLogs() {
+        return perCycleLogs;
+    }
+
+    /** Per cycle: cycles opened by a {@code sense_body} after the first {@code see}. */
+    public long cycles() {
+        return cycles;
+    }
+
+    /** Per cycle: {@code sense_body}s of a standing clock without a new {@code see}, collapsed into the open scene. */
+    public long repeatedSenseBodies() {
+        return repeatedSenseBodies;
+    }
+
+    /** Scenes written by the age of the {@code see} they show (0: seen in the cycle they acted). */
+    public Map<Integer, Long> seeAges() {
+        return Collections.unmodifiableMap(seeAges);
     }
 
     public long scenes() {

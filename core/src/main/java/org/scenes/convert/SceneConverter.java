@@ -1,6 +1,7 @@
 package org.scenes.convert;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -15,6 +16,8 @@ import org.scenes.protocol.MessageParser;
 import org.scenes.protocol.PlayerCommand;
 import org.scenes.protocol.ProtocolException;
 import org.scenes.protocol.See;
+import org.scenes.protocol.SenseBody;
+import org.scenes.protocol.ServerNotice;
 import org.scenes.protocol.Unknown;
 import org.scenes.protocol.VisualObject;
 import org.scenes.scene.Action;
@@ -30,8 +33,10 @@ import org.scenes.scene.Side;
  * Turns player logs into scenes (the thesis' LogToScenes, rules in docs/conversion.md): a scene is
  * a {@code see} with the actions the player sent after it and before the next different
  * {@code see}; identical repeated {@code see}s (play paused) collapse into one; scenes without
- * action and actions without {@code see} are dropped and counted. The live agent uses
- * {@link #seenObjects} for the same see-to-objects step.
+ * action and actions without {@code see} are dropped and counted. For a player that acts every
+ * cycle on synchronous vision ({@link Pairing}), a scene is a cycle (from one {@code sense_body} to
+ * the next) with the latest {@code see} and its age. A log line may hold several messages. The
+ * live agent uses {@link #seenObjects} for the same see-to-objects step.
  *
  * <p>Streams: one log line at a time, scenes handed to a {@link SceneSink} as they close.
  * Not thread-safe (it owns a {@link MessageParser}); use one converter per thread.
@@ -47,6 +52,7 @@ public final class SceneConverter {
     private static final int PROGRESS_LINES = 4096;
 
     private final Grid grid;
+    private final Pairing pairing;
     private final boolean strict;
     private final Consumer<MalformedLine> warnings;
     private final MessageParser parser = new MessageParser();
@@ -57,7 +63,16 @@ public final class SceneConverter {
      * @param warnings told of each malformed line when not strict
      */
     public SceneConverter(Grid grid, boolean strict, Consumer<MalformedLine> warnings) {
+        this(grid, Pairing.AUTO, strict, warnings);
+    }
+
+    /**
+     * @param pairing how sees and actions become scenes ({@link Pairing#AUTO}: per cycle once the
+     *                server confirms synchronous vision, per see otherwise)
+     */
+    public SceneConverter(Grid grid, Pairing pairing, boolean strict, Consumer<MalformedLine> warnings) {
         this.grid = Objects.requireNonNull(grid, "grid");
+        this.pairing = Objects.requireNonNull(pairing, "pairing");
         this.strict = strict;
         this.warnings = warnings == null ? line -> { } : warnings;
     }
@@ -140,7 +155,7 @@ public final class SceneConverter {
     }
 
     /** The state of converting one log. */
-    private final class Run {
+    private final class Run implements Consumer<Message> {
         final ConversionReport report = new ConversionReport();
         final Path file;
         final SceneSink sink;
@@ -148,11 +163,21 @@ public final class SceneConverter {
         Side side;
         int uniformNumber;
         Observer observer = Observer.UNKNOWN;
+        /** Whether scenes are made per cycle (player acting every cycle) rather than per see. */
+        boolean perCycle = pairing == Pairing.CYCLE;
+        byte[] lineBytes;
+        int lineOffset;
+        int lineLength;
 
+        /** The see the open scene shows (per see), or the latest see (per cycle). */
         See pending;
         Observer pendingObserver;
         byte[] pendingBytes = new byte[4096];
         int pendingLength;
+        /** Per cycle: whether a scene is open, its cycle, and whether a new see arrived since it opened. */
+        boolean cycleOpen;
+        int openCycle;
+        boolean newSeeSinceOpen;
         Action primary;
         Action secondary;
         boolean orphanActions;
@@ -160,6 +185,9 @@ public final class SceneConverter {
         Run(Path file, SceneSink sink) {
             this.file = file;
             this.sink = sink;
+            if (perCycle) {
+                report.perCycle();
+            }
         }
 
         void message(LogReader reader) throws IOException {
@@ -174,16 +202,48 @@ public final class SceneConverter {
                 report.repeatedSee();
                 return;
             }
-            Message message;
+            byte[] bytes = reader.buffer();
+            int offset = reader.offset();
+            int length = reader.length();
+            lineBytes = bytes;
+            lineOffset = offset;
+            lineLength = length;
+            String coach = CoachLog.evidence(bytes, offset, length);
+            if (coach != null) {
+                throw new LogException(file, reader.line(), "this is an online coach's log (" + coach
+                        + "), not a player's: convert the logs of the players", null);
+            }
             try {
-                message = parser.parse(reader.buffer(), reader.offset(), reader.length());
+                // a datagram (log line) may hold several messages, e.g. librcsc's (turn 0)(turn_neck 0)(done)
+                parser.parseAll(bytes, offset, length, this);
             } catch (ProtocolException e) {
                 malformed(reader.line(), e.getMessage());
-                return;
+            } catch (UncheckedIOException e) {
+                throw e.getCause();
             }
+        }
+
+        @Override
+        public void accept(Message message) {
+            try {
+                handle(message);
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
+        }
+
+        void handle(Message message) throws IOException {
             report.message();
             if (message instanceof See see) {
-                see(see, reader);
+                if (perCycle) {
+                    cycleSee(see);
+                } else {
+                    see(see);
+                }
+            } else if (message instanceof SenseBody body) {
+                if (perCycle) {
+                    senseBody(body);
+                }
             } else if (message instanceof PlayerCommand command) {
                 command(command);
             } else if (message instanceof InitRequest init) {
@@ -191,12 +251,19 @@ public final class SceneConverter {
                 observer = new Observer(team, side, uniformNumber);
             } else if (message instanceof InitReply reply) {
                 if (reply.head().equals("reconnect")) {
-                    close();
-                    pending = null;
+                    finish();
                 }
                 side = reply.side();
                 uniformNumber = reply.uniformNumber() > 0 ? reply.uniformNumber() : uniformNumber;
                 observer = new Observer(team, side, uniformNumber);
+            } else if (message instanceof ServerNotice notice) {
+                if (pairing == Pairing.AUTO && !perCycle && notice.head().equals("ok")
+                        && notice.text().equals("synch_see")) {
+                    // synchronous vision: a see every other cycle in normal view, the player acts every cycle
+                    finish();
+                    perCycle = true;
+                    report.perCycle();
+                }
             } else if (message instanceof Unknown unknown) {
                 report.unknown(unknown.head());
             }
@@ -209,19 +276,63 @@ public final class SceneConverter {
                     && Arrays.equals(pendingBytes, 0, length, reader.buffer(), offset, offset + length);
         }
 
-        void see(See see, LogReader reader) throws IOException {
+        /** Per see: a different see closes the open scene and opens the next. */
+        void see(See see) throws IOException {
             report.see();
-            int length = reader.length();
-            int offset = reader.offset();
             close();
+            remember(see);
+            orphanActions = false;
+        }
+
+        /**
+         * Per cycle: the see becomes the latest view. Arriving at the start of the open scene's cycle,
+         * before any action, it is that scene's view; otherwise it opens a scene of its own.
+         */
+        void cycleSee(See see) throws IOException {
+            report.see();
+            remember(see);
+            orphanActions = false;
+            if (cycleOpen && openCycle == see.time() && primary == null && secondary == null) {
+                newSeeSinceOpen = true;
+                return;
+            }
+            close();
+            open(see.time());
+        }
+
+        /**
+         * Per cycle: a sense_body starts a cycle, whose scene shows the latest see. While the clock
+         * stands still and no new see came, it is a repeat and the open scene goes on.
+         */
+        void senseBody(SenseBody body) throws IOException {
+            if (cycleOpen && openCycle == body.time() && !newSeeSinceOpen) {
+                report.repeatedSenseBody();
+                return;
+            }
+            close();
+            if (pending == null) {
+                return; // nothing seen yet: actions until the first see are dropped as before
+            }
+            open(body.time());
+            report.cycle();
+        }
+
+        void open(int cycle) {
+            cycleOpen = true;
+            openCycle = cycle;
+            newSeeSinceOpen = false;
+        }
+
+        void remember(See see) {
             pending = see;
             pendingObserver = observer;
+            // the whole line: a server sends one message per datagram, and repeats are whole lines
+            int length = lineLength;
             if (pendingBytes.length < length) {
                 pendingBytes = new byte[Math.max(length, pendingBytes.length * 2)];
             }
-            System.arraycopy(reader.buffer(), offset, pendingBytes, 0, length);
+            System.arraycopy(lineBytes, lineOffset, pendingBytes, 0, length);
             pendingLength = length;
-            orphanActions = false;
         }
 
         void command(PlayerCommand command) {
@@ -234,7 +345,7 @@ public final class SceneConverter {
             if (action == null) {
                 return;
             }
-            if (pending == null) {
+            if (pending == null || (perCycle && !cycleOpen)) {
                 if (!orphanActions) {
                     orphanActions = true;
                     report.drop(DropReason.NO_SEE);
@@ -256,26 +367,30 @@ public final class SceneConverter {
 
         /** Ends the pending scene: written when it has an action, else dropped. */
         void close() throws IOException {
-            if (pending == null) {
+            if (pending == null || (perCycle && !cycleOpen)) {
                 return;
             }
+            int cycle = perCycle ? openCycle : pending.time();
             if (primary == null && secondary == null) {
                 report.drop(DropReason.NO_ACTION);
             } else {
                 List<Action> actions = primary == null ? List.of(secondary)
                         : secondary == null ? List.of(primary) : List.of(primary, secondary);
-                Scene scene = new Scene(pending.time(), pendingObserver,
-                        seenObjects(pending, pendingObserver, grid), actions);
+                Scene scene = new Scene(cycle, pendingObserver, seenObjects(pending, pendingObserver, grid), actions,
+                        null, Math.max(0, cycle - pending.time()));
                 sink.accept(scene);
                 report.scene(scene.actionType());
+                report.seeAge(scene.seeAge());
             }
             primary = null;
             secondary = null;
+            cycleOpen = false;
         }
 
         void finish() throws IOException {
             close();
             pending = null;
+            cycleOpen = false;
         }
 
         void malformed(long line, String problem) {

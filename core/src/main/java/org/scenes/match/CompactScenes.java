@@ -131,10 +131,15 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
 
     private void writeScene(Scene scene) {
         writeVarint(zigzag(scene.cycle()));
-        writeVarint(observerIndex.computeIfAbsent(scene.observer(), observer -> {
-            observers.add(observer);
+        int observer = observerIndex.computeIfAbsent(scene.observer(), o -> {
+            observers.add(o);
             return observers.size() - 1;
-        }));
+        });
+        // the low bit says whether a see age follows, so scenes of their own cycle's see cost nothing more
+        writeVarint((long) observer << 1 | (scene.seeAge() > 0 ? 1 : 0));
+        if (scene.seeAge() > 0) {
+            writeVarint(scene.seeAge());
+        }
         writeVarint(scene.actions().size());
         for (Action action : scene.actions()) {
             writeVarint(action.type().ordinal());
@@ -256,7 +261,9 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
 
         Scene scene() {
             int cycle = (int) unzigzag(varint());
-            Observer observer = observers.get((int) varint());
+            long observerAndAge = varint();
+            Observer observer = observers.get((int) (observerAndAge >>> 1));
+            int seeAge = (observerAndAge & 1) == 1 ? (int) varint() : 0;
             int actionCount = (int) varint();
             List<Action> actions = new ArrayList<>(actionCount);
             for (int i = 0; i < actionCount; i++) {
@@ -270,7 +277,7 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
                 objects.add(object());
             }
             Scene previous = varint() == 1 ? scene() : null;
-            return new Scene(cycle, observer, objects, actions, previous);
+            return new Scene(cycle, observer, objects, actions, previous, seeAge);
         }
 
         private SeenObject object() {

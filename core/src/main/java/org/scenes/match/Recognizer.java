@@ -24,8 +24,14 @@ public final class Recognizer {
     private final PackedMetric.PackedScenes packed;
     /** decoded scenes for metrics with neither fast path, which compare whole scenes */
     private final List<Scene> decoded;
+    /** The knowledge base split by see age, or null when all its scenes have one age. */
+    private final java.util.NavigableMap<Integer, AgePartition> byAge;
 
     public Recognizer(KnowledgeBase knowledge, Supplier<SceneMetric> metricFactory, int k) {
+        this(knowledge, metricFactory, k, true);
+    }
+
+    private Recognizer(KnowledgeBase knowledge, Supplier<SceneMetric> metricFactory, int k, boolean splitByAge) {
         if (k < 1) {
             throw new IllegalArgumentException("k must be at least 1, not " + k);
         }
@@ -35,6 +41,13 @@ public final class Recognizer {
         this.knowledge = knowledge;
         this.k = k;
         this.metrics = ThreadLocal.withInitial(metricFactory);
+        byAge = splitByAge ? partitionByAge(knowledge, metricFactory, k) : null;
+        if (byAge != null) {
+            packed = null;
+            encoded = null;
+            decoded = null;
+            return;
+        }
         SceneMetric first = metricFactory.get();
         packed = first instanceof PackedMetric packable ? packable.pack(knowledge.scenes()) : null;
         if (packed == null && first instanceof EncodedMetric<?> fast) {
@@ -46,6 +59,34 @@ public final class Recognizer {
             encoded = null;
         }
         decoded = packed == null && encoded == null ? List.copyOf(knowledge.scenes()) : null;
+    }
+
+    /** The scenes of one see age, searched on their own, and where they are in the whole knowledge base. */
+    private record AgePartition(Recognizer recognizer, int[] indices) {
+    }
+
+    /**
+     * A player acting every cycle on a see every other cycle shows the same view in two cycles and
+     * acts differently in each (it predicts the cycle in between): scenes of different see ages are
+     * different situations, so each age is searched apart. Null when every scene has one age.
+     */
+    private static java.util.NavigableMap<Integer, AgePartition> partitionByAge(KnowledgeBase knowledge,
+                                                                            Supplier<SceneMetric> metricFactory, int k) {
+        java.util.TreeMap<Integer, List<Integer>> indices = new java.util.TreeMap<>();
+        for (int i = 0; i < knowledge.size(); i++) {
+            indices.computeIfAbsent(knowledge.scene(i).seeAge(), age -> new ArrayList<>()).add(i);
+        }
+        if (indices.size() < 2) {
+            return null;
+        }
+        java.util.TreeMap<Integer, AgePartition> partitions = new java.util.TreeMap<>();
+        indices.forEach((age, members) -> {
+            List<Scene> scenes = new ArrayList<>(members.size());
+            members.forEach(i -> scenes.add(knowledge.scene(i)));
+            partitions.put(age, new AgePartition(new Recognizer(KnowledgeBase.of(knowledge.grid(), scenes),
+                    metricFactory, k, false), members.stream().mapToInt(Integer::intValue).toArray()));
+        });
+        return partitions;
     }
 
     public KnowledgeBase knowledge() {
@@ -62,6 +103,9 @@ public final class Recognizer {
 
     /** The min(k, size) stored scenes nearest to the query, nearest first, ties by index. */
     public List<Neighbour> nearest(Scene query) {
+        if (byAge != null) {
+            return nearestOfAge(query);
+        }
         TopK top = new TopK(Math.min(k, knowledge.size()));
         SceneMetric metric = metrics.get();
         if (packed != null) {
@@ -82,6 +126,21 @@ public final class Recognizer {
         for (int slot : top.sortedSlots()) {
             int index = top.index(slot);
             result.add(new Neighbour(knowledge.scene(index), index, top.distance(slot)));
+        }
+        return result;
+    }
+
+    /** Searches the partition of the query's see age, or of the nearest age stored (the lower on a tie). */
+    private List<Neighbour> nearestOfAge(Scene query) {
+        int age = query.seeAge();
+        Integer below = byAge.floorKey(age);
+        Integer above = byAge.ceilingKey(age);
+        int chosen = below == null ? above : above == null || age - below <= above - age ? below : above;
+        AgePartition partition = byAge.get(chosen);
+        List<Neighbour> found = partition.recognizer().nearest(query);
+        List<Neighbour> result = new ArrayList<>(found.size());
+        for (Neighbour neighbour : found) {
+            result.add(new Neighbour(neighbour.scene(), partition.indices()[neighbour.index()], neighbour.distance()));
         }
         return result;
     }

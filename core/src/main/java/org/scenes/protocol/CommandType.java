@@ -28,7 +28,9 @@ public enum CommandType {
     GAUSSIAN_SEE(ActionType.NONE),
     EAR(ActionType.NONE),
     CLANG(ActionType.NONE),
-    COMPRESSION(ActionType.NONE);
+    COMPRESSION(ActionType.NONE),
+    /** rcssserver 19's kick of another kind; not a scene action (a scene's kick would replay it as a plain kick). */
+    LONG_KICK(ActionType.NONE);
 
     private static final CommandType[] VALUES = values();
 

@@ -6,6 +6,7 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Consumer;
 import org.scenes.scene.ObjectKind;
 import org.scenes.scene.Side;
 
@@ -46,6 +47,8 @@ public final class MessageParser {
     private byte[] keyScratch = new byte[64];
 
     private byte[] buf;
+    /** Where columns are counted from: the datagram or line, not the message within it. */
+    private int origin;
     private int start;
     private int pos;
     private int end;
@@ -62,6 +65,55 @@ public final class MessageParser {
 
     /** Parses the message in {@code bytes[offset, offset + length)}. */
     public Message parse(byte[] bytes, int offset, int length) {
+        origin = offset;
+        return parseOne(bytes, offset, length);
+    }
+
+    /**
+     * Parses every message of a datagram or log line that holds several, e.g. librcsc's
+     * {@code (turn 0)(turn_neck 0)(done)}, handing each to {@code sink} in order. Like the server,
+     * which executes the commands before a malformed one and rejects the rest, the messages before
+     * a malformed one are delivered and then a {@link ProtocolException} is thrown, its column
+     * counted from {@code offset}. Returns how many messages were delivered.
+     */
+    public int parseAll(byte[] bytes, int offset, int length, Consumer<? super Message> sink) {
+        int limit = offset + length;
+        int count = 0;
+        int at = offset;
+        while (true) {
+            while (at < limit && (bytes[at] == 0 || isSpace(bytes[at]))) {
+                at++;
+            }
+            if (at >= limit) {
+                if (count == 0) {
+                    origin = offset;
+                    parseOne(bytes, offset, length); // throws "empty message"
+                }
+                return count;
+            }
+            origin = offset;
+            // the balance check finds where this message ends: one pass over the bytes, as for one message
+            Message message = parseOne(bytes, at, limit - at, true);
+            at = end;
+            sink.accept(message);
+            count++;
+        }
+    }
+
+    /** {@link #parseAll(byte[], int, int, Consumer)} on text, collecting the messages. */
+    public List<Message> parseAll(CharSequence text) {
+        byte[] bytes = text.toString().getBytes(StandardCharsets.UTF_8);
+        List<Message> messages = new ArrayList<>(4);
+        parseAll(bytes, 0, bytes.length, messages::add);
+        return messages;
+    }
+
+    private Message parseOne(byte[] bytes, int offset, int length) {
+        return parseOne(bytes, offset, length, false);
+    }
+
+    /** @param more whether more messages may follow this one (then {@code end} is left where it ends) */
+    private Message parseOne(byte[] bytes, int offset, int length, boolean more) {
         buf = bytes;
         start = offset;
         end = offset + length;
@@ -70,7 +122,7 @@ public final class MessageParser {
         }
         pos = start;
         skipSpace();
-        checkBalanced();
+        checkBalanced(more);
         pos++;
         skipSpace();
         int headStart = pos;
@@ -99,8 +151,11 @@ public final class MessageParser {
 
     // ---- structure -------------------------------------------------------------------------
 
-    /** One pass over the message: one list, parentheses balanced outside strings, nothing after it. */
-    private void checkBalanced() {
+    /**
+     * One pass over the message: one list, parentheses balanced outside strings, nothing after it
+     * unless {@code more} messages may follow. Leaves {@code end} just after the closing ')'.
+     */
+    private void checkBalanced(boolean more) {
         if (pos >= end) {
             throw error("empty message");
         }
@@ -115,9 +170,10 @@ public final class MessageParser {
             } else if (c == ')') {
                 depth--;
                 if (depth == 0) {
-                    for (int j = i + 1; j < end; j++) {
+                    for (int j = i + 1; j < end && !more; j++) {
                         if (!isSpace(buf[j]) && buf[j] != 0) {
-                            throw errorAt(j, "unexpected text after the message's closing ')'");
+                            throw errorAt(j, "unexpected text after the message's closing ')'"
+                                    + " (a datagram with several messages is read with parseAll)");
                         }
                     }
                     end = i + 1;
@@ -739,14 +795,18 @@ public final class MessageParser {
         boolean firstNumber = !Double.isNaN(first);
         boolean secondNumber = !Double.isNaN(second);
         return switch (type) {
-            case DASH -> new PlayerCommand(type, first, count == 2 ? second : Double.NaN, "",
+            case DASH -> count >= 1 && buf[argStart[0]] == '(' ? legDash(count)
+                    : new PlayerCommand(type, first, count == 2 ? second : Double.NaN, "",
                     firstNumber && (count == 1 || (count == 2 && secondNumber)));
             case TURN, TURN_NECK, CATCH, COMPRESSION ->
                     new PlayerCommand(type, first, Double.NaN, "", count == 1 && firstNumber);
-            case KICK, MOVE, CHANGE_FOCUS ->
+            case KICK, LONG_KICK, MOVE, CHANGE_FOCUS ->
                     new PlayerCommand(type, first, second, "", count == 2 && firstNumber && secondNumber);
-            case TACKLE -> new PlayerCommand(type, first, Double.NaN,
-                    count == 2 ? text(argStart[1], argEnd[1]) : "", firstNumber && (count == 1 || count == 2));
+            case TACKLE -> {
+                String foul = count == 2 ? text(argStart[1], argEnd[1]) : "";
+                yield new PlayerCommand(type, first, Double.NaN, foul,
+                        firstNumber && (count == 1 || (count == 2 && PlayerCommand.foulFlag(foul) != null)));
+            }
             case POINTTO -> count == 2
                     ? new PlayerCommand(type, first, second, "", firstNumber && secondNumber)
                     : new PlayerCommand(type, Double.NaN, Double.NaN, rest, count == 1 && rest.equals("off"));
@@ -758,6 +818,84 @@ public final class MessageParser {
             case SENSE_BODY, SCORE, BYE, DONE, SYNCH_SEE, GAUSSIAN_SEE ->
                     new PlayerCommand(type, Double.NaN, Double.NaN, rest, count == 0);
         };
+    }
+
+    /**
+     * rcssserver 19's two-leg dash, {@code (dash (l POWER DIR) (r POWER DIR))}, either leg alone or
+     * both in any order. Kept in {@code text} as the server got it (single spaces); {@code first} and
+     * {@code second} are the mean power and direction of the legs sent, the plain dash closest to it.
+     */
+    private PlayerCommand legDash(int count) {
+        boolean wellFormed = count == 1 || count == 2;
+        double powerSum = 0;
+        double directionSum = 0;
+        int legs = 0;
+        boolean left = false;
+        boolean right = false;
+        StringBuilder text = new StringBuilder(24);
+        int arguments = Math.min(count, argStart.length);
+        int[] starts = Arrays.copyOf(argStart, arguments);
+        int[] ends = Arrays.copyOf(argEnd, arguments);
+        int saved = pos;
+        for (int i = 0; i < arguments && wellFormed; i++) {
+            if (buf[starts[i]] != '(') {
+                wellFormed = false;
+                break;
+            }
+            pos = starts[i] + 1;
+            String leg = word();
+            boolean isLeft = leg.equals("l");
+            if (!(isLeft || leg.equals("r")) || (isLeft ? left : right)) {
+                wellFormed = false;
+                break;
+            }
+            if (isLeft) {
+                left = true;
+            } else {
+                right = true;
+            }
+            if (text.length() > 0) {
+                text.append(' ');
+            }
+            text.append('(').append(leg);
+            int listEnd = ends[i] - 1;
+            int found = 0;
+            double power = Double.NaN;
+            double direction = Double.NaN;
+            while (true) {
+                skipSpace();
+                if (pos >= listEnd) {
+                    break;
+                }
+                int tokenEnd = atomEnd();
+                double value = number(pos, tokenEnd);
+                if (Double.isNaN(value) || found == 2) {
+                    found = -1;
+                    break;
+                }
+                text.append(' ').append(text(pos, tokenEnd));
+                pos = tokenEnd;
+                if (found == 0) {
+                    power = value;
+                } else {
+                    direction = value;
+                }
+                found++;
+            }
+            if (found != 2) {
+                wellFormed = false;
+                break;
+            }
+            text.append(')');
+            powerSum += power;
+            directionSum += direction;
+            legs++;
+        }
+        pos = saved;
+        if (!wellFormed || legs == 0) {
+            return new PlayerCommand(CommandType.DASH, Double.NaN, Double.NaN, "", false);
+        }
+        return new PlayerCommand(CommandType.DASH, powerSum / legs, directionSum / legs, text.toString(), true);
     }
 
     /** Finds up to three top-level arguments (atoms, strings or lists); returns how many there are. */
@@ -966,6 +1104,6 @@ public final class MessageParser {
     }
 
     private ProtocolException errorAt(int at, String message) {
-        return new ProtocolException(at - start + 1, message);
+        return new ProtocolException(at - origin + 1, message);
     }
 }

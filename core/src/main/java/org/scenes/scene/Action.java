@@ -50,6 +50,11 @@ public record Action(ActionType type, double first, double second) {
         return new Action(ActionType.TACKLE, power, Double.NaN);
     }
 
+    /** A tackle with rcssserver's foul flag ({@code (tackle 30 on)}). */
+    public static Action tackle(double power, boolean foul) {
+        return new Action(ActionType.TACKLE, power, foul ? 1 : 0);
+    }
+
     /** Parameter by position (0 or 1). */
     public double parameter(int index) {
         return index == 0 ? first : second;
@@ -60,9 +65,12 @@ public record Action(ActionType type, double first, double second) {
         StringBuilder command = new StringBuilder("(").append(type.key());
         for (int i = 0; i < type.parameterCount(); i++) {
             double value = parameter(i);
-            if (!Double.isNaN(value)) {
-                command.append(' ').append(formatNumber(value));
+            if (Double.isNaN(value)) {
+                continue;
             }
+            // the server takes the foul flag as a word
+            String word = type == ActionType.TACKLE && i == 1 ? (value != 0 ? "on" : "off") : formatNumber(value);
+            command.append(' ').append(word);
         }
         return command.append(')').toString();
     }

@@ -5,7 +5,8 @@ import java.util.Locale;
 /**
  * The player commands a scene can record, in the order the thesis lists action weights
  * (none, dash, kick, turn_neck, turn, catch, move), with tackle appended.
- * {@code turn_neck} changes only what the player sees next, so it is never primary.
+ * {@code turn_neck} changes only what the player sees next, so it is never primary. A tackle's
+ * {@code foul} is 1 for {@code on}, 0 for {@code off}, absent when not sent.
  */
 public enum ActionType {
     NONE(false),
@@ -15,7 +16,7 @@ public enum ActionType {
     TURN(true, "moment"),
     CATCH(true, "direction"),
     MOVE(true, "x", "y"),
-    TACKLE(true, "power");
+    TACKLE(true, "power", "foul");
 
     private final boolean worldChanging;
     private final String[] parameters;

@@ -7,26 +7,39 @@ import java.util.List;
  * of the cycle and the command(s) sent after it. At most two actions; the first is the
  * primary one, the world-changing command when there is one.
  *
- * @param cycle the server cycle of the {@code see}
+ * @param cycle the server cycle of the {@code see} (the cycle the actions were sent in, for a
+ *              player that acts every cycle; see {@code seeAge})
  * @param observer the player who saw
  * @param objects the seen objects, in server order
  * @param actions at most two actions, primary first
  * @param previous the same player's scene before this one, carried by the {@code memory}
  *                 transform so metrics can weigh it; null when not remembered. Never written to
  *                 scene files: it is rebuilt from the order of the scenes when they are read.
+ * @param seeAge cycles between the {@code see} the objects come from and {@code cycle}: 0 when the
+ *               player saw in the cycle it acted, 1 when it acted on the see of the cycle before
+ *               (synchronous vision sends a see every other cycle in normal view)
  */
-public record Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions, Scene previous) {
+public record Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions, Scene previous,
+                    int seeAge) {
     public static final int MAX_ACTIONS = 2;
 
-    /** A scene without memory. */
+    /** A scene without memory, made from the see of its own cycle. */
     public Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions) {
-        this(cycle, observer, objects, actions, null);
+        this(cycle, observer, objects, actions, null, 0);
+    }
+
+    /** A scene made from the see of its own cycle. */
+    public Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions, Scene previous) {
+        this(cycle, observer, objects, actions, previous, 0);
     }
 
     public Scene {
         observer = observer == null ? Observer.UNKNOWN : observer;
         objects = List.copyOf(objects);
         actions = List.copyOf(actions);
+        if (seeAge < 0) {
+            throw new IllegalArgumentException("a scene's see age is 0 or more, not " + seeAge);
+        }
         if (actions.size() > MAX_ACTIONS) {
             throw new IllegalArgumentException("a scene holds at most " + MAX_ACTIONS + " actions, not " + actions.size());
         }
@@ -38,7 +51,7 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
 
     /** The same scene remembering {@code earlier} (its own memory dropped), or forgetting when null. */
     public Scene withPrevious(Scene earlier) {
-        return new Scene(cycle, observer, objects, actions, earlier == null ? null : earlier.withPrevious(null));
+        return new Scene(cycle, observer, objects, actions, earlier == null ? null : earlier.withPrevious(null), seeAge);
     }
 
     /** The primary action, or null for a scene without action. */
@@ -55,6 +68,6 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
     public Scene regrid(Grid grid) {
         return new Scene(cycle, observer,
                 objects.stream().map(o -> o.withCell(grid.cell(o.distance(), o.direction()))).toList(), actions,
-                previous == null ? null : previous.regrid(grid));
+                previous == null ? null : previous.regrid(grid), seeAge);
     }
 }

@@ -213,6 +213,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         expect(token, JsonToken.START_OBJECT, "a scene object or the end of 'scenes'");
         JsonLocation start = json.currentTokenLocation();
         int cycle = Integer.MIN_VALUE;
+        int seeAge = 0;
         Observer observer = header.source().observer();
         List<SeenObject> objects = null;
         List<Action> actions = null;
@@ -221,6 +222,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
             JsonToken value = json.nextToken();
             switch (field) {
                 case "cycle" -> cycle = intValue(value);
+                case "seeAge" -> seeAge = intValue(value);
                 case "observer" -> {
                     expect(value, JsonToken.START_OBJECT, "an observer object");
                     while (json.nextToken() == JsonToken.FIELD_NAME) {
@@ -238,7 +240,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
                     "a scene needs 'cycle', 'objects' and 'actions'", null);
         }
         try {
-            return new Scene(cycle, observer, objects, actions);
+            return new Scene(cycle, observer, objects, actions, null, seeAge);
         } catch (IllegalArgumentException e) {
             throw new SceneFileException(file, start.getLineNr(), start.getColumnNr(), e.getMessage(), e);
         }

@@ -82,6 +82,9 @@ public final class SceneFileWriter implements AutoCloseable {
         json.writeRaw('\n');
         json.writeStartObject();
         json.writeNumberField("cycle", scene.cycle());
+        if (scene.seeAge() > 0) {
+            json.writeNumberField("seeAge", scene.seeAge());
+        }
         if (!scene.observer().equals(header.source().observer())) {
             json.writeObjectFieldStart("observer");
             writeObserverFields(scene.observer());

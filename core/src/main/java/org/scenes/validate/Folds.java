@@ -109,6 +109,30 @@ public final class Folds {
         return figures;
     }
 
+    /**
+     * The figures of {@link #figures()} with every label's accuracy (body, neck, both) and, right
+     * after each accuracy, its majority and repeat-previous baselines: what the fold table prints.
+     */
+    public static Map<String, ToDoubleFunction<ValidationReport>> figuresWithBaselines() {
+        Map<String, ToDoubleFunction<ValidationReport>> figures = new LinkedHashMap<>();
+        for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : figures().entrySet()) {
+            figures.put(figure.getKey(), figure.getValue());
+            if (figure.getKey().equals("accuracy")) {
+                baselines(figures, ActionLabel.PRIMARY);
+            }
+        }
+        for (ActionLabel label : List.of(ActionLabel.BODY, ActionLabel.NECK, ActionLabel.BOTH)) {
+            figures.put(label.figure(), r -> r.accuracy(label));
+            baselines(figures, label);
+        }
+        return figures;
+    }
+
+    private static void baselines(Map<String, ToDoubleFunction<ValidationReport>> figures, ActionLabel label) {
+        figures.put(label.figure() + "Majority", r -> r.majorityBaseline(label));
+        figures.put(label.figure() + "RepeatPrevious", r -> r.repeatPreviousBaseline(label));
+    }
+
     public Map<String, Object> toMap() {
         Map<String, Object> map = new LinkedHashMap<>();
         map.put("folds", reports.size());
@@ -117,7 +141,7 @@ public final class Folds {
         map.put("accuracy", ValidationReport.number(mean(ValidationReport::accuracy)));
         map.put("macroF1", ValidationReport.number(mean(ValidationReport::macroF1)));
         Map<String, Object> all = new LinkedHashMap<>();
-        for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : figures().entrySet()) {
+        for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : figuresWithBaselines().entrySet()) {
             Map<String, Object> entry = new LinkedHashMap<>();
             entry.put("mean", ValidationReport.number(mean(figure.getValue())));
             entry.put("std", ValidationReport.number(std(figure.getValue())));

@@ -7,11 +7,14 @@ import java.util.List;
 import java.util.Map;
 import org.scenes.scene.Action;
 import org.scenes.scene.ActionType;
+import org.scenes.scene.Scene;
 
 /**
  * What one validation run measured. Action types are compared on the primary action; a
  * selector that finds no usable action predicts {@code none}. Parameter errors are taken over
- * the scenes where predicted and true types agree.
+ * the scenes where predicted and true types agree. Beside it, every {@link ActionLabel} (body,
+ * neck, both) is scored with two baselines a result must beat to mean anything: the training
+ * set's majority class, and repeating the previous test scene's recorded action.
  */
 public final class ValidationReport {
     private final int trainScenes;
@@ -29,12 +32,50 @@ public final class ValidationReport {
     private final Action[] truth;
     private final Action[] predicted;
     private final long[] nanos;
+    /** [label ordinal][scene]: the recorded class, the predicted one, and the baselines' (null when unknown). */
+    private final String[][] truthLabels;
+    private final String[][] predictedLabels;
+    private final String[][] majorityLabels;
+    private final String[][] previousLabels;
+    private final List<List<Action>> truthActions;
+    private final List<List<Action>> predictedActions;
+    private final Mean dashDirectionError = new Mean();
+    private final Mean neckAngleError = new Mean();
 
-    private ValidationReport(int trainScenes, Action[] truth, Action[] predicted, long[] nanos) {
+    private ValidationReport(int trainScenes, Action[] truth, Action[] predicted, long[] nanos,
+                             List<List<Action>> truthActions, List<List<Action>> predictedActions,
+                             String[][] majorityLabels, String[][] previousLabels) {
         this.trainScenes = trainScenes;
         this.truth = truth;
         this.predicted = predicted;
         this.nanos = nanos;
+        this.majorityLabels = majorityLabels;
+        this.previousLabels = previousLabels;
+        this.truthActions = truthActions;
+        this.predictedActions = predictedActions;
+        ActionLabel[] labels = ActionLabel.values();
+        truthLabels = new String[labels.length][truth.length];
+        predictedLabels = new String[labels.length][truth.length];
+        for (int i = 0; i < truth.length; i++) {
+            List<Action> t = truthActions.get(i);
+            List<Action> p = predictedActions.get(i);
+            for (ActionLabel label : labels) {
+                truthLabels[label.ordinal()][i] = label.of(t);
+                predictedLabels[label.ordinal()][i] = label.of(p);
+            }
+            Action bodyTruth = ActionLabel.bodyAction(t);
+            Action bodyPredicted = ActionLabel.bodyAction(p);
+            if (bodyTruth != null && bodyPredicted != null && bodyTruth.type() == ActionType.DASH
+                    && bodyPredicted.type() == ActionType.DASH) {
+                // a dash without direction goes straight ahead
+                dashDirectionError.addAngle(orZero(bodyTruth.second()), orZero(bodyPredicted.second()));
+            }
+            Action neckTruth = ActionLabel.neckAction(t);
+            Action neckPredicted = ActionLabel.neckAction(p);
+            if (neckTruth != null && neckPredicted != null) {
+                neckAngleError.add(neckTruth.first(), neckPredicted.first());
+            }
+        }
         this.testScenes = truth.length;
         int types = ActionType.values().length;
         confusion = new int[types][types];
@@ -74,8 +115,64 @@ public final class ValidationReport {
         p99Micros = micros.length == 0 ? 0 : micros[Math.min(micros.length - 1, (int) Math.ceil(0.99 * micros.length) - 1)];
     }
 
+    /** A report on primary actions only, without baselines (they need the training and test scenes). */
     public static ValidationReport of(int trainScenes, Action[] truth, Action[] predicted, long[] nanos) {
-        return new ValidationReport(trainScenes, truth, predicted, nanos);
+        return new ValidationReport(trainScenes, truth, predicted, nanos, singletons(truth), singletons(predicted),
+                null, null);
+    }
+
+    /**
+     * A report with every label and both baselines.
+     *
+     * @param train the training scenes (their majority class is the first baseline)
+     * @param test the test scenes in recorded order (the previous one's action is the second baseline;
+     *             a scene whose observer differs from the one before, or whose cycle is earlier, starts
+     *             a new sequence and has no previous action)
+     * @param predicted the predicted actions of each test scene, primary first (empty: none)
+     */
+    public static ValidationReport of(List<Scene> train, List<Scene> test, List<List<Action>> predicted, long[] nanos) {
+        int n = test.size();
+        Action[] truthPrimary = new Action[n];
+        Action[] predictedPrimary = new Action[n];
+        List<List<Action>> truthActions = new ArrayList<>(n);
+        for (int i = 0; i < n; i++) {
+            truthActions.add(test.get(i).actions());
+            truthPrimary[i] = test.get(i).primaryAction();
+            predictedPrimary[i] = predicted.get(i).isEmpty() ? null : predicted.get(i).get(0);
+        }
+        ActionLabel[] labels = ActionLabel.values();
+        String[][] majority = new String[labels.length][n];
+        String[][] previous = new String[labels.length][n];
+        for (ActionLabel label : labels) {
+            Map<String, Integer> counts = new java.util.TreeMap<>();
+            for (Scene scene : train) {
+                counts.merge(label.of(scene.actions()), 1, Integer::sum);
+            }
+            String most = counts.entrySet().stream().max(Map.Entry.<String, Integer>comparingByValue()
+                    .thenComparing(Map.Entry.comparingByKey(java.util.Comparator.reverseOrder())))
+                    .map(Map.Entry::getKey).orElse(label.of(List.of()));
+            Arrays.fill(majority[label.ordinal()], most);
+            for (int i = 0; i < n; i++) {
+                Scene before = i == 0 ? null : test.get(i - 1);
+                boolean continues = before != null && before.observer().equals(test.get(i).observer())
+                        && before.cycle() <= test.get(i).cycle();
+                previous[label.ordinal()][i] = label.of(continues ? before.actions() : List.of());
+            }
+        }
+        return new ValidationReport(train.size(), truthPrimary, predictedPrimary, nanos, truthActions, predicted,
+                majority, previous);
+    }
+
+    private static List<List<Action>> singletons(Action[] actions) {
+        List<List<Action>> lists = new ArrayList<>(actions.length);
+        for (Action action : actions) {
+            lists.add(action == null ? List.of() : List.of(action));
+        }
+        return lists;
+    }
+
+    private static double orZero(double value) {
+        return Double.isNaN(value) ? 0 : value;
     }
 
     /**
@@ -88,16 +185,31 @@ public final class ValidationReport {
         Action[] truth = new Action[total];
         Action[] predicted = new Action[total];
         long[] nanos = new long[total];
+        List<List<Action>> truthActions = new ArrayList<>(total);
+        List<List<Action>> predictedActions = new ArrayList<>(total);
+        boolean baselines = reports.stream().allMatch(r -> r.majorityLabels != null);
+        int labels = ActionLabel.values().length;
+        String[][] majority = baselines ? new String[labels][total] : null;
+        String[][] previous = baselines ? new String[labels][total] : null;
         int at = 0;
         long train = 0;
         for (ValidationReport report : reports) {
             System.arraycopy(report.truth, 0, truth, at, report.testScenes);
             System.arraycopy(report.predicted, 0, predicted, at, report.testScenes);
             System.arraycopy(report.nanos, 0, nanos, at, report.testScenes);
+            truthActions.addAll(report.truthActions);
+            predictedActions.addAll(report.predictedActions);
+            if (baselines) {
+                for (int label = 0; label < labels; label++) {
+                    System.arraycopy(report.majorityLabels[label], 0, majority[label], at, report.testScenes);
+                    System.arraycopy(report.previousLabels[label], 0, previous[label], at, report.testScenes);
+                }
+            }
             at += report.testScenes;
             train += report.trainScenes;
         }
-        return new ValidationReport(reports.isEmpty() ? 0 : (int) (train / reports.size()), truth, predicted, nanos);
+        return new ValidationReport(reports.isEmpty() ? 0 : (int) (train / reports.size()), truth, predicted, nanos,
+                truthActions, predictedActions, majority, previous);
     }
 
     private static ActionType typeOf(Action action) {
@@ -114,6 +226,13 @@ public final class ValidationReport {
                 sum += Math.abs(truth - predicted);
                 count++;
             }
+        }
+
+        /** The difference of two directions in degrees, the short way round (0 to 180). */
+        void addAngle(double truth, double predicted) {
+            double difference = Math.abs(Math.IEEEremainder(truth - predicted, 360));
+            sum += difference;
+            count++;
         }
 
         double value() {
@@ -223,6 +342,62 @@ public final class ValidationReport {
         return kickDirectionError.value();
     }
 
+    /** Share of test scenes whose class by {@code label} was predicted right. */
+    public double accuracy(ActionLabel label) {
+        return share(predictedLabels[label.ordinal()], label);
+    }
+
+    /** Accuracy of always predicting the training set's most common class; NaN when unknown. */
+    public double majorityBaseline(ActionLabel label) {
+        return majorityLabels == null ? Double.NaN : share(majorityLabels[label.ordinal()], label);
+    }
+
+    /** The training set's most common class (of the first run, when pooled), or null when unknown. */
+    public String majorityClass(ActionLabel label) {
+        return majorityLabels == null || testScenes == 0 ? null : majorityLabels[label.ordinal()][0];
+    }
+
+    /** Accuracy of repeating the previous test scene's recorded action; NaN when unknown. */
+    public double repeatPreviousBaseline(ActionLabel label) {
+        return previousLabels == null ? Double.NaN : share(previousLabels[label.ordinal()], label);
+    }
+
+    /** Test scenes by recorded class of {@code label}, most common first. */
+    public Map<String, Integer> classCounts(ActionLabel label) {
+        Map<String, Integer> counts = new java.util.TreeMap<>();
+        for (String value : truthLabels[label.ordinal()]) {
+            counts.merge(value, 1, Integer::sum);
+        }
+        Map<String, Integer> sorted = new LinkedHashMap<>();
+        counts.entrySet().stream().sorted(Map.Entry.<String, Integer>comparingByValue().reversed())
+                .forEach(e -> sorted.put(e.getKey(), e.getValue()));
+        return sorted;
+    }
+
+    private double share(String[] guesses, ActionLabel label) {
+        if (testScenes == 0) {
+            return Double.NaN;
+        }
+        String[] truthOf = truthLabels[label.ordinal()];
+        int right = 0;
+        for (int i = 0; i < testScenes; i++) {
+            if (truthOf[i].equals(guesses[i])) {
+                right++;
+            }
+        }
+        return (double) right / testScenes;
+    }
+
+    /** Mean difference of dash directions (degrees, plain dashes count as 0) where both body actions are dashes. */
+    public double dashDirectionError() {
+        return dashDirectionError.value();
+    }
+
+    /** Mean difference of neck angles where both turned the neck ({@code turn_neck 0} included). */
+    public double neckAngleError() {
+        return neckAngleError.value();
+    }
+
     public double meanDecisionMicros() {
         return meanMicros;
     }
@@ -243,6 +418,18 @@ public final class ValidationReport {
         map.put("testScenes", testScenes);
         map.put("accuracy", number(accuracy()));
         map.put("directionAccuracy", number(directionAccuracy()));
+        Map<String, Object> labels = new LinkedHashMap<>();
+        for (ActionLabel label : ActionLabel.values()) {
+            Map<String, Object> entry = new LinkedHashMap<>();
+            entry.put("accuracy", number(accuracy(label)));
+            entry.put("majorityBaseline", number(majorityBaseline(label)));
+            entry.put("majorityClass", majorityClass(label));
+            entry.put("repeatPreviousBaseline", number(repeatPreviousBaseline(label)));
+            entry.put("classes", classCounts(label));
+            labels.put(label.figure(), entry);
+        }
+        // every accuracy with the baselines it must beat (accuracy itself is labels.accuracy.accuracy)
+        map.put("labels", labels);
         map.put("macroF1", number(macroF1()));
         Map<String, Object> kick = new LinkedHashMap<>();
         kick.put("total", support(ActionType.KICK));
@@ -279,6 +466,8 @@ public final class ValidationReport {
         parameters.put("dashPowerError", number(dashPowerError()));
         parameters.put("kickPowerError", number(kickPowerError()));
         parameters.put("kickDirectionError", number(kickDirectionError()));
+        parameters.put("dashDirectionError", number(dashDirectionError()));
+        parameters.put("neckAngleError", number(neckAngleError()));
         map.put("parameters", parameters);
         Map<String, Object> time = new LinkedHashMap<>();
         time.put("mean", number(meanDecisionMicros()));

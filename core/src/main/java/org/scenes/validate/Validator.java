@@ -27,7 +27,8 @@ public final class Validator {
     public static ValidationReport run(Recognizer recognizer, Supplier<ActionSelector> selectors, List<Scene> test,
                                        long seed, boolean parallel, Runnable progress) {
         int n = test.size();
-        Action[] predicted = new Action[n];
+        @SuppressWarnings("unchecked")
+        List<Action>[] predicted = new List[n];
         long[] nanos = new long[n];
         ThreadLocal<ActionSelector> selector = ThreadLocal.withInitial(selectors);
         IntStream indices = IntStream.range(0, n);
@@ -35,7 +36,7 @@ public final class Validator {
             long start = System.nanoTime();
             try {
                 List<Neighbour> nearest = recognizer.nearest(test.get(i));
-                predicted[i] = selector.get().select(nearest, queryRandom(seed, i));
+                predicted[i] = withNeck(selector.get().select(nearest, queryRandom(seed, i)), nearest);
             } catch (RuntimeException e) {
                 // a plugin's or script's error, located by the query it failed on
                 throw new QueryFailure(i, test.get(i).cycle(), e);
@@ -45,11 +46,33 @@ public final class Validator {
                 progress.run();
             }
         });
-        Action[] truth = new Action[n];
-        for (int i = 0; i < n; i++) {
-            truth[i] = test.get(i).primaryAction();
+        return ValidationReport.of(recognizer.knowledge().scenes(), test, java.util.Arrays.asList(predicted), nanos);
+    }
+
+    /**
+     * The whole prediction for a selected action: selectors pick one action, so the neck action
+     * comes from the nearest neighbour whose scene holds the selected action (its other action), or,
+     * when none does (a selector that made the action up), from the nearest neighbour's scene.
+     */
+    static List<Action> withNeck(Action selected, List<Neighbour> nearest) {
+        if (selected == null) {
+            return List.of(); // no usable action: none for the body and the neck alike
         }
-        return ValidationReport.of(recognizer.knowledge().size(), truth, predicted, nanos);
+        Scene donor = null;
+        for (Neighbour neighbour : nearest) {
+            if (neighbour.scene().actions().contains(selected)) {
+                donor = neighbour.scene();
+                break;
+            }
+        }
+        if (donor == null && !nearest.isEmpty()) {
+            donor = nearest.get(0).scene();
+        }
+        Action neck = donor == null ? null : ActionLabel.neckAction(donor.actions());
+        if (neck == null || neck.equals(selected) || selected.type() == org.scenes.scene.ActionType.TURN_NECK) {
+            return List.of(selected);
+        }
+        return List.of(selected, neck);
     }
 
     /** A whole run from a configuration: knowledge base from {@code train}, queries from {@code test}. */

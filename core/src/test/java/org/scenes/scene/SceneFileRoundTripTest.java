@@ -37,6 +37,20 @@ class SceneFileRoundTripTest {
     }
 
     @Test
+    void seeAgeAndTheTackleFoulFlagSurviveAndOldFilesReadAsAgeZero() throws IOException {
+        Scene aged = new Scene(8, SceneFixtures.OBSERVER, List.of(), List.of(Action.tackle(30, true)), null, 1);
+        Scene fresh = new Scene(9, SceneFixtures.OBSERVER, List.of(), List.of(Action.tackle(-20, false)));
+        Path file = dir.resolve("aged.json");
+        SceneFileWriter.write(file, new SceneFile(header, List.of(aged, fresh)));
+        String text = Files.readString(file);
+        assertTrue(text.contains("\"seeAge\":1"), text);
+        assertEquals(1, text.split("seeAge", -1).length - 1, "age 0 is not written");
+        assertTrue(text.contains("\"foul\":1"), text);
+        assertEquals(List.of(aged, fresh), SceneFileReader.read(file).scenes());
+        assertEquals(0, SceneFileReader.read(file).scenes().get(1).seeAge());
+    }
+
+    @Test
     void negativeZeroKeepsItsSign() throws IOException {
         SeenObject ball = new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, 3, -0.0,
                 -0.0, 0.0, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(3, -0.0));
