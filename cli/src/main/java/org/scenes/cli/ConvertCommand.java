@@ -265,7 +265,7 @@ final class ConvertCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "%-22s %s (%.1f MB of text)%n", "Lines read", report.lines(), report.bytes() / 1e6);
         out.printf(Locale.ROOT, "%-22s %s (%s repeated while paused, collapsed)%n", "See messages", report.sees(), report.repeatedSees());
         if (report.perCycleLogs() > 0) {
-            out.printf(Locale.ROOT, "%-22s %s of %s logs (synchronous vision): %s cycles, %s sense_body repeated while paused;"
+            out.printf(Locale.ROOT, "%-22s %s of %s logs (synchronous vision): %s cycles, %s of them on a standing clock;"
                             + " scenes by see age %s%n", "Scene per cycle", report.perCycleLogs(), report.logs(),
                     report.cycles(), report.repeatedSenseBodies(), report.seeAges().isEmpty() ? "none"
                             : report.seeAges().entrySet().stream().map(e -> e.getKey() + ": " + e.getValue())

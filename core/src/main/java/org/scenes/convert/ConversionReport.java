@@ -169,7 +169,7 @@ public final class ConversionReport {
         return cycles;
     }
 
-    /** Per cycle: {@code sense_body}s of a standing clock without a new {@code see}, collapsed into the open scene. */
+    /** Per cycle: {@code sense_body}s of a standing clock (each still a cycle: the server runs the step). */
     public long repeatedSenseBodies() {
         return repeatedSenseBodies;
     }

@@ -174,10 +174,11 @@ public final class SceneConverter {
         Observer pendingObserver;
         byte[] pendingBytes = new byte[4096];
         int pendingLength;
-        /** Per cycle: whether a scene is open, its cycle, and whether a new see arrived since it opened. */
+        /** Per cycle: whether a scene is open, and its cycle. */
         boolean cycleOpen;
         int openCycle;
-        boolean newSeeSinceOpen;
+        /** Server steps since the latest see arrived, at the open cycle. */
+        int openAge;
         Action primary;
         Action secondary;
         boolean orphanActions;
@@ -293,11 +294,11 @@ public final class SceneConverter {
             remember(see);
             orphanActions = false;
             if (cycleOpen && openCycle == see.time() && primary == null && secondary == null) {
-                newSeeSinceOpen = true;
+                openAge = 0;
                 return;
             }
             close();
-            open(see.time());
+            open(see.time(), 0);
         }
 
         /**
@@ -305,22 +306,24 @@ public final class SceneConverter {
          * stands still and no new see came, it is a repeat and the open scene goes on.
          */
         void senseBody(SenseBody body) throws IOException {
-            if (cycleOpen && openCycle == body.time() && !newSeeSinceOpen) {
+            if (cycleOpen && openCycle == body.time()) {
+                // The server still runs a step (and executes a body command) on a standing clock:
+                // its command log shows these as TIME,STOPPAGE. Each is a cycle of its own.
                 report.repeatedSenseBody();
-                return;
             }
             close();
             if (pending == null) {
                 return; // nothing seen yet: actions until the first see are dropped as before
             }
-            open(body.time());
+            open(body.time(), openAge + 1);
             report.cycle();
         }
 
-        void open(int cycle) {
+        /** Opens a cycle whose view is {@code age} steps old (steps, not clock time, which may stand still). */
+        void open(int cycle, int age) {
             cycleOpen = true;
             openCycle = cycle;
-            newSeeSinceOpen = false;
+            openAge = age;
         }
 
         void remember(See see) {
@@ -377,7 +380,7 @@ public final class SceneConverter {
                 List<Action> actions = primary == null ? List.of(secondary)
                         : secondary == null ? List.of(primary) : List.of(primary, secondary);
                 Scene scene = new Scene(cycle, pendingObserver, seenObjects(pending, pendingObserver, grid), actions,
-                        null, Math.max(0, cycle - pending.time()));
+                        null, perCycle ? openAge : 0);
                 sink.accept(scene);
                 report.scene(scene.actionType());
                 report.seeAge(scene.seeAge());

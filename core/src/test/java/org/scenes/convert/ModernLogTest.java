@@ -131,7 +131,7 @@ class ModernLogTest {
     }
 
     @Test
-    void aStandingClockCollapsesIntoOneScenePerView() throws IOException {
+    void everyStepOfAStandingClockIsACycleOfItsOwn() throws IOException {
         List<String> lines = new ArrayList<>(List.of("#scenes-proxy-log 1", "0 c2s (init T (version 19))",
                 "0 s2c (init r 2 before_kick_off)", "0 s2c (ok synch_see)"));
         for (int step = 0; step < 5; step++) {
@@ -142,9 +142,13 @@ class ModernLogTest {
             lines.add("0 c2s (turn 0)(turn_neck 0)(done)");
         }
         ConversionReport report = convert(write("paused.log", lines), Pairing.AUTO);
-        assertEquals(2, scenes.size(), "a new see while the clock stands still is a new situation");
+        // the server executes a body command in every step, clock running or not (its command log
+        // writes them TIME,STOPPAGE): five steps, five scenes, nothing extra
+        assertEquals(5, scenes.size());
         assertEquals(4, report.repeatedSenseBodies());
-        assertEquals(6, report.extraActions());
+        assertEquals(0, report.extraActions());
+        assertEquals(List.of(0, 1, 2, 0, 1), scenes.stream().map(Scene::seeAge).toList(),
+                "the age counts steps since the see, not clock time");
     }
 
     @Test
