@@ -138,7 +138,8 @@ class ServerThroughProxyTest {
             assertTrue(fromServer.get(fromServer.size() - 1).endsWith("referee time_over)"), "to the end: " + log);
             ConversionReport report = converter.convert(log, scene -> { });
             assertEquals(0, report.malformed(), log + ": " + report.malformedLines());
-            assertTrue(report.scenes() > CYCLES / 2, log + " gives scenes: " + report.scenes());
+            // Krislet acts every second cycle, on three sees in four: about CYCLES / 2 scenes, fewer with the pauses after goals
+            assertTrue(report.scenes() > CYCLES / 3, log + " gives scenes: " + report.scenes());
         }
     }
 }
