@@ -399,4 +399,32 @@ class LiveTeamTest {
                     "(move -10 5)", "(dash 50)", "(dash 50)", "(bye)"), received(client));
         }
     }
+
+    @Test
+    void aReconnectTakesThePlayersPlaceWithItsNumber() throws Exception {
+        try (DatagramChannel initPort = DatagramChannel.open(); DatagramChannel ownPort = DatagramChannel.open()) {
+            initPort.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
+            ownPort.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
+            // a server that answers the reconnect from a port of its own, as rcssserver does
+            Future<String> hello = executor.submit(() -> {
+                java.nio.ByteBuffer buffer = java.nio.ByteBuffer.allocate(4096);
+                java.net.SocketAddress from = initPort.receive(buffer);
+                buffer.flip();
+                String text = StandardCharsets.UTF_8.decode(buffer).toString();
+                for (String message : List.of("(reconnect r play_on)", "(sense_body 100 (view_mode high normal))",
+                        "(hear 101 referee time_over)")) {
+                    ownPort.send(java.nio.ByteBuffer.wrap((message + "\0").getBytes(StandardCharsets.UTF_8)), from);
+                }
+                return text;
+            });
+            TeamRunner runner = new TeamRunner(options((InetSocketAddress) initPort.getLocalAddress(), "Back")
+                    .withReconnect(3), 1, DASHER, 1, notices::add);
+            PlayerReport report = start(runner).get(10, TimeUnit.SECONDS).get(0);
+            assertEquals("(reconnect Back 3)\0", hello.get(5, TimeUnit.SECONDS));
+            assertEquals(Outcome.GAME_OVER, report.outcome(), report.toString());
+            assertEquals(3, report.unum());
+            assertEquals("r", report.side());
+            assertEquals(1, report.cycles());
+        }
+    }
 }
