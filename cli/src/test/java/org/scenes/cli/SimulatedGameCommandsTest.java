@@ -19,7 +19,8 @@ import org.scenes.scene.SceneFileReader;
 /**
  * What {@link ConvertCommandsTest} and {@link BenchCommandTest} check on recorded logs, on the logs
  * of a seeded simulated game, so it is checked without the shared recordings too: convert, show,
- * stats, export and bench through the real command line.
+ * stats, export, bench and validate (ValidateCommandTest's recorded-game case) through the real
+ * command line.
  */
 class SimulatedGameCommandsTest {
     @TempDir
@@ -117,5 +118,22 @@ class SimulatedGameCommandsTest {
             }
         }
         assertEquals(2, rows, cli.out());
+    }
+
+    /** As ValidateCommandTest does on recorded games: itself perfectly, another player far above chance. */
+    @Test
+    void aSimulatedPlayerIsImitatedFarAboveChance() throws Exception {
+        Path train = dir.resolve("train.json.gz");
+        Path test = dir.resolve("test.json.gz");
+        assertEquals(0, run("convert", carleton1, "-o", train), cli.err());
+        assertEquals(0, run("convert", game.resolve("Carleton_2.lsf.gz"), "-o", test), cli.err());
+        assertEquals(0, run("validate", "--train", train, "--self", "--metric", "continuous", "--json"), cli.err());
+        assertEquals(1.0, ConfigFiles.JSON.readTree(cli.out()).get("accuracy").asDouble(), "each scene finds itself");
+        assertEquals(0, run("validate", "--train", train, "--test", test, "--metric", "random,ball-goal", "--json"), cli.err());
+        com.fasterxml.jackson.databind.JsonNode runs = ConfigFiles.JSON.readTree(cli.out()).get("configurations");
+        double random = runs.get(0).get("accuracy").asDouble();
+        double ballGoal = runs.get(1).get("accuracy").asDouble();
+        assertTrue(random < 0.75, "random: " + random);
+        assertTrue(ballGoal > 0.95, "ball-goal: " + ballGoal);
     }
 }
