@@ -8,6 +8,8 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.scenes.testing.RequiresSharedData;
+import org.scenes.testing.SharedData;
 
 /** {@code scenes bench} on converted Krislet scenes prints one positive rate per metric. */
 class BenchCommandTest {
@@ -21,8 +23,9 @@ class BenchCommandTest {
     }
 
     @Test
+    @RequiresSharedData
     void tableHasARatePerMetric() {
-        Path log = Path.of(System.getProperty("scenes.shared"), "data", "krislet", "classic-game1", "Carleton_1.lsf.gz");
+        Path log = SharedData.resolve("krislet/classic-game1/Carleton_1.lsf.gz");
         Path scenes = dir.resolve("c1.json.gz");
         assertEquals(0, run("convert", "-o", scenes.toString(), log.toString()), cli.err());
         assertEquals(0, run("bench", "--time", "0.05", "--metric", "ball-goal", "--metric", "continuous", scenes.toString()), cli.err());

@@ -13,10 +13,15 @@ import org.junit.jupiter.api.io.TempDir;
 import org.scenes.scene.Grid;
 import org.scenes.scene.SceneFile;
 import org.scenes.scene.SceneFileReader;
+import org.scenes.testing.RequiresSharedData;
+import org.scenes.testing.SharedData;
 
-/** Drives convert, show, stats and export through the real command line. */
+/**
+ * Drives convert, show, stats and export through the real command line on recorded logs;
+ * {@link SimulatedGameCommandsTest} drives them on a simulated game.
+ */
 class ConvertCommandsTest {
-    private static final Path DATA = Path.of(System.getProperty("scenes.shared", "../../shared"), "data");
+    private static final Path DATA = SharedData.data();
     private static final Path CARLETON_1 = DATA.resolve("krislet/classic-game1/Carleton_1.lsf.gz");
 
     @TempDir
@@ -29,6 +34,7 @@ class ConvertCommandsTest {
     }
 
     @Test
+    @RequiresSharedData
     void convertWritesTheScenesAndPrintsASummary() {
         Path target = dir.resolve("c1.json.gz");
         assertEquals(0, run("convert", CARLETON_1, "-o", target), cli.err());
@@ -44,6 +50,7 @@ class ConvertCommandsTest {
     }
 
     @Test
+    @RequiresSharedData
     void convertHonoursTheGridOptions() {
         Path target = dir.resolve("g.json");
         assertEquals(0, run("convert", CARLETON_1, "-o", target, "--grid", "3x4", "--bounds", "1,5,20"), cli.err());
@@ -53,6 +60,7 @@ class ConvertCommandsTest {
     }
 
     @Test
+    @RequiresSharedData
     void outDirWritesOneFilePerLog() {
         Path second = DATA.resolve("krislet/classic-game1/University_1.lsf.gz");
         assertEquals(0, run("convert", CARLETON_1, second, "--out-dir", dir.resolve("out")), cli.err());
@@ -62,6 +70,7 @@ class ConvertCommandsTest {
     }
 
     @Test
+    @RequiresSharedData
     void outDirKeepsLogsOfTheSameNameApart() {
         Path other = DATA.resolve("krislet/classic-game2/Carleton_1.lsf.gz");
         assertEquals(0, run("convert", CARLETON_1, other, "--out-dir", dir), cli.err());
@@ -89,12 +98,14 @@ class ConvertCommandsTest {
     }
 
     @Test
+    @RequiresSharedData
     void convertNeedsExactlyOneOutput() {
         assertEquals(2, run("convert", CARLETON_1));
         assertEquals(2, run("convert", CARLETON_1, "-o", dir.resolve("a.json"), "--out-dir", dir));
     }
 
     @Test
+    @RequiresSharedData
     void showStatsAndExport() throws IOException {
         Path scenes = dir.resolve("c1.json");
         assertEquals(0, run("convert", CARLETON_1, "-o", scenes));

@@ -15,6 +15,9 @@ import java.util.List;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.scenes.agent.sim.GameSetup;
+import org.scenes.agent.sim.Simulator;
+import org.scenes.agent.teacher.Teachers;
 import org.scenes.convert.SceneConverter;
 import org.scenes.scene.Grid;
 import org.scenes.scene.Scene;
@@ -34,10 +37,15 @@ class ExperimentCommandTest {
     static Path work;
     static List<Path> folds = new ArrayList<>();
 
-    /** Three small scene files (the first scenes of three Krislet players), one fold each. */
+    /**
+     * Three small scene files (the first scenes of three Krislet players of a seeded simulated
+     * game: nothing here depends on recorded data), one fold each.
+     */
     @BeforeAll
     static void sceneFiles() throws IOException {
-        Path game = Path.of(System.getProperty("scenes.shared"), "data", "krislet", "classic-game1");
+        Path game = Files.createDirectories(work.resolve("game"));
+        new Simulator(new GameSetup(new GameSetup.Team("Carleton", 3, Teachers.byName("krislet")),
+                new GameSetup.Team("University", 3, Teachers.byName("krislet")), 1500, 1, game)).run(t -> { });
         for (int player = 1; player <= 3; player++) {
             List<Scene> scenes = new ArrayList<>();
             new SceneConverter(Grid.DEFAULT, false, null).convert(game.resolve("Carleton_" + player + ".lsf.gz"), scenes::add);

@@ -23,6 +23,8 @@ import org.scenes.scene.SceneFileWriter;
 import org.scenes.scene.SceneSource;
 import org.scenes.scene.SeenObject;
 import org.scenes.scene.Side;
+import org.scenes.testing.RequiresSharedData;
+import org.scenes.testing.SharedData;
 
 /** Drives validate and tune through the real command line on small generated scene files. */
 class ValidateCommandTest {
@@ -119,8 +121,9 @@ class ValidateCommandTest {
     }
 
     @Test
+    @RequiresSharedData
     void realKrisletLogsAreImitatedFarAboveChance() throws Exception {
-        Path data = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "krislet");
+        Path data = SharedData.resolve("krislet");
         Path train = dir.resolve("train.json.gz");
         Path test = dir.resolve("test.json.gz");
         assertEquals(0, run("convert", data.resolve("classic-game1/Carleton_1.lsf.gz"), "-o", train), cli.err());

@@ -59,16 +59,4 @@ public record PluginConfig(ObjectWeights objectWeights, ActionWeights actionWeig
             throw new PluginException("option " + name + "=" + value + " is not a number");
         }
     }
-
-    public int intOption(String name, int fallback) {
-        String value = options.get(name);
-        if (value == null) {
-            return fallback;
-        }
-        try {
-            return Integer.parseInt(value);
-        } catch (NumberFormatException e) {
-            throw new PluginException("option " + name + "=" + value + " is not an integer");
-        }
-    }
 }

@@ -14,10 +14,6 @@ public record Observer(String team, Side side, int uniformNumber) {
         team = team == null ? "" : team;
     }
 
-    public boolean knowsSide() {
-        return side != null;
-    }
-
     /** "Carleton 3 (l)" style label for reports. */
     public String label() {
         StringBuilder label = new StringBuilder(team.isEmpty() ? "?" : team);

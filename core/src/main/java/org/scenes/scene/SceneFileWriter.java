@@ -4,7 +4,6 @@ import com.fasterxml.jackson.core.JsonEncoding;
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonGenerator;
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.List;
 import org.scenes.files.AtomicOutput;
@@ -103,17 +102,6 @@ public final class SceneFileWriter implements AutoCloseable {
         json.writeEndArray();
         json.writeEndObject();
         written++;
-    }
-
-    /** Writes every scene, turning I/O errors into unchecked ones for use in streams. */
-    public void writeAll(Iterable<Scene> scenes) {
-        try {
-            for (Scene scene : scenes) {
-                write(scene);
-            }
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
     }
 
     private void writeObject(SeenObject object) throws IOException {

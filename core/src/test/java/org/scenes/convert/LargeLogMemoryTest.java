@@ -9,18 +9,22 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Random;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.scenes.files.Inputs;
 import org.scenes.scene.Grid;
 import org.scenes.scene.SceneFileHeader;
 import org.scenes.scene.SceneFileWriter;
 import org.scenes.scene.SceneSource;
+import org.scenes.testing.SharedData;
 
 /**
  * Converting a log of more than 100 MB must work in a 256 MB heap: a child JVM with
- * {@code -Xmx256m} streams a generated 100 MB log (a recorded game repeated, never on disk)
+ * {@code -Xmx256m} streams a generated 100 MB log (a game repeated, never on disk: a recorded one
+ * from the shared data, or one made up here)
  * through the converter into a scene file. Loading the log or the scenes whole would fail
  * with OutOfMemoryError.
  */
@@ -30,13 +34,17 @@ class LargeLogMemoryTest {
     @TempDir
     Path dir;
 
-    @Test
-    void a100MegabyteLogConvertsWith256MegabytesOfHeap() throws IOException, InterruptedException {
+    @ParameterizedTest(name = "{0} game")
+    @ValueSource(strings = {"recorded", "generated"})
+    void a100MegabyteLogConvertsWith256MegabytesOfHeap(String game) throws IOException, InterruptedException {
+        if (game.equals("recorded")) {
+            SharedData.assumePresent();
+        }
         Path java = Path.of(System.getProperty("java.home"), "bin", "java");
         Path output = dir.resolve("big.json.gz");
         Process child = new ProcessBuilder(java.toString(), "-Xmx256m", "-cp", System.getProperty("java.class.path"),
                 "-Dscenes.shared=" + System.getProperty("scenes.shared", "../../shared"),
-                LargeLogMemoryTest.class.getName(), output.toString())
+                LargeLogMemoryTest.class.getName(), output.toString(), game)
                 .redirectErrorStream(true).start();
         String printed = new String(child.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertTrue(child.waitFor(5, TimeUnit.MINUTES), "child still running");
@@ -46,16 +54,13 @@ class LargeLogMemoryTest {
         assertTrue(last.startsWith("converted "), printed);
         long bytes = Long.parseLong(last.split(" ")[1]);
         assertTrue(bytes >= LOG_BYTES, "log text read: " + bytes);
+        assertTrue(Long.parseLong(last.split(" ")[4]) > 0, last);
         assertTrue(Files.size(output) > 0);
     }
 
-    /** The child: converts the generated log into the scene file named by the argument. */
+    /** The child: converts the generated log into the scene file named by the first argument. */
     public static void main(String[] args) throws IOException {
-        Path shared = Path.of(System.getProperty("scenes.shared"), "data", "krislet", "classic-game1", "Carleton_1.lsf.gz");
-        byte[] game;
-        try (InputStream in = Inputs.open(shared)) {
-            game = in.readAllBytes();
-        }
+        byte[] game = args[1].equals("recorded") ? recordedGame() : madeUpGame();
         InputStream repeated = new InputStream() {
             long served;
             int position;
@@ -86,5 +91,27 @@ class LargeLogMemoryTest {
             writer.commit();
             System.out.println("converted " + report.bytes() + " bytes into " + report.scenes() + " scenes");
         }
+    }
+
+    private static byte[] recordedGame() throws IOException {
+        try (InputStream in = Inputs.open(SharedData.resolve("krislet/classic-game1/Carleton_1.lsf.gz"))) {
+            return in.readAllBytes();
+        }
+    }
+
+    /** A 6000-cycle player log: a see of ball, goal, flag and opponent each cycle, then a dash or a turn. */
+    static byte[] madeUpGame() {
+        Random random = new Random(1);
+        StringBuilder log = new StringBuilder("(init Home (version 9))\n(init l 1 before_kick_off)\n");
+        for (int cycle = 1; cycle <= 6000; cycle++) {
+            int ball = random.nextInt(40) - 20;
+            log.append("(see ").append(cycle).append(" ((b) ").append(1 + random.nextInt(30)).append(' ').append(ball)
+                    .append(") ((g r) ").append(20 + random.nextInt(40)).append(' ').append(random.nextInt(60) - 30)
+                    .append(") ((f c) ").append(5 + random.nextInt(40)).append(' ').append(random.nextInt(90) - 45)
+                    .append(") ((p \"Away\" ").append(1 + random.nextInt(11)).append(") ").append(2 + random.nextInt(30))
+                    .append(' ').append(random.nextInt(90) - 45).append("))\n")
+                    .append(ball == 0 ? "(dash 80)\n" : "(turn " + ball + ")\n");
+        }
+        return log.toString().getBytes(StandardCharsets.US_ASCII);
     }
 }

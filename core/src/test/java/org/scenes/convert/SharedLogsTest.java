@@ -15,6 +15,8 @@ import org.scenes.protocol.CommandType;
 import org.scenes.scene.Grid;
 import org.scenes.scene.Relation;
 import org.scenes.scene.Scene;
+import org.scenes.testing.RequiresSharedData;
+import org.scenes.testing.SharedData;
 
 /**
  * Converts the recorded games of the shared data set and pins counts that were derived
@@ -33,10 +35,12 @@ import org.scenes.scene.Scene;
  * sent before the first {@code see} (one NO_SEE drop), and a scene keeps one world-changing
  * action, so in the state-based games (up to ~70 {@code turn}s per {@code see}) almost all
  * turns are extra actions rather than scenes. University_3 of game 2 stood still most of the game
- * (260 dashes, 48 turns), hence 2234 sees without action.
+ * (260 dashes, 48 turns), hence 2234 sees without action. The same accounting on simulated games:
+ * {@code SimulatedDataTest} in the tests module.
  */
+@RequiresSharedData
 class SharedLogsTest {
-    private static final Path DATA = Path.of(System.getProperty("scenes.shared", "../../shared"), "data");
+    private static final Path DATA = SharedData.data();
 
     private static ConversionReport convert(Path log, List<Scene> scenes) throws IOException {
         return new SceneConverter(Grid.DEFAULT, true, null).convert(log, scenes == null ? s -> { } : scenes::add);

@@ -28,12 +28,16 @@ import org.scenes.scene.SceneFileWriter;
 import org.scenes.scene.SceneSource;
 import org.scenes.scene.SeenObject;
 import org.scenes.scene.Side;
+import org.scenes.testing.RequiresSharedData;
+import org.scenes.testing.SharedData;
 
 /** The compact store gives back every scene exactly, in far less memory than scene objects. */
 class KnowledgeBaseTest {
-    private static final Path KRISLET = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "krislet");
+    private static final Path KRISLET = SharedData.resolve("krislet");
 
+    /** Simulated scenes: {@code SimulatedDataTest} in the tests module. */
     @Test
+    @RequiresSharedData
     void everyRealKrisletSceneComesBackEqual() throws IOException {
         List<Path> logs;
         try (Stream<Path> files = Files.walk(KRISLET)) {

@@ -17,6 +17,8 @@ import org.scenes.convert.SceneConverter;
 import org.scenes.plugin.PluginConfig;
 import org.scenes.scene.Grid;
 import org.scenes.scene.Scene;
+import org.scenes.testing.RequiresSharedData;
+import org.scenes.testing.SharedData;
 
 /**
  * The packed object-set scan finds the same neighbours at the same distances as an exhaustive
@@ -26,9 +28,13 @@ class PackedScanTest {
     private static List<Scene> stored;
     private static List<Scene> queries;
 
+    /** Real scenes when the shared recordings are present (tests on them say so); simulated ones: SimulatedDataTest. */
     @BeforeAll
     static void load() throws IOException {
-        Path game = Path.of(System.getProperty("scenes.shared"), "data", "krislet", "classic-game1");
+        if (!SharedData.present()) {
+            return;
+        }
+        Path game = SharedData.resolve("krislet/classic-game1");
         stored = scenes(game.resolve("Carleton_1.lsf.gz")).subList(0, 2500);
         List<Scene> test = scenes(game.resolve("Carleton_2.lsf.gz"));
         queries = new ArrayList<>();
@@ -48,33 +54,39 @@ class PackedScanTest {
     }
 
     @Test
+    @RequiresSharedData
     void memoryTermsAreNotPacked() {
         assertNull(metric(Map.of("memory", "1"), ObjectSetMetric.Space.CARTESIAN, 0).pack(stored));
         assertNotNull(metric(Map.of(), ObjectSetMetric.Space.CARTESIAN, 0).pack(stored));
     }
 
     @Test
+    @RequiresSharedData
     void greedyCartesianAsExhaustive() {
         check(Map.of(), ObjectSetMetric.Space.CARTESIAN, 0);
     }
 
     @Test
+    @RequiresSharedData
     void greedyPolarWithRowsAndLogDistanceAsExhaustive() {
         check(Map.of("space", "polar", "row-weight", "2", "log-distance", "true"), ObjectSetMetric.Space.CARTESIAN, 0);
     }
 
     @Test
+    @RequiresSharedData
     void cellAndProjectionAsExhaustive() {
         check(Map.of(), ObjectSetMetric.Space.CELL, 0);
         check(Map.of(), ObjectSetMetric.Space.CARTESIAN, 1);
     }
 
     @Test
+    @RequiresSharedData
     void optimalAsExhaustive() {
         check(Map.of("matching", "optimal"), ObjectSetMetric.Space.CARTESIAN, 0);
     }
 
     @Test
+    @RequiresSharedData
     void optimalInPolarSpaceWithRowsAndLogDistanceAsExhaustive() {
         check(Map.of("matching", "optimal", "space", "polar", "direction-weight", "0.3"), ObjectSetMetric.Space.CARTESIAN, 0);
         check(Map.of("matching", "optimal", "space", "polar", "row-weight", "2", "log-distance", "true"),
@@ -82,6 +94,7 @@ class PackedScanTest {
     }
 
     @Test
+    @RequiresSharedData
     void optimalCellProjectionAndRowWeightAsExhaustive() {
         check(Map.of("matching", "optimal"), ObjectSetMetric.Space.CELL, 0);
         // cells are not projected: rows no longer follow the projected distance order
@@ -91,6 +104,7 @@ class PackedScanTest {
     }
 
     @Test
+    @RequiresSharedData
     void optimalWithAllPlayersAndAGentlePenaltyAsExhaustive() {
         // all players as one group too (larger groups); a small penalty makes more pairs cheaper unmatched
         check(Map.of("matching", "optimal", "penalty", "2", "penalty-scale", "30"), ObjectSetMetric.Space.CARTESIAN, 0,
@@ -110,6 +124,7 @@ class PackedScanTest {
     }
 
     @Test
+    @RequiresSharedData
     void memoryTermsThroughTheEncodedPathAsExhaustive() {
         // memory is not packed: the recognizer scans the encoded forms with the k-th best as bound
         List<Scene> remembered = new ArrayList<>();
@@ -124,6 +139,7 @@ class PackedScanTest {
     }
 
     @Test
+    @RequiresSharedData
     void packedSizePerObjectAndScene() {
         // cartesian: a and b, the penalty follows from them; polar with log-distance stores it; a row weight adds the row
         assertPackedSize(Map.of(), 8);

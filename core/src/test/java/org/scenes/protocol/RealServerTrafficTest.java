@@ -15,15 +15,19 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.scenes.proxylog.Direction;
 import org.scenes.convert.LogReader;
+import org.scenes.testing.RequiresSharedData;
+import org.scenes.testing.SharedData;
 
 /**
  * Every datagram of the real rcssserver 19 captures in the shared data must parse into a typed
  * message with nothing left over. The one exception is the deliberately bogus {@code (foo 1)}
  * the capture client sent to provoke {@code (error unknown_command)}-style replies: it must come
- * out as {@link Unknown}.
+ * out as {@link Unknown}. Simulated traffic is checked the same way by {@code SimulatedDataTest}
+ * in the tests module.
  */
+@RequiresSharedData
 class RealServerTrafficTest {
-    private static final Path DATA = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "rcssserver19");
+    private static final Path DATA = SharedData.resolve("rcssserver19");
 
     private final MessageParser parser = new MessageParser();
 

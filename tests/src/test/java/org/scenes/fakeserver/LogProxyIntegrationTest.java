@@ -30,6 +30,7 @@ import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.Route;
 import org.scenes.proxylog.Direction;
+import org.scenes.tests.SimulatedGame;
 
 /** Clients talk to the fake soccer server through the logging proxy; the logs are checked message by message. */
 class LogProxyIntegrationTest {
@@ -45,8 +46,8 @@ class LogProxyIntegrationTest {
 
     @BeforeEach
     void startServer() throws IOException {
-        Path log = Path.of(System.getProperty("scenes.shared"), "data/krislet/classic-game1/Carleton_1.lsf.gz");
-        server = FakeSoccerServer.start(FakeSoccerServer.recordedSensing(log, 400));
+        // any player's sensing will do: a simulated game's, so the test needs no shared recordings
+        server = FakeSoccerServer.start(FakeSoccerServer.recordedSensing(SimulatedGame.log("Carleton", 1), 400));
     }
 
     @AfterEach

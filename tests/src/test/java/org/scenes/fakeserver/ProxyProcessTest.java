@@ -14,8 +14,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.scenes.proxylog.Direction;
 
 /** {@code scenes proxy} as its own process: SIGTERM completes every log. */
@@ -30,9 +31,11 @@ class ProxyProcessTest {
         return Files.exists(console) ? Files.readAllLines(console, StandardCharsets.UTF_8) : List.of();
     }
 
-    @Test
-    void sigtermWritesEveryMessageAndCompletesTheLogs() throws Exception {
-        Path recorded = Path.of(System.getProperty("scenes.shared"), "data/krislet/classic-game1/Carleton_1.lsf.gz");
+    /** The sensing of a recorded player (when the shared recordings are present) or of a simulated one. */
+    @ParameterizedTest(name = "{0} game")
+    @ValueSource(strings = {"recorded", "simulated"})
+    void sigtermWritesEveryMessageAndCompletesTheLogs(String game) throws Exception {
+        Path recorded = KrisletLogs.carleton1(game);
         try (FakeSoccerServer server = FakeSoccerServer.start(FakeSoccerServer.recordedSensing(recorded, 200))) {
             console = out.resolve("console.txt");
             logs = out.resolve("logs");

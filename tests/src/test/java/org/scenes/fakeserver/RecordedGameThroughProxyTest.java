@@ -17,8 +17,9 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.BooleanSupplier;
-import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.scenes.convert.SceneConverter;
 import org.scenes.files.Inputs;
 import org.scenes.logproxy.ClientKind;
@@ -33,7 +34,8 @@ import org.scenes.scene.Scene;
 /**
  * A whole recorded game replayed through two chained proxies (classic layout, then native):
  * both logs hold the original messages in the original order, and the converter turns all three
- * logs into the same scenes.
+ * logs into the same scenes. Once with a recorded game (skipped without the shared recordings),
+ * once with a simulated one.
  */
 class RecordedGameThroughProxyTest {
     private static final Set<String> COMMANDS = Set.of("init", "dash", "turn", "kick", "move", "turn_neck", "catch",
@@ -42,9 +44,10 @@ class RecordedGameThroughProxyTest {
     @TempDir
     Path out;
 
-    @Test
-    void aRecordedGameSurvivesTheProxyAndConvertsToTheSameScenes() throws Exception {
-        Path original = Path.of(System.getProperty("scenes.shared"), "data/krislet/classic-game1/Carleton_1.lsf.gz");
+    @ParameterizedTest(name = "{0} game")
+    @ValueSource(strings = {"recorded", "simulated"})
+    void aRecordedGameSurvivesTheProxyAndConvertsToTheSameScenes(String game) throws Exception {
+        Path original = KrisletLogs.carleton1(game);
         List<String> lines = new ArrayList<>();
         try (BufferedReader reader = new BufferedReader(new InputStreamReader(Inputs.open(original), StandardCharsets.UTF_8))) {
             for (String line = reader.readLine(); line != null; line = reader.readLine()) {

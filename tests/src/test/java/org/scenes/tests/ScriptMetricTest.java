@@ -28,7 +28,7 @@ import org.scenes.validate.ValidationReport;
 import org.scenes.validate.Validator;
 
 /**
- * The shipped scripts against the built-in Java plugins they imitate, on real Krislet scenes:
+ * The shipped scripts against the built-in Java plugins they imitate, on simulated Krislet scenes:
  * same distances, same validation; and a failing script located by query and line.
  */
 class ScriptMetricTest {
@@ -39,11 +39,11 @@ class ScriptMetricTest {
     static List<Scene> train;
     static List<Scene> test;
 
+    /** Two players of a simulated Krislet game: what is compared needs no recorded game. */
     @BeforeAll
     static void convert() throws IOException {
-        Path game = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "krislet", "classic-game1");
-        train = scenes(game.resolve("Carleton_1.lsf.gz"));
-        test = scenes(game.resolve("Carleton_2.lsf.gz"));
+        train = scenes(SimulatedGame.log("Carleton", 1));
+        test = scenes(SimulatedGame.log("Carleton", 2));
     }
 
     static List<Scene> scenes(Path log) throws IOException {

@@ -21,6 +21,8 @@ import org.scenes.scene.ObjectKind;
 import org.scenes.scene.Relation;
 import org.scenes.scene.Scene;
 import org.scenes.scene.SeenObject;
+import org.scenes.testing.RequiresSharedData;
+import org.scenes.testing.SharedData;
 
 class SyntheticScenesTest {
     private static final int COUNT = 20_000;
@@ -58,6 +60,7 @@ class SyntheticScenesTest {
      * fifth of the recorded mean per scene, and more players, since synthetic games are 11 v 11.
      */
     @Test
+    @RequiresSharedData
     void objectCountsAreNearRecordedKrisletScenes() throws IOException {
         double[] recorded = meanCounts(recordedGame1());
         double[] synthetic = meanCounts(generate(1, COUNT, Grid.DEFAULT));
@@ -83,7 +86,7 @@ class SyntheticScenesTest {
     }
 
     private static List<Scene> recordedGame1() throws IOException {
-        Path game = Path.of(System.getProperty("scenes.shared"), "data", "krislet", "classic-game1");
+        Path game = SharedData.resolve("krislet/classic-game1");
         List<Scene> scenes = new ArrayList<>();
         SceneConverter converter = new SceneConverter(Grid.DEFAULT, true, line -> { });
         for (String player : new String[] {"Carleton_1", "University_1"}) {
