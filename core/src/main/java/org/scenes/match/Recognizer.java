@@ -93,6 +93,14 @@ public final class Recognizer {
         return knowledge;
     }
 
+    /**
+     * Whether the stored scenes have several see ages (a player that acts every cycle on a see
+     * every other cycle), so queries are matched against scenes of their own age only.
+     */
+    public boolean splitsBySeeAge() {
+        return byAge != null;
+    }
+
     public int k() {
         return k;
     }

@@ -54,7 +54,7 @@ public final class Validator {
      * comes from the nearest neighbour whose scene holds the selected action (its other action), or,
      * when none does (a selector that made the action up), from the nearest neighbour's scene.
      */
-    static List<Action> withNeck(Action selected, List<Neighbour> nearest) {
+    public static List<Action> withNeck(Action selected, List<Neighbour> nearest) {
         if (selected == null) {
             return List.of(); // no usable action: none for the body and the neck alike
         }

@@ -17,12 +17,15 @@ import org.scenes.protocol.Message;
 import org.scenes.protocol.MessageParser;
 import org.scenes.protocol.Parameters;
 import org.scenes.protocol.See;
+import org.scenes.protocol.SenseBody;
+import org.scenes.protocol.ServerNotice;
 import org.scenes.scene.Action;
 import org.scenes.scene.ActionType;
 import org.scenes.scene.ObjectKind;
 import org.scenes.scene.SeenObject;
 import org.scenes.scene.Observer;
 import org.scenes.scene.Scene;
+import org.scenes.validate.Validator;
 
 /**
  * The imitating player: every {@code see} becomes a scene exactly as the converter makes one
@@ -42,6 +45,11 @@ import org.scenes.scene.Scene;
  * the same action has left what the player sees exactly unchanged for
  * {@link Guards#stuckSees()} sees in a row, the nearest neighbour with another action is taken.
  * Each firing is counted ({@link #counters()}).
+ *
+ * <p>A knowledge base of a player that acted every cycle (scenes of several see ages, e.g. a
+ * librcsc team on synchronous vision) is played per cycle in synchronous mode: at each
+ * {@code (think)} the latest view, with its age, is matched, and the chosen scene's body action
+ * and its neck action are sent, as {@code validate} predicts them ({@link Validator#withNeck}).
  */
 public final class ImitationBrain implements Brain {
     /** Scenes replayed through the transforms before each query; enough for one-step memory and more. */
@@ -58,6 +66,15 @@ public final class ImitationBrain implements Brain {
     private boolean placed;
     private final Guards guards;
     private double kickable = DEFAULT_KICKABLE;
+    /**
+     * Per-cycle play, for knowledge bases of players that act every cycle (several see ages): in
+     * synchronous mode the decision is made at each {@code (think)} from the latest see and its age.
+     */
+    private final boolean perCycle;
+    private boolean synchronous;
+    private See latestSee;
+    /** Cycles (sense_body messages) since the latest see arrived. */
+    private int stepsSinceSee;
     private long decisions;
     private long silent;
     private long kickGuarded;
@@ -106,6 +123,7 @@ public final class ImitationBrain implements Brain {
         this.selector = Objects.requireNonNull(selector, "selector");
         this.transforms = Objects.requireNonNull(transforms, "transforms");
         this.random = Objects.requireNonNull(random, "random");
+        this.perCycle = recognizer.splitsBySeeAge();
     }
 
     /** A factory sharing one recognizer (it is thread-safe) with a fresh selector and transforms per player. */
@@ -134,18 +152,38 @@ public final class ImitationBrain implements Brain {
             if (!Double.isNaN(reach)) {
                 kickable = reach;
             }
+            synchronous |= parameters.number("synch_mode") == 1;
+        } else if (message instanceof SenseBody) {
+            stepsSinceSee++;
         } else if (message instanceof See see) {
-            String command = decide(see);
-            if (command != null) {
-                send.accept(command);
+            latestSee = see;
+            stepsSinceSee = 0;
+            if (!(perCycle && synchronous)) {
+                decide(see, 0).forEach(action -> send.accept(action.command()));
+            }
+        } else if (message instanceof ServerNotice notice && notice.head().equals("think")) {
+            // Synchronous mode: act every cycle, as the recorded player did, on the latest view.
+            synchronous = true;
+            if (perCycle && latestSee != null) {
+                decide(latestSee, stepsSinceSee).forEach(action -> send.accept(action.command()));
             }
         }
     }
 
     /** The command for one see, or null when no neighbour holds a usable action. */
     String decide(See see) {
-        Scene seen = new Scene(see.time(), observer,
-                SceneConverter.seenObjects(see, observer, recognizer.knowledge().grid()), List.of());
+        List<Action> actions = decide(see, 0);
+        return actions.isEmpty() ? null : actions.get(0).command();
+    }
+
+    /**
+     * The actions for the view {@code see}, seen {@code age} cycles ago: the selected body action
+     * and, as {@code validate} predicts it, the neck action of the neighbour that holds it. Empty
+     * when no neighbour holds a usable action.
+     */
+    List<Action> decide(See see, int age) {
+        Scene seen = new Scene(see.time() + age, observer,
+                SceneConverter.seenObjects(see, observer, recognizer.knowledge().grid()), List.of(), null, age);
         Scene query = seen;
         List<SceneTransform> chain = transforms.get();
         if (!chain.isEmpty()) {
@@ -163,15 +201,14 @@ public final class ImitationBrain implements Brain {
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
-        Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(),
-                action == null ? List.of() : List.of(action));
+        List<Action> actions = Validator.withNeck(action, nearest);
+        Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age);
         history.addLast(made);
         decided.accept(made);
         if (action == null) {
             silent++;
-            return null;
         }
-        return action.command();
+        return actions;
     }
 
     private Action guard(Action chosen, List<SeenObject> seen, List<Neighbour> nearest) {
