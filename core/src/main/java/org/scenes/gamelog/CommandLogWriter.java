@@ -1,12 +1,9 @@
 package org.scenes.gamelog;
 
-import java.io.BufferedWriter;
 import java.io.IOException;
-import java.io.OutputStreamWriter;
 import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import org.scenes.files.AtomicOutput;
+import org.scenes.files.AtomicTextOutput;
 
 /**
  * Writes a server command log ({@code .rcl}) in rcssserver's line format: each line starts
@@ -15,12 +12,12 @@ import org.scenes.files.AtomicOutput;
  * {@code (referee kick_off_l)}. The file appears only on {@link #commit()}.
  */
 public final class CommandLogWriter implements AutoCloseable {
-    private final AtomicOutput output;
+    private final AtomicTextOutput output;
     private final Writer writer;
 
     private CommandLogWriter(Path file) throws IOException {
-        this.output = AtomicOutput.create(file);
-        this.writer = new BufferedWriter(new OutputStreamWriter(output.stream(), StandardCharsets.UTF_8), 1 << 16);
+        this.output = AtomicTextOutput.create(file);
+        this.writer = output.writer();
     }
 
     /** Starts a command log at {@code file} (gzipped when the name ends in {@code .gz}). */
@@ -40,9 +37,7 @@ public final class CommandLogWriter implements AutoCloseable {
 
     /** Finishes the log and moves it into place. */
     public Path commit() throws IOException {
-        writer.flush();
-        output.commit();
-        return output.target();
+        return output.commit();
     }
 
     /** Abandons the log unless committed. */

@@ -1,14 +1,11 @@
 package org.scenes.gamelog;
 
-import java.io.BufferedWriter;
 import java.io.IOException;
-import java.io.OutputStreamWriter;
 import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.regex.Pattern;
-import org.scenes.files.AtomicOutput;
+import org.scenes.files.AtomicTextOutput;
 
 /**
  * Writes a server game log ({@code .rcg}) in the text format rcssserver 19 writes by default,
@@ -30,7 +27,7 @@ public final class GameLogWriter implements AutoCloseable {
     private static final double ANGLE_STEP = 0.001;
     private static final Pattern GOAL = Pattern.compile("goal_([lr])_\\d+");
 
-    private final AtomicOutput output;
+    private final AtomicTextOutput output;
     private final Writer writer;
     private final StringBuilder line = new StringBuilder(4096);
     private String playMode;
@@ -39,8 +36,8 @@ public final class GameLogWriter implements AutoCloseable {
     private GameFrame last;
 
     private GameLogWriter(Path file, List<String> parameterMessages) throws IOException {
-        this.output = AtomicOutput.create(file);
-        this.writer = new BufferedWriter(new OutputStreamWriter(output.stream(), StandardCharsets.UTF_8), 1 << 16);
+        this.output = AtomicTextOutput.create(file);
+        this.writer = output.writer();
         writer.write("ULG6\n");
         for (String message : parameterMessages) {
             writer.write(message);
@@ -96,9 +93,7 @@ public final class GameLogWriter implements AutoCloseable {
         if (last != null) {
             writer.write(teamLine(last));
         }
-        writer.flush();
-        output.commit();
-        return output.target();
+        return output.commit();
     }
 
     /** Abandons the log unless committed. */

@@ -1,13 +1,11 @@
 package org.scenes.agent.net;
 
-import java.io.BufferedWriter;
 import java.io.IOException;
-import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.scenes.files.AtomicOutput;
+import org.scenes.files.AtomicTextOutput;
 import org.scenes.proxylog.Direction;
 import org.scenes.proxylog.ProxyLogLine;
 
@@ -17,14 +15,14 @@ import org.scenes.proxylog.ProxyLogLine;
  * player stops.
  */
 final class TrafficLog implements AutoCloseable {
-    private final AtomicOutput output;
+    private final AtomicTextOutput output;
     private final Writer writer;
     private final long startNanos = System.nanoTime();
 
     TrafficLog(Path file) throws IOException {
         Files.createDirectories(file.toAbsolutePath().getParent());
-        output = AtomicOutput.create(file);
-        writer = new BufferedWriter(new OutputStreamWriter(output.stream(), StandardCharsets.UTF_8), 1 << 16);
+        output = AtomicTextOutput.create(file);
+        writer = output.writer();
         writer.write(ProxyLogLine.HEADER);
         writer.write('\n');
     }
@@ -43,9 +41,7 @@ final class TrafficLog implements AutoCloseable {
     }
 
     Path commit() throws IOException {
-        writer.flush();
-        output.commit();
-        return output.target();
+        return output.commit();
     }
 
     @Override
