@@ -32,10 +32,19 @@ final class PluginsCommand implements Callable<Integer> {
             }
             out.printf("  %-14s %s  [%s]%n", info.name(), info.description(), info.origin());
             for (Map.Entry<String, String> option : info.options().entrySet()) {
-                out.printf("  %-14s   --option %s=...  %s%n", "", option.getKey(), option.getValue());
+                out.printf("  %-14s   %s %s=...  %s%n", "", optionFlag(info.kind()), option.getKey(), option.getValue());
             }
         }
         out.flush();
         return ExitCodes.OK;
+    }
+
+    /** How an option of this kind of plugin is given on the command line (MatchOptions). */
+    private static String optionFlag(PluginKind kind) {
+        return switch (kind) {
+            case METRIC -> "--option";
+            case SELECTOR -> "--selector-option";
+            case TRANSFORM -> "option"; // transforms take their defaults: no command-line flag yet
+        };
     }
 }

@@ -33,6 +33,14 @@ class ScenesCommandTest {
     }
 
     @Test
+    void pluginsNamesTheFlagEachKindOfOptionIsGivenWith() {
+        assertEquals(ExitCodes.OK, run("plugins"));
+        assertTrue(cli.out().contains("--selector-option percent=..."), cli.out());
+        assertFalse(cli.out().contains("--option percent="), "percent is a selector option: " + cli.out());
+        assertTrue(cli.out().contains("--option space=..."), cli.out());
+    }
+
+    @Test
     void helpListsTheSubcommands() {
         assertEquals(ExitCodes.OK, run("--help"));
         assertTrue(cli.out().contains("plugins"), cli.out());
