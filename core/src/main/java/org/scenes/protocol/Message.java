@@ -9,7 +9,7 @@ import java.util.List;
  * gracefully instead of failing.
  */
 public sealed interface Message
-        permits See, SenseBody, Hear, InitRequest, InitReply, Parameters, ServerNotice, Score,
+        permits See, SenseBody, Hear, InitRequest, ReconnectRequest, InitReply, Parameters, ServerNotice, Score,
         ChangePlayerType, PlayerCommand, Unknown {
 
     /** The message's first word: {@code see}, {@code dash}, {@code server_param}, ... */

@@ -664,13 +664,18 @@ public final class MessageParser {
         skipSpace();
         int firstStart = pos;
         int firstEnd = atomEnd();
-        if (firstEnd == firstStart) {
+        boolean trainerRequest = firstEnd == firstStart && buf[pos] == '(';
+        if (firstEnd == firstStart && !trainerRequest) {
             throw error("init needs a team name or a side");
         }
         pos = firstEnd;
         skipSpace();
+        if (equals(firstStart, firstEnd, "ok") && buf[pos] == ')') {
+            return new InitReply("init", null, 0, null, InitReply.Role.TRAINER);
+        }
         if (buf[pos] == '(' || buf[pos] == ')') {
-            String team = buf[firstStart] == '"' ? text(firstStart + 1, firstEnd - 1) : text(firstStart, firstEnd);
+            String team = trainerRequest ? null
+                    : buf[firstStart] == '"' ? text(firstStart + 1, firstEnd - 1) : text(firstStart, firstEnd);
             double version = 3;
             boolean goalie = false;
             while (buf[pos] == '(') {
@@ -701,6 +706,9 @@ public final class MessageParser {
         Side side = side(firstStart, firstEnd);
         int secondStart = pos;
         int secondEnd = atomEnd();
+        if (side != null && equals(secondStart, secondEnd, "ok")) {
+            return new InitReply("init", side, 0, null, InitReply.Role.COACH);
+        }
         double unum = number(secondStart, secondEnd);
         if (side == null || Double.isNaN(unum) || unum != (int) unum) {
             throw errorAt(firstStart, "init is (init TEAM (version V)) from a client or (init SIDE UNUM PLAYMODE) from the server");
@@ -715,8 +723,15 @@ public final class MessageParser {
         int firstEnd = atomEnd();
         Side side = side(firstStart, firstEnd);
         if (side == null) {
-            // the client's (reconnect TEAM UNUM) is not a scene action
-            return new Unknown("reconnect", text(start, end));
+            pos = firstEnd;
+            skipSpace();
+            int unumEnd = atomEnd();
+            double unum = number(pos, unumEnd);
+            if (firstEnd == firstStart || Double.isNaN(unum) || unum != (int) unum) {
+                throw errorAt(firstStart, "reconnect is (reconnect TEAM UNUM) from a client or (reconnect SIDE PLAYMODE) from the server");
+            }
+            String team = buf[firstStart] == '"' ? text(firstStart + 1, firstEnd - 1) : text(firstStart, firstEnd);
+            return new ReconnectRequest(team, (int) unum);
         }
         pos = firstEnd;
         return new InitReply("reconnect", side, 0, restText());

@@ -203,6 +203,20 @@ class MessageParserTest {
     }
 
     @Test
+    void coachAndTrainerInitAndClientReconnect() {
+        assertEquals(new InitReply("init", Side.LEFT, 0, null, InitReply.Role.COACH), parser.parse("(init l ok)"));
+        assertEquals(new InitReply("init", null, 0, null, InitReply.Role.TRAINER), parser.parse("(init ok)"));
+        assertEquals(InitReply.Role.PLAYER, ((InitReply) parser.parse("(init l 3 before_kick_off)")).role());
+        InitRequest trainer = assertInstanceOf(InitRequest.class, parser.parse("(init (version 7))"));
+        assertEquals(new InitRequest(null, 7, false), trainer);
+        ReconnectRequest reconnect = assertInstanceOf(ReconnectRequest.class, parser.parse("(reconnect Carleton 4)"));
+        assertEquals(new ReconnectRequest("Carleton", 4), reconnect);
+        assertTrue(reconnect.fromClient());
+        assertThrows(ProtocolException.class, () -> parser.parse("(reconnect Carleton)"));
+        assertThrows(ProtocolException.class, () -> parser.parse("(reconnect Carleton four)"));
+    }
+
+    @Test
     void parametersNamedAndPositional() {
         Parameters named = assertInstanceOf(Parameters.class, parser.parse(
                 "(server_param (audio_cut_dist 50)(game_log_dir \"./\")(ball_decay 0.94))"));

@@ -1,5 +1,12 @@
 package org.scenes.logproxy;
 
+import org.scenes.protocol.InitReply;
+import org.scenes.protocol.InitRequest;
+import org.scenes.protocol.Message;
+import org.scenes.protocol.MessageParser;
+import org.scenes.protocol.ProtocolException;
+import org.scenes.protocol.ReconnectRequest;
+
 /**
  * Who a client is, learned from the init exchange: {@code (init TEAM (version V))} or
  * {@code (reconnect TEAM UNUM)} from the client, {@code (init SIDE UNUM PLAYMODE)},
@@ -7,6 +14,7 @@ package org.scenes.logproxy;
  * Mutable, owned by the log writer thread.
  */
 final class SessionIdentity {
+    private final MessageParser parser = new MessageParser();
     private String team;
     private String side;
     private String unum;
@@ -20,31 +28,31 @@ final class SessionIdentity {
 
     /** Reads a client message for the team name (and number, on reconnect). */
     void fromClient(String message) {
-        String[] words = words(message);
-        if (words.length >= 2 && (words[0].equals("init") || words[0].equals("reconnect"))
-                && !words[1].startsWith("(")) {
-            team = words[1];
-            if (words[0].equals("reconnect") && words.length >= 3 && isNumber(words[2])) {
-                unum = words[2];
-            }
+        Message parsed = parse(message);
+        if (parsed instanceof InitRequest init && init.team() != null) {
+            team = init.team();
+        } else if (parsed instanceof ReconnectRequest reconnect) {
+            team = reconnect.team();
+            unum = Integer.toString(reconnect.uniformNumber());
         }
     }
 
     /** Reads a server message; true once the identity is complete. */
     boolean fromServer(String message) {
-        String[] words = words(message);
-        if (words.length < 2 || !(words[0].equals("init") || words[0].equals("reconnect"))) {
+        if (!(parse(message) instanceof InitReply reply)) {
             return false;
         }
-        if (words[1].equals("ok")) {
-            trainer = true;
-        } else {
-            side = words[1];
-            if (words.length >= 3 && words[2].equals("ok")) {
-                coach = true;
-            } else if (words[0].equals("init") && words.length >= 3 && isNumber(words[2])) {
-                unum = words[2];
+        switch (reply.role()) {
+            case TRAINER -> trainer = true;
+            case COACH -> coach = true;
+            case PLAYER -> {
+                if (reply.head().equals("init")) {
+                    unum = Integer.toString(reply.uniformNumber());
+                }
             }
+        }
+        if (reply.side() != null) {
+            side = String.valueOf(reply.side().letter());
         }
         complete = trainer || (team != null && (coach || unum != null));
         return complete;
@@ -77,20 +85,12 @@ final class SessionIdentity {
         return out.toString();
     }
 
-    private static boolean isNumber(String word) {
-        return !word.isEmpty() && word.chars().allMatch(Character::isDigit);
-    }
-
-    /** The first words of an s-expression such as {@code (init l 3 before_kick_off)}. */
-    private static String[] words(String message) {
-        int start = message.indexOf('(');
-        if (start < 0) {
-            return new String[0];
+    /** The message, or null when it is not one the parser accepts (the identity then stays unknown). */
+    private Message parse(String message) {
+        try {
+            return parser.parse(message);
+        } catch (ProtocolException e) {
+            return null;
         }
-        int end = message.length();
-        while (end > start && (message.charAt(end - 1) == ')' || message.charAt(end - 1) <= ' ')) {
-            end--;
-        }
-        return message.substring(start + 1, end).trim().split("\\s+", 4);
     }
 }

@@ -143,7 +143,7 @@ public final class ImitationBrain implements Brain {
         Message message = parser.parse(text);
         if (message instanceof InitReply reply && reply.side() != null) {
             observer = new Observer(team, reply.side(), reply.uniformNumber());
-        } else if (!placed && text.startsWith("(player_type")) {
+        } else if (!placed && message instanceof Parameters types && types.head().equals("player_type")) {
             placed = true;
             send.accept(Action.move(-random.nextDouble() * 52.5, 34 - random.nextDouble() * 68).command());
         } else if (message instanceof Parameters parameters && parameters.head().equals("server_param")) {
