@@ -63,11 +63,10 @@ final class TuneCommand implements Callable<Integer> {
             files.add(SceneFileReader.read(path));
         }
         PrintWriter out = spec.commandLine().getOut();
-        Folds.Protocol chosen = switch (protocol) {
-            case "leave-one-out" -> Folds.Protocol.LEAVE_ONE_OUT;
-            case "next" -> Folds.Protocol.NEXT;
-            default -> throw new UsageException("--protocol must be leave-one-out or next, not " + protocol);
-        };
+        Folds.Protocol chosen = Folds.Protocol.fromKey(protocol);
+        if (chosen == null) {
+            throw new UsageException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
+        }
         Tuner.Objective goal = switch (objective) {
             case "mean" -> Tuner.Objective.MEAN;
             case "accuracy" -> Tuner.Objective.ACCURACY;

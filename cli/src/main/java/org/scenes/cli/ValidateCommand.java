@@ -98,11 +98,10 @@ final class ValidateCommand implements Callable<Integer> {
                         : "give --test FILE... or --self");
             }
         }
-        Folds.Protocol foldProtocol = switch (protocol) {
-            case "next" -> Folds.Protocol.NEXT;
-            case "leave-one-out" -> Folds.Protocol.LEAVE_ONE_OUT;
-            default -> throw new UsageException("--protocol must be next or leave-one-out, not " + protocol);
-        };
+        Folds.Protocol foldProtocol = Folds.Protocol.fromKey(protocol);
+        if (foldProtocol == null) {
+            throw new UsageException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
+        }
         List<MatchConfig> configs = match.configs();
         PluginRegistry registry = top.global.registry();
         for (MatchConfig config : configs) {

@@ -161,7 +161,7 @@ public final class ResultTable {
                 }
                 json.writeEndArray();
             }
-            json.writeStringField("protocol", protocolKey(sweep.protocol()));
+            json.writeStringField("protocol", sweep.protocol().key());
             json.writeArrayFieldStart("transforms");
             for (String transform : sweep.transforms()) {
                 json.writeString(transform);
@@ -228,11 +228,6 @@ public final class ResultTable {
             json.flush();
             output.commit();
         }
-    }
-
-    /** "next" or "leave-one-out", as {@code scenes validate --protocol} takes it. */
-    public static String protocolKey(org.scenes.validate.Folds.Protocol protocol) {
-        return protocol == org.scenes.validate.Folds.Protocol.NEXT ? "next" : "leave-one-out";
     }
 
     private static void writeNumber(JsonGenerator json, String name, double value) throws IOException {

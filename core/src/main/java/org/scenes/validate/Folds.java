@@ -20,7 +20,36 @@ import org.scenes.scene.SceneFile;
 public final class Folds {
     /** Which files train each fold. */
     public enum Protocol {
-        NEXT, LEAVE_ONE_OUT
+        /** Each file trains the fold that tests the next one (the thesis' protocol). */
+        NEXT("next"),
+        /** All the other files train the fold that tests one. */
+        LEAVE_ONE_OUT("leave-one-out");
+
+        private final String key;
+
+        Protocol(String key) {
+            this.key = key;
+        }
+
+        /** The name written in results and read from options and scripts: {@code next}, {@code leave-one-out}. */
+        public String key() {
+            return key;
+        }
+
+        /** The protocol of that key; null for none (the caller says where the bad name came from). */
+        public static Protocol fromKey(String key) {
+            for (Protocol protocol : values()) {
+                if (protocol.key.equals(key)) {
+                    return protocol;
+                }
+            }
+            return null;
+        }
+
+        /** The keys, for messages: {@code next or leave-one-out}. */
+        public static String keys() {
+            return NEXT.key + " or " + LEAVE_ONE_OUT.key;
+        }
     }
 
     private final List<ValidationReport> reports;
@@ -136,7 +165,7 @@ public final class Folds {
     public Map<String, Object> toMap() {
         Map<String, Object> map = new LinkedHashMap<>();
         map.put("folds", reports.size());
-        map.put("protocol", protocol == Protocol.NEXT ? "next" : "leave-one-out");
+        map.put("protocol", protocol.key());
         // the single-run keys, as means over the folds, so scripts read --folds output like a plain run
         map.put("accuracy", ValidationReport.number(mean(ValidationReport::accuracy)));
         map.put("macroF1", ValidationReport.number(mean(ValidationReport::macroF1)));

@@ -49,11 +49,11 @@ public abstract class SweepScript extends Script {
      * {@code 'leave-one-out'} (all the other files), as {@code scenes validate --protocol}.
      */
     public void protocol(String name) {
-        protocol = switch (name) {
-            case "next" -> Folds.Protocol.NEXT;
-            case "leave-one-out" -> Folds.Protocol.LEAVE_ONE_OUT;
-            default -> throw new IllegalArgumentException("protocol must be 'next' or 'leave-one-out', not '" + name + "'");
-        };
+        Folds.Protocol chosen = Folds.Protocol.fromKey(name);
+        if (chosen == null) {
+            throw new IllegalArgumentException("protocol must be " + Folds.Protocol.keys() + ", not '" + name + "'");
+        }
+        protocol = chosen;
     }
 
     /** Scene transforms applied in every configuration, e.g. {@code transforms 'memory'}. */
