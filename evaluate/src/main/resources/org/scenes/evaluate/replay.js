@@ -105,7 +105,8 @@
       context.fill();
       context.stroke();
       status.textContent = "cycle " + time[index] + " \u00b7 " + data.modes[event[1]] + " \u00b7 "
-          + data.left + " " + event[2] + " : " + event[3] + " " + data.right;
+          + data.left + " " + event[2] + " : " + event[3] + " " + data.right
+          + " \u00b7 ball " + ballX[index].toFixed(1) + " " + ballY[index].toFixed(1);
       slider.value = String(index);
     }
 
