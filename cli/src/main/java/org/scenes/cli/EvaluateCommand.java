@@ -120,7 +120,8 @@ final class EvaluateCommand implements Callable<Integer> {
         Outcome outcome = evaluate(setup, arena(), json ? null : out);
         outcome.about().put("played on", server == null ? "the embedded simulator, in process, synchronous"
                 : "the soccer server at " + server + (serverLogs == null ? ", without its game logs"
-                        : ", positions from its game logs in " + serverLogs));
+                        : ", positions from its game logs in " + serverLogs)
+                        + "; the seeds seed the players, the server's noise is its own (scenes server --seed)");
         if (json) {
             Map<String, Object> root = new LinkedHashMap<>();
             root.put("about", outcome.about());
