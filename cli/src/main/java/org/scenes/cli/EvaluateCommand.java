@@ -40,7 +40,8 @@ import picocli.CommandLine.Spec;
 /** {@code scenes evaluate}: teacher and imitator play the same games; do they play alike? */
 @Command(name = "evaluate", mixinStandardHelpOptions = true,
         description = {"Closed-loop evaluation: the teacher team and an imitating team play the same games (same"
-                + " seeds, start positions, opponent) in the embedded simulator, and their behaviour is compared:"
+                + " seeds, start positions, opponent) in the embedded simulator (or on a soccer server with"
+                + " --server), and their behaviour is compared:"
                 + " action mix and its divergence, kicks and goals per 1000 cycles, distance to the ball, kick-off"
                 + " to first touch, stuck share, agreement with a shadow teacher, and a Turing figure.",
                 "The imitator is learnt from the teacher's own games (simulate, convert, knowledge base, in"
