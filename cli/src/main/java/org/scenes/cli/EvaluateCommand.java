@@ -200,8 +200,8 @@ final class EvaluateCommand implements Callable<Integer> {
             throw new UsageException("--server-logs: " + serverLogs + " is not a directory");
         }
         PrintWriter err = spec.commandLine().getErr();
-        // a player's connection notices (and their number) are the server's business; failures end the game
-        return new LiveArena(ClientOptions.of(address, "Teal").withTimeouts(Duration.ofSeconds(2), Duration.ofSeconds(10)),
+        // an init is given 5 s: one answered after its player gave up leaves a player on the server
+        return new LiveArena(ClientOptions.of(address, "Teal").withTimeouts(Duration.ofSeconds(5), Duration.ofSeconds(10)),
                 serverLogs, Duration.ofMillis(Math.round(serverWait * 1000)), line -> {
                     synchronized (err) {
                         err.println(line);

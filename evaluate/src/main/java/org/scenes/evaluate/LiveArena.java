@@ -126,14 +126,17 @@ public final class LiveArena implements Arena {
      */
     private Thread connect(GameSetup.Team team, Side side, long seed, Scoreboard board, List<PlayerReport> reports,
                            long deadline) throws InterruptedException, IOException {
-        ClientOptions options = new ClientOptions(client.server(), team.name(), client.version(), false, 0,
-                client.connectTimeout(), client.silenceTimeout(), client.logDirectory());
         String lastReason = "";
         while (true) {
+            // each try waits for its answer at most until the deadline (and at least a second)
+            Duration answer = Duration.ofNanos(Math.max(1_000_000_000L,
+                    Math.min(client.connectTimeout().toNanos(), deadline - System.nanoTime())));
+            ClientOptions options = new ClientOptions(client.server(), team.name(), client.version(), false, 0,
+                    answer, client.silenceTimeout(), client.logDirectory());
             AtomicInteger connected = new AtomicInteger();
             AtomicReference<String> wrongSide = new AtomicReference<>();
             TeamRunner runner = new TeamRunner(options, team.players(),
-                    seeded(team.brains(), seed, side, board, connected, wrongSide), seed, line -> {
+                    seeded(team.brains(), seed, side, board, connected, wrongSide, notices), seed, line -> {
                         // a try while the server takes no game yet is not news; its reason is kept in the report
                         if (connected.get() > 0) {
                             notices.accept(line);
@@ -192,7 +195,8 @@ public final class LiveArena implements Arena {
      * them, behind the scoreboard.
      */
     private static BrainFactory seeded(BrainFactory brains, long seed, Side side, Scoreboard board,
-                                       AtomicInteger connected, AtomicReference<String> wrongSide) {
+                                       AtomicInteger connected, AtomicReference<String> wrongSide,
+                                       Consumer<String> notices) {
         return (teamName, ignored) -> new Brain() {
             private final MessageParser parser = new MessageParser();
             private Brain inner;
@@ -212,7 +216,13 @@ public final class LiveArena implements Arena {
                     }
                     unum = init.uniformNumber();
                     inner = brains.create(teamName, new Random(Simulator.brainSeed(seed, side, unum)));
-                    connected.incrementAndGet();
+                    int expected = connected.incrementAndGet();
+                    if (unum != expected) {
+                        // players connect one after another, so the server numbers them 1, 2, ...
+                        notices.accept(teamName + " player " + expected + " was given uniform number " + unum
+                                + ": the server holds a player of an earlier try (answered too late?); the game"
+                                + " is played, but not with the numbers and seeds of the game in process");
+                    }
                 }
                 board.heard(side, unum, message, parser);
                 inner.receive(message, send);

@@ -64,7 +64,7 @@ class LiveEvaluationTest {
             Future<List<ServerResult>> serving = executor.submit(
                     () -> series.run(started -> port.complete(started[1]), result -> { }, frame -> { }));
             LiveArena arena = new LiveArena(ClientOptions.of(new ServerAddress("127.0.0.1", port.get(30, TimeUnit.SECONDS)),
-                    "Teal").withTimeouts(Duration.ofSeconds(2), Duration.ofSeconds(10)), logs, Duration.ofSeconds(30),
+                    "Teal").withTimeouts(Duration.ofSeconds(5), Duration.ofSeconds(10)), logs, Duration.ofSeconds(30),
                     notice -> { });
             live = Evaluation.run(plan, arena, done -> { });
             served = serving.get(60, TimeUnit.SECONDS);
