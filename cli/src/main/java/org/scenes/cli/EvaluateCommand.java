@@ -2,7 +2,9 @@ package org.scenes.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -13,12 +15,15 @@ import java.util.function.LongConsumer;
 import me.tongfei.progressbar.ConsoleProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
+import org.scenes.agent.net.ClientOptions;
+import org.scenes.agent.net.ServerAddress;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.evaluate.Arena;
 import org.scenes.evaluate.Comparison;
 import org.scenes.evaluate.Evaluation;
 import org.scenes.evaluate.HtmlReport;
 import org.scenes.evaluate.Learner;
+import org.scenes.evaluate.LiveArena;
 import org.scenes.evaluate.PacedBrain;
 import org.scenes.evaluate.Tables;
 import org.scenes.match.KnowledgeBase;
@@ -35,7 +40,8 @@ import picocli.CommandLine.Spec;
 /** {@code scenes evaluate}: teacher and imitator play the same games; do they play alike? */
 @Command(name = "evaluate", mixinStandardHelpOptions = true,
         description = {"Closed-loop evaluation: the teacher team and an imitating team play the same games (same"
-                + " seeds, start positions, opponent) in the embedded simulator, and their behaviour is compared:"
+                + " seeds, start positions, opponent) in the embedded simulator (or on a soccer server with"
+                + " --server), and their behaviour is compared:"
                 + " action mix and its divergence, kicks and goals per 1000 cycles, distance to the ball, kick-off"
                 + " to first touch, stuck share, agreement with a shadow teacher, and a Turing figure.",
                 "The imitator is learnt from the teacher's own games (simulate, convert, knowledge base, in"
@@ -93,18 +99,30 @@ final class EvaluateCommand implements Callable<Integer> {
     Path report;
 
     @Option(names = "--server", paramLabel = "HOST:PORT",
-            description = "Play on a live server through the UDP runtime (not available yet: embedded simulator only).")
+            description = "Play the games on a live soccer server through the UDP runtime instead of in process:"
+                    + " each game waits until the server takes a new game (scenes server --games N"
+                    + " --games-per-seed 2, or rcssserver restarted in a loop; docs/evaluation.md).")
     String server;
+
+    @Option(names = "--server-logs", paramLabel = "DIR",
+            description = "With --server: the directory the server writes its game logs (.rcg) to; positions, paths,"
+                    + " heat maps and replays come from them. Without it those figures are not measured.")
+    Path serverLogs;
+
+    @Option(names = "--server-wait", paramLabel = "SECONDS", defaultValue = "60",
+            description = "With --server: how long each game waits for the server to accept its first player."
+                    + " Default: ${DEFAULT-VALUE}.")
+    double serverWait;
 
     @Override
     public Integer call() throws IOException {
-        if (server != null) {
-            throw new UsageException("--server: evaluating on a live server is not available yet;"
-                    + " leave it out to use the embedded simulator");
-        }
         Setup setup = setup();
         PrintWriter out = spec.commandLine().getOut();
-        Outcome outcome = evaluate(setup, json ? null : out);
+        Outcome outcome = evaluate(setup, arena(), json ? null : out);
+        outcome.about().put("played on", server == null ? "the embedded simulator, in process, synchronous"
+                : "the soccer server at " + server + (serverLogs == null ? ", without its game logs"
+                        : ", positions from its game logs in " + serverLogs)
+                        + "; the seeds seed the players, the server's noise is its own (scenes server --seed)");
         if (json) {
             Map<String, Object> root = new LinkedHashMap<>();
             root.put("about", outcome.about());
@@ -161,8 +179,39 @@ final class EvaluateCommand implements Callable<Integer> {
                 cycles, seedList, thinkSteps);
     }
 
+    /** The embedded simulator, or with --server the live server. */
+    private Arena arena() {
+        if (server == null) {
+            if (serverLogs != null) {
+                throw new UsageException("--server-logs: needs --server (the embedded simulator's games have positions)");
+            }
+            return Arena.embedded();
+        }
+        ServerAddress address;
+        try {
+            address = ServerAddress.parse(server);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("--server: " + e.getMessage());
+        }
+        if (!(serverWait > 0) || serverWait > 86_400) {
+            throw new UsageException("--server-wait: give seconds between 0 and 86400, not " + serverWait);
+        }
+        if (serverLogs != null && !Files.isDirectory(serverLogs)) {
+            throw new UsageException("--server-logs: " + serverLogs + " is not a directory");
+        }
+        PrintWriter err = spec.commandLine().getErr();
+        // an init is given 5 s: one answered after its player gave up leaves a player on the server
+        return new LiveArena(ClientOptions.of(address, "Teal").withTimeouts(Duration.ofSeconds(5), Duration.ofSeconds(10)),
+                serverLogs, Duration.ofMillis(Math.round(serverWait * 1000)), line -> {
+                    synchronized (err) {
+                        err.println(line);
+                        err.flush();
+                    }
+                });
+    }
+
     /** Learns the imitator and plays the games, with a progress bar per stage on a terminal. */
-    static Outcome evaluate(Setup setup, PrintWriter out) throws IOException {
+    static Outcome evaluate(Setup setup, Arena arena, PrintWriter out) throws IOException {
         Learner.Matching matching;
         try {
             matching = Learner.Matching.of(setup.config(), setup.registry());
@@ -209,9 +258,12 @@ final class EvaluateCommand implements Callable<Integer> {
                 setup.seeds());
         Evaluation.Results results;
         try (ProgressBar bar = bar("Evaluating", plan.totalCycles())) {
-            results = Evaluation.run(plan, Arena.embedded(), step(bar));
+            results = Evaluation.run(plan, arena, step(bar));
         }
         Comparison comparison = Comparison.of(results);
+        if (results.teacher().stream().anyMatch(g -> g.frames().isEmpty())) {
+            about.put("not measured", HtmlReport.NO_POSITIONS);
+        }
         about.put("time", String.format(Locale.ROOT, "%.1f s", (System.nanoTime() - started) / 1e9));
         return new Outcome(about, comparison, results);
     }

@@ -7,9 +7,9 @@ import java.time.Duration;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
+import org.scenes.agent.server.GameSeries;
 import org.scenes.agent.server.ServerConfig;
 import org.scenes.agent.server.ServerResult;
-import org.scenes.agent.server.SoccerServer;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -19,8 +19,9 @@ import picocli.CommandLine.Spec;
 @Command(name = "server", mixinStandardHelpOptions = true,
         description = {"Serve the embedded soccer simulator over UDP, like rcssserver, to any player client"
                 + " (protocol versions 7 to 9 as the real server writes them, 18+ with synch_see)."
-                + " Kick-off when both teams are connected; halves; time over; then it stops and completes its"
-                + " logs (Ctrl-C and SIGTERM do the same). Model and differences: docs/simulator.md."})
+                + " Kick-off when both teams are connected; halves; time over; then it completes its logs and"
+                + " stops, or with --games serves the next game (Ctrl-C and SIGTERM end the game and stop)."
+                + " Model and differences: docs/simulator.md."})
 final class ServerCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -58,8 +59,26 @@ final class ServerCommand implements Callable<Integer> {
             description = "Synchronous mode: how long a player may take to send (done). Default: ${DEFAULT-VALUE}.")
     long thinkTimeout;
 
+    @Option(names = "--games", paramLabel = "N", defaultValue = "1",
+            description = "Serve N games in a row on the same port: after each time over the logs are completed,"
+                    + " the players forgotten, and new teams awaited (as 'scenes evaluate --server' needs)."
+                    + " Default: ${DEFAULT-VALUE}.")
+    int games;
+
+    @Option(names = "--games-per-seed", paramLabel = "K", defaultValue = "1",
+            description = "With --games: K games in a row share a seed, game g (from 0) plays seed --seed + g / K;"
+                    + " 2 serves the teacher's and the imitator's game of each seed of 'scenes evaluate'."
+                    + " Default: ${DEFAULT-VALUE}.")
+    int gamesPerSeed;
+
     @Override
     public Integer call() throws IOException {
+        if (games < 1) {
+            throw new UsageException("--games: must be at least 1, not " + games);
+        }
+        if (gamesPerSeed < 1) {
+            throw new UsageException("--games-per-seed: must be at least 1, not " + gamesPerSeed);
+        }
         if (cycles < 1) {
             throw new UsageException("--cycles: must be at least 1, not " + cycles);
         }
@@ -78,35 +97,34 @@ final class ServerCommand implements Callable<Integer> {
                 .withTimings(ServerConfig.DEFAULT_SETTLE, Duration.ofMillis(thinkTimeout));
         PrintWriter out = spec.commandLine().getOut();
         CountDownLatch finished = new CountDownLatch(1);
-        try (SoccerServer server = SoccerServer.open(config, line -> {
+        GameSeries series = new GameSeries(config, games, gamesPerSeed, line -> {
             out.println(line);
             out.flush();
-        })) {
-            out.printf(Locale.ROOT, "Serving on UDP %s:%d (%s, %d cycles, seed %d)%n", host, server.port(),
-                    synch ? "synchronous" : "real time", cycles, seed);
-            out.flush();
-            // Ctrl-C and SIGTERM end the game like time over: the logs are completed before the JVM exits.
-            Thread hook = new Thread(() -> {
-                server.stop();
-                try {
-                    finished.await();
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
-            }, "server-stop");
-            Runtime.getRuntime().addShutdownHook(hook);
-            ServerResult result;
+        });
+        // Ctrl-C and SIGTERM end the game like time over: the logs are completed before the JVM exits.
+        Thread hook = new Thread(() -> {
+            series.stop();
             try {
-                result = server.run(frame -> { });
-            } finally {
-                finished.countDown();
+                finished.await();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
             }
-            try {
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException e) {
-                // shutting down already: the hook is running
-            }
-            printSummary(out, result);
+        }, "server-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        try {
+            series.run(started -> {
+                String game = games == 1 ? "" : String.format(Locale.ROOT, "game %d of %d, ", started[0], games);
+                out.printf(Locale.ROOT, "Serving on UDP %s:%d (%s%s, %d cycles, seed %d)%n", host, started[1], game,
+                        synch ? "synchronous" : "real time", cycles, series.seed(started[0] - 1));
+                out.flush();
+            }, result -> printSummary(out, result), frame -> { });
+        } finally {
+            finished.countDown();
+        }
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException e) {
+            // shutting down already: the hook is running
         }
         return ExitCodes.OK;
     }

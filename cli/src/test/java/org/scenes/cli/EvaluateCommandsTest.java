@@ -38,10 +38,48 @@ class EvaluateCommandsTest {
     }
 
     @Test
-    void evaluateRefusesTheServerForNowAndBadNumbers() {
-        assertEquals(ExitCodes.USAGE, cli.run("evaluate", "--server", "localhost:6000"));
+    void evaluatePlaysOnAServerServingOneGameAfterAnother() throws Exception {
+        int port;
+        try (java.net.DatagramSocket probe = new java.net.DatagramSocket(0)) {
+            port = probe.getLocalPort();
+        }
+        Path logs = Files.createDirectories(dir.resolve("logs"));
+        CommandRunner server = new CommandRunner();
+        int[] serverStatus = {-1};
+        Thread serving = new Thread(() -> serverStatus[0] = server.run("server", "--port", port, "--synch", "--games", "2",
+                "--games-per-seed", "2", "--seed", "7", "--cycles", "100", "--record", logs));
+        serving.start();
+        int status = cli.run("evaluate", "--server", "127.0.0.1:" + port, "--server-logs", logs, "--server-wait", "30",
+                "--metric", "ball-goal", "--players", "1", "--opponent", "krislet:1", "--cycles", "100", "--seeds", "1",
+                "--first-seed", "7", "--train-games", "1", "--json");
+        serving.join(60_000);
+        assertEquals(ExitCodes.OK, status, cli.err());
+        assertEquals(ExitCodes.OK, serverStatus[0], server.err());
+        assertTrue(server.out().contains("game 2 of 2") && server.out().contains("seed 7"), server.out());
+        JsonNode root = ConfigFiles.JSON.readTree(cli.out());
+        assertTrue(root.at("/about/played on").asText().contains("127.0.0.1:" + port), root.toString());
+        assertTrue(root.at("/about/not measured").isMissingNode(), "positions from the game log: " + root.get("about"));
+        double answered = root.at("/figures/answered/imitator/mean").asDouble();
+        assertTrue(answered > 0.5 && answered <= 1, "sees answered " + answered);
+    }
+
+    @Test
+    void evaluateOnAServerRefusesBadOptionsAndSaysWhenNoServerTakesTheGame() throws Exception {
+        assertEquals(ExitCodes.USAGE, cli.run("evaluate", "--server", "localhost"));
         assertTrue(cli.err().contains("--server"), cli.err());
+        assertEquals(ExitCodes.USAGE, cli.run("evaluate", "--server-logs", dir));
+        assertTrue(cli.err().contains("--server-logs: needs --server"), cli.err());
+        assertEquals(ExitCodes.USAGE, cli.run("evaluate", "--server", "localhost:6000", "--server-wait", "0"));
         assertEquals(ExitCodes.USAGE, new CommandRunner().run("evaluate", "--seeds", "0"));
+        assertEquals(ExitCodes.USAGE, cli.run("server", "--games", "0"));
+        int port;
+        try (java.net.DatagramSocket probe = new java.net.DatagramSocket(0)) {
+            port = probe.getLocalPort();
+        }
+        assertEquals(ExitCodes.FAILURE, cli.run("evaluate", "--server", "127.0.0.1:" + port, "--server-wait", "1",
+                "--metric", "ball-goal", "--players", "1", "--opponent", "krislet:1", "--cycles", "100", "--seeds", "1",
+                "--train-games", "1"));
+        assertTrue(cli.err().contains("no game on 127.0.0.1:" + port + " accepted Teal within 1 s"), cli.err());
     }
 
     @Test

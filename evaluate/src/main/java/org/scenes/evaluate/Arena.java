@@ -9,10 +9,10 @@ import org.scenes.agent.sim.Simulator;
 import org.scenes.gamelog.GameFrame;
 
 /**
- * Where the games of an evaluation are played. The embedded simulator is the one there is; a
- * live server reached through the UDP runtime ({@code scenes evaluate --server HOST:PORT}) is
- * meant to be another implementation: it connects the same brains, and its frames come from the
- * server's game log or a monitor.
+ * Where the games of an evaluation are played: the embedded simulator ({@link #embedded}), or a
+ * live server reached through the UDP runtime ({@link LiveArena}, {@code scenes evaluate
+ * --server HOST:PORT}), which connects the same brains and takes its frames from the server's
+ * game log.
  */
 @FunctionalInterface
 public interface Arena {

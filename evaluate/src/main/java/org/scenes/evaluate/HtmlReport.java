@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.stream.Stream;
 import org.scenes.files.AtomicOutput;
 
 /**
@@ -18,6 +19,12 @@ import org.scenes.files.AtomicOutput;
 public final class HtmlReport {
     /** Game cycles of the first seed's game drawn as trajectories. */
     static final int TRAJECTORY_CYCLES = 1200;
+    /** Why a report of games without a game log has no pitch. */
+    public static final String NO_POSITIONS = "Not measured: mean distance to the ball, kick-off to first touch,"
+            + " the paths, the ball heat maps and the replays. They need the players' and the ball's positions,"
+            + " which only the server's game log has: give the directory the server writes its .rcg files to"
+            + " (--server-logs DIR; scenes server --record DIR). The Turing figure then sees only the players'"
+            + " commands.";
 
     private HtmlReport() {
     }
@@ -64,26 +71,34 @@ public final class HtmlReport {
                         + " %d cycles of each player (%d teacher and %d imitator windows), trained on the other seeds'"
                         + " games and tested on the held-out seed's (%d folds); balanced accuracy %.1f%% &plusmn; %.1f."
                         + " It sees: %s.</p>\n", TuringTest.WINDOW, turing.teacherWindows(), turing.imitatorWindows(),
-                turing.folds(), 100 * turing.accuracy(), 100 * turing.spread(), String.join(", ", TuringTest.FEATURES)));
-        html.append("<h2>On the pitch</h2>\n<div class=\"row\">\n");
+                turing.folds(), 100 * turing.accuracy(), 100 * turing.spread(), String.join(", ", turing.features())));
         PlayedGame teacherGame = results.teacher().get(0);
         PlayedGame imitatorGame = results.imitator().get(0);
-        html.append("<div>").append(ReportCharts.svg(ReportCharts.trajectories("Teacher: paths, first "
-                + TRAJECTORY_CYCLES + " cycles, seed " + teacherGame.seed(), teacherGame.frames(), TRAJECTORY_CYCLES),
-                600, 455)).append("</div>\n");
-        html.append("<div>").append(ReportCharts.svg(ReportCharts.trajectories("Imitator: paths, first "
-                + TRAJECTORY_CYCLES + " cycles, seed " + imitatorGame.seed(), imitatorGame.frames(), TRAJECTORY_CYCLES),
-                600, 455)).append("</div>\n");
-        html.append("<div>").append(ReportCharts.svg(ReportCharts.heatMap("Teacher: where the ball was (play on, all seeds)",
-                results.teacher()), 600, 425)).append("</div>\n");
-        html.append("<div>").append(ReportCharts.svg(ReportCharts.heatMap("Imitator: where the ball was (play on, all seeds)",
-                results.imitator()), 600, 425)).append("</div>\n</div>\n");
-        html.append("<h2>Replay: teacher, seed ").append(teacherGame.seed()).append(", ")
-                .append(score(teacherGame)).append("</h2>\n").append(ReplayPage.section("replay-teacher",
-                        teacherGame.frames()));
-        html.append("<h2>Replay: imitator, seed ").append(imitatorGame.seed()).append(", ")
-                .append(score(imitatorGame)).append("</h2>\n").append(ReplayPage.section("replay-imitator",
-                        imitatorGame.frames()));
+        boolean positions = Stream.concat(results.teacher().stream(), results.imitator().stream())
+                .noneMatch(g -> g.frames().isEmpty());
+        html.append("<h2>On the pitch</h2>\n");
+        if (!positions) {
+            html.append("<p class=\"note\">").append(ReplayPage.escape(NO_POSITIONS)).append("</p>\n");
+        } else {
+            html.append("<div class=\"row\">\n");
+            html.append("<div>").append(ReportCharts.svg(ReportCharts.trajectories("Teacher: paths, first "
+                    + TRAJECTORY_CYCLES + " cycles, seed " + teacherGame.seed(), teacherGame.frames(),
+                    TRAJECTORY_CYCLES), 600, 455)).append("</div>\n");
+            html.append("<div>").append(ReportCharts.svg(ReportCharts.trajectories("Imitator: paths, first "
+                    + TRAJECTORY_CYCLES + " cycles, seed " + imitatorGame.seed(), imitatorGame.frames(),
+                    TRAJECTORY_CYCLES), 600, 455)).append("</div>\n");
+            html.append("<div>").append(ReportCharts.svg(ReportCharts.heatMap(
+                    "Teacher: where the ball was (play on, all seeds)", results.teacher()), 600, 425)).append("</div>\n");
+            html.append("<div>").append(ReportCharts.svg(ReportCharts.heatMap(
+                    "Imitator: where the ball was (play on, all seeds)", results.imitator()), 600, 425))
+                    .append("</div>\n</div>\n");
+            html.append("<h2>Replay: teacher, seed ").append(teacherGame.seed()).append(", ")
+                    .append(score(teacherGame)).append("</h2>\n").append(ReplayPage.section("replay-teacher",
+                            teacherGame.frames()));
+            html.append("<h2>Replay: imitator, seed ").append(imitatorGame.seed()).append(", ")
+                    .append(score(imitatorGame)).append("</h2>\n").append(ReplayPage.section("replay-imitator",
+                            imitatorGame.frames()));
+        }
         html.append("<script>\n").append(ReplayPage.script()).append("</script>\n</body>\n</html>\n");
         try (AtomicOutput output = AtomicOutput.create(file)) {
             output.stream().write(html.toString().getBytes(StandardCharsets.UTF_8));

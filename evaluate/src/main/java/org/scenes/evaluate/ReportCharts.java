@@ -39,6 +39,8 @@ final class ReportCharts {
     private static final double HALF_X = 52.5;
     private static final double HALF_Y = 34;
     private static final double HEAT_CELL = 3;
+    /** Frames per point of a drawn path. */
+    static final int PATH_STEP = 3;
     private static int charts;
 
     private ReportCharts() {
@@ -49,8 +51,15 @@ final class ReportCharts {
         System.setProperty("java.awt.headless", "true");
         SVGGraphics2D graphics = new SVGGraphics2D(width, height);
         graphics.setDefsKeyPrefix("chart" + (++charts) + "-");
+        // a tenth of a pixel is finer than any screen shows; the default 6 decimals triple the page
+        graphics.setGeomDoubleConverter(ReportCharts::tenths);
         chart.draw(graphics, new Rectangle(width, height));
         return graphics.getSVGElement();
+    }
+
+    static String tenths(double value) {
+        long tenths = Math.round(value * 10);
+        return tenths % 10 == 0 ? Long.toString(tenths / 10) : Double.toString(tenths / 10.0);
     }
 
     /** A row of bars: each category a figure, teacher and imitator side by side with their spread over seeds. */
@@ -130,7 +139,10 @@ final class ReportCharts {
         return chart;
     }
 
-    /** Each left player's path over the first {@code cycles} frames of a game, on the pitch. */
+    /**
+     * Each left player's path over the first {@code cycles} frames of a game, on the pitch, a
+     * point every {@link #PATH_STEP} frames (a player runs at most about 1 m a cycle).
+     */
     static JFreeChart trajectories(String title, List<GameFrame> frames, int cycles) {
         XYSeriesCollection data = new XYSeriesCollection();
         java.util.Map<Integer, XYSeries> byPlayer = new java.util.TreeMap<>();
@@ -138,6 +150,9 @@ final class ReportCharts {
         for (GameFrame frame : frames) {
             if (count++ > cycles) {
                 break;
+            }
+            if ((count - 1) % PATH_STEP != 0) {
+                continue;
             }
             for (PlayerState p : frame.players()) {
                 if (p.side() == Side.LEFT) {
@@ -147,6 +162,8 @@ final class ReportCharts {
         }
         byPlayer.values().forEach(data::addSeries);
         XYLineAndShapeRenderer renderer = new XYLineAndShapeRenderer(true, false);
+        // one SVG path per player rather than an element per segment
+        renderer.setDrawSeriesLineAsPath(true);
         for (int i = 0; i < byPlayer.size(); i++) {
             renderer.setSeriesStroke(i, new BasicStroke(1.2f));
         }
@@ -173,17 +190,28 @@ final class ReportCharts {
                 total++;
             }
         }
-        double[] xs = new double[columns * rows];
-        double[] ys = new double[columns * rows];
-        double[] zs = new double[columns * rows];
+        // only the cells the ball visited: the empty ones are the plot's white background
+        int visited = 0;
+        for (double[] column : counts) {
+            for (double count : column) {
+                visited += count > 0 ? 1 : 0;
+            }
+        }
+        double[] xs = new double[visited];
+        double[] ys = new double[visited];
+        double[] zs = new double[visited];
         double max = 0;
+        int i = 0;
         for (int c = 0; c < columns; c++) {
             for (int r = 0; r < rows; r++) {
-                int i = c * rows + r;
+                if (counts[c][r] == 0) {
+                    continue;
+                }
                 xs[i] = -HALF_X - 5 + (c + 0.5) * HEAT_CELL;
                 ys[i] = -HALF_Y - 5 + (r + 0.5) * HEAT_CELL;
-                zs[i] = total == 0 ? 0 : 100 * counts[c][r] / total;
+                zs[i] = 100 * counts[c][r] / total;
                 max = Math.max(max, zs[i]);
+                i++;
             }
         }
         DefaultXYZDataset data = new DefaultXYZDataset();

@@ -88,7 +88,7 @@ public final class Tables {
         t.put("teacherWindows", turing.teacherWindows());
         t.put("imitatorWindows", turing.imitatorWindows());
         t.put("windowCycles", TuringTest.WINDOW);
-        t.put("features", TuringTest.FEATURES);
+        t.put("features", turing.features());
         root.put("turing", t);
         root.put("targets", comparison.targets().stream()
                 .map(x -> Map.of("target", x.what(), "reached", x.reached(), "met", x.met())).toList());

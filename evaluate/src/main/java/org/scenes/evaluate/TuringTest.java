@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.stream.Stream;
 import org.scenes.gamelog.GameFrame;
 import org.scenes.gamelog.PlayerState;
 import org.scenes.protocol.CommandType;
@@ -26,25 +27,39 @@ public final class TuringTest {
             "share of cycles closing on the ball", "dash share", "turn share", "kick share",
             "answered share of sees", "mean |turn moment|", "mean dash power");
 
-    /** The accuracy over held-out folds and its spread, and how many windows each side gave. */
-    public record Outcome(double accuracy, double spread, int teacherWindows, int imitatorWindows, int folds) {
+    /**
+     * What it sees when the games have no positions (played on a server without its game log):
+     * the last six {@link #FEATURES}, those the players' own commands give.
+     */
+    public static final List<String> TRAFFIC_FEATURES = FEATURES.subList(5, FEATURES.size());
+
+    /**
+     * The accuracy over held-out folds and its spread, how many windows each side gave, and the
+     * features the classifier saw.
+     */
+    public record Outcome(double accuracy, double spread, int teacherWindows, int imitatorWindows, int folds,
+                          List<String> features) {
+        public Outcome {
+            features = List.copyOf(features);
+        }
     }
 
     private TuringTest() {
     }
 
     public static Outcome run(List<PlayedGame> teacher, List<PlayedGame> imitator) {
+        boolean positions = Stream.concat(teacher.stream(), imitator.stream()).noneMatch(g -> g.frames().isEmpty());
         Map<Long, List<double[]>> teacherBySeed = new HashMap<>();
         Map<Long, List<double[]>> imitatorBySeed = new HashMap<>();
         int teacherCount = 0;
         int imitatorCount = 0;
         for (PlayedGame game : teacher) {
-            List<double[]> windows = windows(game);
+            List<double[]> windows = windows(game, positions);
             teacherBySeed.computeIfAbsent(game.seed(), s -> new ArrayList<>()).addAll(windows);
             teacherCount += windows.size();
         }
         for (PlayedGame game : imitator) {
-            List<double[]> windows = windows(game);
+            List<double[]> windows = windows(game, positions);
             imitatorBySeed.computeIfAbsent(game.seed(), s -> new ArrayList<>()).addAll(windows);
             imitatorCount += windows.size();
         }
@@ -80,7 +95,8 @@ public final class TuringTest {
         }
         double mean = accuracies.stream().mapToDouble(Double::doubleValue).average().orElse(Double.NaN);
         double spread = Spread.of(accuracies.stream().mapToDouble(Double::doubleValue).toArray()).sd();
-        return new Outcome(mean, spread, teacherCount, imitatorCount, accuracies.size());
+        return new Outcome(mean, spread, teacherCount, imitatorCount, accuracies.size(),
+                positions ? FEATURES : TRAFFIC_FEATURES);
     }
 
     private static void split(List<double[]> all, int fold, int folds, List<double[]> train, List<double[]> test) {
@@ -101,8 +117,11 @@ public final class TuringTest {
         accuracies.add((teacherRight + imitatorRight) / 2);
     }
 
-    /** The feature vectors of one game's windows, every player of the game's side. */
-    static List<double[]> windows(PlayedGame game) {
+    /**
+     * The feature vectors of one game's windows, every player of the game's side: all the
+     * {@link #FEATURES} with {@code positions}, else the {@link #TRAFFIC_FEATURES}.
+     */
+    static List<double[]> windows(PlayedGame game, boolean positions) {
         int players = game.traces().size();
         int windowCount = game.result().cycles() / WINDOW + 1;
         double[][][] sums = new double[players][windowCount][14];
@@ -159,15 +178,25 @@ public final class TuringTest {
         List<double[]> windows = new ArrayList<>();
         for (double[][] player : sums) {
             for (double[] s : player) {
-                if (s[0] < WINDOW / 2.0 || s[6] < 1) {
-                    continue; // too little play in this window to say anything
+                // too little play in this window to say anything: under half of it in play on (by
+                // frames), or without frames under a third of its cycles in sees (about half its sees)
+                if (positions ? s[0] < WINDOW / 2.0 || s[6] < 1 : s[6] < WINDOW / 3.0) {
+                    continue;
+                }
+                double answered = Math.max(1, s[7]);
+                double[] traffic = {s[8] / answered, s[9] / answered, s[10] / answered, s[7] / s[6],
+                        s[9] == 0 ? 0 : s[12] / s[9], s[8] == 0 ? 0 : Math.min(100, s[11] / s[8])};
+                if (!positions) {
+                    windows.add(traffic);
+                    continue;
                 }
                 double n = s[0];
                 double mean = s[1] / n;
-                double answered = Math.max(1, s[7]);
-                windows.add(new double[] {mean, Math.sqrt(Math.max(0, s[2] / n - mean * mean)), s[3] / n, s[4] / n,
-                        s[5] / n, s[8] / answered, s[9] / answered, s[10] / answered, s[7] / s[6],
-                        s[9] == 0 ? 0 : s[12] / s[9], s[8] == 0 ? 0 : Math.min(100, s[11] / s[8])});
+                double[] all = new double[FEATURES.size()];
+                System.arraycopy(new double[] {mean, Math.sqrt(Math.max(0, s[2] / n - mean * mean)), s[3] / n,
+                        s[4] / n, s[5] / n}, 0, all, 0, 5);
+                System.arraycopy(traffic, 0, all, 5, traffic.length);
+                windows.add(all);
             }
         }
         return windows;

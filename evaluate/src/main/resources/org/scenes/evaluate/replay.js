@@ -3,9 +3,43 @@
 (function () {
   "use strict";
   var PITCH_X = 52.5, PITCH_Y = 34, MARGIN = 5, GOAL = 7.01;
+  // Each track is written step by step: one character of STEPS for a step of -30 to 30, or
+  // "~STEP;" (ReplayPage.data writes them).
+  var STEPS = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxy", RANGE = 30;
+
+  function decode(text, count, scale) {
+    var values = new Float64Array(count), value = 0, n = 0, i = 0;
+    while (i < text.length && n < count) {
+      var c = text.charAt(i);
+      if (c === "~") {
+        var end = text.indexOf(";", i);
+        value += Number(text.substring(i + 1, end));
+        i = end + 1;
+      } else {
+        value += STEPS.indexOf(c) - RANGE;
+        i++;
+      }
+      values[n++] = value * scale;
+    }
+    return values;
+  }
 
   function setup(root) {
     var data = JSON.parse(root.querySelector("script.replay-data").textContent);
+    var count = data.frames;
+    var time = decode(data.time, count, 1);
+    var ballX = decode(data.ball[0], count, 0.1), ballY = decode(data.ball[1], count, 0.1);
+    var tracks = data.tracks.map(function (t) {
+      return [decode(t[0], count, 0.1), decode(t[1], count, 0.1), decode(t[2], count, 1)];
+    });
+    // the play mode and score of every frame, from the frames where they change
+    var eventOf = new Int32Array(count);
+    for (var e = 0; e < data.events.length; e++) {
+      var until = e + 1 < data.events.length ? data.events[e + 1][0] : count;
+      for (var f = data.events[e][0]; f < until; f++) {
+        eventOf[f] = e;
+      }
+    }
     var canvas = root.querySelector("canvas");
     var slider = root.querySelector("input.replay-cycle");
     var button = root.querySelector("button.replay-play");
@@ -14,7 +48,7 @@
     var context = canvas.getContext("2d");
     var scale = canvas.width / (2 * (PITCH_X + MARGIN));
     var timer = null;
-    slider.max = String(data.frames.length - 1);
+    slider.max = String(count - 1);
 
     function sx(x) { return (x + PITCH_X + MARGIN) * scale; }
     function sy(y) { return (y + PITCH_Y + MARGIN) * scale; }
@@ -42,11 +76,10 @@
     }
 
     function draw(index) {
-      var frame = data.frames[index];
+      var event = data.events[eventOf[index]];
       pitch();
-      var players = frame[6];
       for (var i = 0; i < data.players.length; i++) {
-        var x = players[3 * i], y = players[3 * i + 1], body = players[3 * i + 2] * Math.PI / 180;
+        var x = tracks[i][0][index], y = tracks[i][1][index], body = tracks[i][2][index] * Math.PI / 180;
         var left = data.players[i][0] === "l";
         context.fillStyle = left ? "#f2c200" : "#2f6fd6";
         context.beginPath();
@@ -68,11 +101,12 @@
       context.fillStyle = "#ffffff";
       context.strokeStyle = "#000000";
       context.beginPath();
-      context.arc(sx(frame[4]), sy(frame[5]), 0.55 * scale, 0, 2 * Math.PI);
+      context.arc(sx(ballX[index]), sy(ballY[index]), 0.55 * scale, 0, 2 * Math.PI);
       context.fill();
       context.stroke();
-      status.textContent = "cycle " + frame[0] + " \u00b7 " + data.modes[frame[1]] + " \u00b7 "
-          + data.left + " " + frame[2] + " : " + frame[3] + " " + data.right;
+      status.textContent = "cycle " + time[index] + " \u00b7 " + data.modes[event[1]] + " \u00b7 "
+          + data.left + " " + event[2] + " : " + event[3] + " " + data.right
+          + " \u00b7 ball " + ballX[index].toFixed(1) + " " + ballY[index].toFixed(1);
       slider.value = String(index);
     }
 
@@ -92,8 +126,8 @@
       button.textContent = "\u275a\u275a pause";
       timer = setInterval(function () {
         var next = Number(slider.value) + Number(speed.value);
-        if (next >= data.frames.length) {
-          draw(data.frames.length - 1);
+        if (next >= count) {
+          draw(count - 1);
           stop();
         } else {
           draw(next);

@@ -56,7 +56,8 @@ class BrowserTest {
         String dom = open(page, "report.png");
         assertEquals(2, count(dom, "data-ready=\"true\""), "both replays drawn");
         assertTrue(dom.contains("<svg"), "the charts are inline SVG");
-        Matcher status = Pattern.compile("class=\"replay-status\">cycle 0 · before_kick_off · Teal 0 : 0 Amber<").matcher(dom);
+        Matcher status = Pattern.compile("class=\"replay-status\">cycle 0 · before_kick_off · Teal 0 : 0 Amber · ball 0.0 0.0<")
+                .matcher(dom);
         assertTrue(status.find(), "the replay shows the first frame's cycle, mode and score");
     }
 
@@ -72,6 +73,21 @@ class BrowserTest {
         String dom = open(page, "replay.png");
         assertEquals(1, count(dom, "data-ready=\"true\""));
         assertTrue(dom.contains("max=\"" + (frames.size() - 1) + "\""), "the slider spans every frame");
+        // The compact tracks decode to the game: move the slider to frames along the game and read
+        // what the page shows of each (the player's own script, as a user's slider would).
+        for (int index : List.of(frames.size() / 3, frames.size() - 1)) {
+            String html = Files.readString(page).replace("</body>", "<script>var s = document.querySelector("
+                    + "'input.replay-cycle'); s.value = '" + index + "'; s.dispatchEvent(new Event('input'));</script>"
+                    + "</body>");
+            Path moved = directory.resolve("moved-" + index + ".html");
+            Files.writeString(moved, html);
+            org.scenes.gamelog.GameFrame frame = frames.get(index);
+            String expected = String.format(java.util.Locale.ROOT, "cycle %d · %s · Teal %d : %d Amber · ball %.1f %.1f",
+                    frame.time(), frame.playMode(), frame.scoreLeft(), frame.scoreRight(), frame.ball().x(),
+                    frame.ball().y()).replace("-0.0", "0.0");
+            assertTrue(open(moved, "replay-" + index + ".png").contains("class=\"replay-status\">" + expected + "<"),
+                    "frame " + index + " shows " + expected);
+        }
     }
 
     /** Opens the page headless; fails on any console message; saves a screenshot; returns the DOM after the scripts ran. */
