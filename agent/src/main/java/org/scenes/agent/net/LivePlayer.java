@@ -57,7 +57,7 @@ import org.scenes.protocol.ServerNotice;
  * percentile describe the same calls.
  *
  * <p><b>Kick-off positions.</b> The brain's own {@code move} before kick-off is remembered. The
- * real server does not put players back after a goal (the embedded simulator does), so after the
+ * real server puts only players in the wrong half back after a goal, so after the
  * referee's {@code goal_*}, and after {@code half_time}, the player sends that move again at the
  * start of the next two cycles: the server executes the first body command of a cycle, and a
  * cycle's {@code see} may come before its {@code sense_body}. A brain that never moved gets a

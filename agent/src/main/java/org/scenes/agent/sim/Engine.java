@@ -65,7 +65,7 @@ public final class Engine {
         this.world = new World(params, seed);
         this.physics = new Physics(world);
         this.vision = new Vision(world);
-        this.referee = new Referee(world, cycles);
+        this.referee = new Referee(world, cycles, physics);
     }
 
     /** Records the game ({@code .rcg} and {@code .rcl}) from now on. */
@@ -209,7 +209,7 @@ public final class Engine {
 
     /** Whether the first kick-off has not happened yet. */
     public boolean beforeKickOff() {
-        return world.mode == PlayMode.BEFORE_KICK_OFF;
+        return world.mode == PlayMode.BEFORE_KICK_OFF && world.time == 0;
     }
 
     public int scoreLeft() {
@@ -294,7 +294,7 @@ public final class Engine {
         for (Seat seat : seats()) {
             executePending(seat);
         }
-        if (world.mode.clockRuns) {
+        if (world.mode.objectsMove) {
             physics.step();
         }
         for (Seat seat : seats()) {

@@ -8,6 +8,11 @@ class MovingObject {
     double vy;
     double ax;
     double ay;
+    /** This cycle's collisions: the sum of the positions they ask for, how many, whether any. */
+    double collisionX;
+    double collisionY;
+    int collisionCount;
+    boolean collided;
 
     final void place(double newX, double newY) {
         x = newX;
@@ -16,6 +21,34 @@ class MovingObject {
         vy = 0;
         ax = 0;
         ay = 0;
+    }
+
+    /** A collision asks this object to stand at (x, y); several are averaged. */
+    final void collide(double atX, double atY) {
+        collisionX += atX;
+        collisionY += atY;
+        collisionCount++;
+        collided = true;
+    }
+
+    /** Moves to the mean position the collisions asked for, and forgets them. */
+    final void moveToCollisionPosition() {
+        if (collisionCount > 0) {
+            x = collisionX / collisionCount;
+            y = collisionY / collisionCount;
+        }
+        collisionX = 0;
+        collisionY = 0;
+        collisionCount = 0;
+    }
+
+    /** After the cycle's collisions: an object that collided bounces back at a tenth of its speed. */
+    final void bounceIfCollided() {
+        if (collided) {
+            vx *= -0.1;
+            vy *= -0.1;
+            collided = false;
+        }
     }
 
     final double speed() {

@@ -27,8 +27,8 @@ final class Physics {
         }
         player.stamina -= cost;
         player.dashes++;
-        if (!world.mode.clockRuns) {
-            return; // dashes before kick-off and during pauses cost stamina but do not move
+        if (!world.mode.objectsMove) {
+            return; // dashes before kick-off cost stamina but do not move
         }
         double acceleration = power * p.dashPowerRate() * player.effort;
         double angle = Math.toRadians(player.body);
@@ -37,7 +37,9 @@ final class Physics {
 
     void turn(Player player, double moment) {
         moment = clamp(moment, p.minMoment(), p.maxMoment());
-        player.body = Numbers.normalize(player.body + moment / (1 + p.inertiaMoment() * player.speed()));
+        // The server scales each turn by a random factor in [1 - player_rand, 1 + player_rand].
+        double noisy = (1 + world.noise(p.playerRand())) * moment;
+        player.body = Numbers.normalize(player.body + noisy / (1 + p.inertiaMoment() * player.speed()));
         player.turns++;
     }
 
@@ -73,11 +75,14 @@ final class Physics {
         double rate = 1 - 0.25 * dirDiff / 180 - 0.25 * gap / p.kickableMargin();
         double effective = power * p.kickPowerRate() * rate;
         double angle = Math.toRadians(player.body + direction);
-        // Kick noise grows with power and with a badly placed ball.
-        double noise = p.kickRand() * Math.abs(power) / p.maxPower()
-                * (0.5 + 0.25 * (dirDiff / 180 + gap / p.kickableMargin()));
-        ball.accelerate(effective * Math.cos(angle) + world.noise(noise),
-                effective * Math.sin(angle) + world.noise(noise), p.ballAccelMax());
+        // The server's kick noise: up to kick_rand times the power's share, times the sum of a
+        // placement rate (0.5 to 1, worse for a ball off the body's direction or far) and a speed
+        // rate (0.5 to 1, worse for a fast ball), as a vector of random length and direction.
+        double placement = 0.5 + 0.25 * (dirDiff / 180 + gap / p.kickableMargin());
+        double ballSpeed = 0.5 + 0.5 * ball.speed() / (p.ballSpeedMax() * p.ballDecay());
+        double[] noise = world.polarNoise(p.kickRand() * Math.abs(power) / p.maxPower() * (placement + ballSpeed));
+        ball.accelerate(effective * Math.cos(angle) + noise[0], effective * Math.sin(angle) + noise[1],
+                p.ballAccelMax());
         return true;
     }
 
@@ -90,71 +95,101 @@ final class Physics {
             player.x = clamp(player.x, -limitX(), limitX());
             player.y = clamp(player.y, -limitY(), limitY());
         }
-        List<Player> players = world.players;
-        for (int i = 0; i < players.size(); i++) {
-            for (int j = i + 1; j < players.size(); j++) {
-                separate(players.get(i), players.get(j));
-            }
-        }
-        for (Player player : players) {
-            collide(player, ball);
-        }
-    }
-
-    /** Two overlapping players are pushed apart, each by half the overlap, and both bounce. */
-    private void separate(Player a, Player b) {
-        double minimum = 2 * p.playerSize();
-        double dx = b.x - a.x;
-        double dy = b.y - a.y;
-        double distance = Math.hypot(dx, dy);
-        if (distance >= minimum) {
-            return;
-        }
-        if (distance < 1e-9) {
-            // Exactly on top of each other: part them along the first one's body direction.
-            dx = Math.cos(Math.toRadians(a.body));
-            dy = Math.sin(Math.toRadians(a.body));
-            distance = 1;
-            a.x -= dx * minimum / 2;
-            a.y -= dy * minimum / 2;
-            b.x = a.x + dx * minimum;
-            b.y = a.y + dy * minimum;
-        } else {
-            double push = (minimum - distance) / 2 / distance;
-            a.x -= dx * push;
-            a.y -= dy * push;
-            b.x += dx * push;
-            b.y += dy * push;
-        }
-        a.vx *= -0.1;
-        a.vy *= -0.1;
-        b.vx *= -0.1;
-        b.vy *= -0.1;
+        collisions();
     }
 
     /**
-     * A ball overlapping a player is put back at the player's edge and both bounce, as on the
-     * server (velocities times -0.1).
+     * Overlaps resolved as the server resolves them, up to ten rounds while any remain: each round
+     * every overlapping pair (ball and player, then player and player) asks both to stand just
+     * apart, each object moves to the mean of what was asked of it; at the end everything that
+     * collided keeps a tenth of its speed, backwards. A ball touching a player counts as the
+     * player's touch for the referee. Outside play on the ball stays and the player steps off it.
      */
-    private void collide(Player player, Ball ball) {
-        double minimum = p.playerSize() + p.ballSize();
-        double dx = ball.x - player.x;
-        double dy = ball.y - player.y;
-        double distance = Math.hypot(dx, dy);
-        if (distance >= minimum) {
-            return;
+    void collisions() {
+        Ball ball = world.ball;
+        List<Player> players = world.players;
+        double ballReach = p.ballSize() + p.playerSize();
+        double playerReach = 2 * p.playerSize();
+        boolean collided = true;
+        for (int round = 0; round < MAX_COLLISION_ROUNDS && collided; round++) {
+            collided = false;
+            for (Player player : players) {
+                if (distance2(ball, player) < ballReach * ballReach) {
+                    collided = true;
+                    world.lastTouch = player.side;
+                    if (world.mode == PlayMode.PLAY_ON) {
+                        separate(ball, player, ballReach);
+                    } else {
+                        stepOff(ball, player, ballReach);
+                    }
+                }
+            }
+            for (int i = 0; i < players.size(); i++) {
+                for (int j = i + 1; j < players.size(); j++) {
+                    if (distance2(players.get(i), players.get(j)) < playerReach * playerReach) {
+                        collided = true;
+                        separate(players.get(i), players.get(j), playerReach);
+                    }
+                }
+            }
+            ball.moveToCollisionPosition();
+            for (Player player : players) {
+                player.moveToCollisionPosition();
+            }
         }
-        if (distance < 1e-9) {
-            dx = Math.cos(Math.toRadians(player.body));
-            dy = Math.sin(Math.toRadians(player.body));
-            distance = 1;
+        ball.bounceIfCollided();
+        for (Player player : players) {
+            player.bounceIfCollided();
         }
-        ball.x = player.x + dx / distance * minimum;
-        ball.y = player.y + dy / distance * minimum;
-        ball.vx *= -0.1;
-        ball.vy *= -0.1;
-        player.vx *= -0.1;
-        player.vy *= -0.1;
+    }
+
+    /** The server's tiny margin that leaves two separated objects just apart. */
+    private static final double EPS = 1e-10;
+    private static final int MAX_COLLISION_ROUNDS = 10;
+
+    private static double distance2(MovingObject a, MovingObject b) {
+        double dx = a.x - b.x;
+        double dy = a.y - b.y;
+        return dx * dx + dy * dy;
+    }
+
+    /**
+     * Two overlapping objects should stand {@code reach} apart, symmetrically about their midpoint
+     * (in a random direction when they coincide).
+     */
+    private void separate(MovingObject a, MovingObject b, double reach) {
+        double midX = (a.x + b.x) / 2;
+        double midY = (a.y + b.y) / 2;
+        double dx = a.x - midX;
+        double dy = a.y - midY;
+        double half = reach / 2 + EPS;
+        double length = Math.hypot(dx, dy);
+        if (length < EPS) {
+            double angle = (world.random.nextDouble() * 2 - 1) * Math.PI;
+            dx = Math.cos(angle);
+            dy = Math.sin(angle);
+            length = 1;
+        }
+        double ux = dx / length;
+        double uy = dy / length;
+        a.collide(midX + ux * half, midY + uy * half);
+        b.collide(midX - ux * half, midY - uy * half);
+    }
+
+    /** Outside play on a ball a player runs into stays, and the player is put just off it. */
+    private void stepOff(Ball ball, Player player, double reach) {
+        double dx = player.x - ball.x;
+        double dy = player.y - ball.y;
+        double length = Math.hypot(dx, dy);
+        if (length == 0) {
+            double angle = (world.random.nextDouble() * 2 - 1) * Math.PI;
+            dx = Math.cos(angle);
+            dy = Math.sin(angle);
+            length = 1;
+        }
+        double distance = reach + EPS;
+        ball.collide(ball.x, ball.y);
+        player.collide(ball.x + dx / length * distance, ball.y + dy / length * distance);
     }
 
     /** Stamina, effort and recovery of one cycle, every cycle whether the clock runs or not. */
@@ -181,10 +216,10 @@ final class Physics {
             uy *= speedMax / speed;
             speed = speedMax;
         }
-        // Uniform noise proportional to the speed, on each axis.
-        double range = rand * speed;
-        ux += world.noise(range);
-        uy += world.noise(range);
+        // Noise proportional to the speed: a vector of length up to rand * speed, any direction.
+        double[] noise = world.polarNoise(rand * speed);
+        ux += noise[0];
+        uy += noise[1];
         object.x += ux;
         object.y += uy;
         object.vx = decay * ux;

@@ -2,25 +2,28 @@ package org.scenes.agent.sim;
 
 /** The play modes this simulator uses; a restart's referee word is {@code word + "_" + side}. */
 enum PlayMode {
-    BEFORE_KICK_OFF(false, "before_kick_off"),
-    KICK_OFF(true, "kick_off"),
-    KICK_IN(true, "kick_in"),
-    CORNER_KICK(true, "corner_kick"),
-    GOAL_KICK(true, "goal_kick"),
+    /** Before the first kick-off and between the halves: players may move and turn, nothing else moves. */
+    BEFORE_KICK_OFF(false, false, "before_kick_off"),
+    KICK_OFF(true, true, "kick_off"),
+    KICK_IN(true, true, "kick_in"),
+    CORNER_KICK(true, true, "corner_kick"),
+    GOAL_KICK(true, true, "goal_kick"),
     /** After a goalie caught the ball: the goalie's side kicks. */
-    FREE_KICK(true, "free_kick"),
-    PLAY_ON(true, "play_on"),
-    /** After a goal, until the next kick-off: the clock stands still. */
-    AFTER_GOAL(false, "goal"),
-    /** Between the halves: the clock stands still. */
-    HALF_TIME(false, "half_time"),
-    TIME_OVER(false, "time_over");
+    FREE_KICK(true, true, "free_kick"),
+    PLAY_ON(true, true, "play_on"),
+    /** After a goal, until the next kick-off: the clock stands still but players and ball move. */
+    AFTER_GOAL(false, true, "goal"),
+    TIME_OVER(false, false, "time_over");
 
+    /** Whether the game clock advances. */
     final boolean clockRuns;
+    /** Whether dashes, kicks and velocities move players and ball (the server's step). */
+    final boolean objectsMove;
     final String word;
 
-    PlayMode(boolean clockRuns, String word) {
+    PlayMode(boolean clockRuns, boolean objectsMove, String word) {
         this.clockRuns = clockRuns;
+        this.objectsMove = objectsMove;
         this.word = word;
     }
 
@@ -31,6 +34,6 @@ enum PlayMode {
 
     /** Whether players may {@code move} (teleport) in this mode. */
     boolean allowsMove() {
-        return this == BEFORE_KICK_OFF || this == AFTER_GOAL || this == HALF_TIME;
+        return this == BEFORE_KICK_OFF || this == AFTER_GOAL;
     }
 }

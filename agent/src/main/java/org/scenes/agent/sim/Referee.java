@@ -10,9 +10,13 @@ import org.scenes.scene.Side;
  * at the start of the next step.
  */
 final class Referee {
-    /** Steps before the first kick-off; the real server waits for the operator or auto_mode. */
-    static final int BEFORE_KICK_OFF_STEPS = 30;
-    /** Steps the clock stands still after a goal and at half time (about 50 on the real server). */
+    /**
+     * Steps before a kick-off at the start and between the halves: the real server's auto mode
+     * waits {@code kick_off_wait} (100) cycles once the teams are there (without it, an operator
+     * starts the game).
+     */
+    static final int BEFORE_KICK_OFF_STEPS = 100;
+    /** Steps the clock stands still after a goal before the kick-off (the server's after-goal wait, 50). */
     static final int PAUSE_STEPS = 50;
     /** How far the other side must stay from the ball at a restart ({@code offside_kick_margin}). */
     static final double KEEP_AWAY = 9.15;
@@ -26,15 +30,17 @@ final class Referee {
 
     private final World world;
     private final int cycles;
+    private final Physics physics;
     private final List<String> announcements = new ArrayList<>();
     /** The last play mode announced, as the referee words it ({@code goal_l_2}, {@code kick_in_r}). */
     private String modeWord = "before_kick_off";
     private int waited;
     private boolean secondHalf;
 
-    Referee(World world, int cycles) {
+    Referee(World world, int cycles, Physics physics) {
         this.world = world;
         this.cycles = cycles;
+        this.physics = physics;
     }
 
     /** Announcements made since the last call, as hear messages. */
@@ -83,19 +89,23 @@ final class Referee {
     void endStep() {
         switch (world.mode) {
             case BEFORE_KICK_OFF -> {
+                placePlayersInTheirHalves();
                 if (++waited >= BEFORE_KICK_OFF_STEPS) {
-                    kickOff(Side.LEFT);
+                    kickOff(world.restartSide);
                 }
             }
-            case AFTER_GOAL, HALF_TIME -> {
+            case AFTER_GOAL -> {
                 if (++waited >= PAUSE_STEPS) {
-                    // After a goal the side that conceded kicks off; the second half starts with the right.
-                    kickOff(world.mode == PlayMode.HALF_TIME ? Side.RIGHT : world.restartSide);
+                    // The side that conceded kicks off.
+                    kickOff(world.restartSide);
                 }
             }
             case TIME_OVER -> {
             }
             default -> {
+                if (world.mode == PlayMode.KICK_OFF) {
+                    placePlayersInTheirHalves();
+                }
                 if (world.mode.restart()) {
                     keepAway();
                     if (world.mode != PlayMode.KICK_OFF && ++waited >= DROP_BALL_TIME) {
@@ -114,11 +124,15 @@ final class Referee {
     private void tick() {
         world.time++;
         if (!secondHalf && world.time == cycles / 2 && cycles / 2 > 0) {
+            // As on the server: half_time, then before_kick_off with the right side to kick off.
             secondHalf = true;
-            world.mode = PlayMode.HALF_TIME;
-            waited = 0;
             announce("half_time");
-            resetPositions(Side.RIGHT);
+            world.mode = PlayMode.BEFORE_KICK_OFF;
+            world.restartSide = Side.RIGHT;
+            world.ball.place(0, 0);
+            waited = 0;
+            announce("before_kick_off");
+            placePlayersInTheirHalves();
         } else if (world.time >= cycles) {
             world.mode = PlayMode.TIME_OVER;
             announce("time_over");
@@ -136,7 +150,8 @@ final class Referee {
             announce("goal_" + scorer.letter() + "_" + goals);
             world.mode = PlayMode.AFTER_GOAL;
             world.restartSide = other(scorer);
-            ball.place(Math.signum(ball.x) * (ServerParams.PITCH_HALF_LENGTH + 1), ball.y);
+            // The ball stops where it is; players go on moving while the clock stands still.
+            ball.place(ball.x, ball.y);
             waited = 0;
             return true;
         }
@@ -169,33 +184,55 @@ final class Referee {
     }
 
     private void kickOff(Side side) {
-        resetPositions(side);
+        world.ball.place(0, 0);
         world.mode = PlayMode.KICK_OFF;
         world.restartSide = side;
+        waited = 0;
+        placePlayersInTheirHalves();
         announce("kick_off_" + side.letter());
     }
 
     /**
-     * Ball to the centre; players in the other half go back to their own, and the side not
-     * kicking off leaves the centre circle, as the server places players before a kick-off.
+     * Before and at a kick-off, as the server places players: one in the other half goes back to
+     * its own, at a random spot of it before kick-off, and at a kick-off to the halfway line (its
+     * own side of it by a player's size, same y); the side not kicking off leaves the centre circle
+     * (to its edge, {@link #KEEP_AWAY} plus a player's size from the centre).
      */
-    private void resetPositions(Side kicking) {
-        world.ball.place(0, 0);
+    private void placePlayersInTheirHalves() {
+        double size = world.params.playerSize();
+        boolean kickOff = world.mode == PlayMode.KICK_OFF;
         for (Player player : world.players) {
             double sign = player.side == Side.LEFT ? -1 : 1;
             if (player.x * sign < 0) {
-                player.x = -player.x;
+                if (kickOff) {
+                    player.x = sign * size;
+                } else {
+                    player.x = sign * world.random.nextDouble() * ServerParams.PITCH_HALF_LENGTH;
+                    player.y = (world.random.nextDouble() * 2 - 1) * ServerParams.PITCH_HALF_WIDTH;
+                }
             }
-            player.vx = 0;
-            player.vy = 0;
+            if (player.side != world.restartSide) {
+                double radius = KEEP_AWAY + size;
+                double distance = Math.hypot(player.x, player.y);
+                if (distance < radius) {
+                    double dx = distance == 0 ? sign : player.x / distance;
+                    double dy = distance == 0 ? 0 : player.y / distance;
+                    player.x = dx * radius;
+                    player.y = dy * radius;
+                }
+            }
         }
-        world.restartSide = kicking;
-        keepAway();
     }
 
-    /** Until the restart is taken, the other side stays {@link #KEEP_AWAY} from the ball. */
+    /**
+     * Until a restart is taken, the other side stays {@link #KEEP_AWAY} plus a player's size from
+     * the ball: a player inside that circle is put on its edge, standing (then overlaps are
+     * resolved), as the server clears players from the ball.
+     */
     private void keepAway() {
         Ball ball = world.ball;
+        double radius = KEEP_AWAY + world.params.playerSize();
+        boolean moved = false;
         for (Player player : world.players) {
             if (player.side == world.restartSide) {
                 continue;
@@ -203,7 +240,7 @@ final class Referee {
             double dx = player.x - ball.x;
             double dy = player.y - ball.y;
             double distance = Math.hypot(dx, dy);
-            if (distance >= KEEP_AWAY) {
+            if (distance >= radius) {
                 continue;
             }
             if (distance < 1e-9) {
@@ -212,8 +249,12 @@ final class Referee {
                 dy = 0;
                 distance = 1;
             }
-            player.x = ball.x + dx / distance * KEEP_AWAY;
-            player.y = ball.y + dy / distance * KEEP_AWAY;
+            // Put there standing, as the server places a cleared player.
+            player.place(ball.x + dx / distance * radius, ball.y + dy / distance * radius);
+            moved = true;
+        }
+        if (moved) {
+            physics.collisions();
         }
     }
 

@@ -52,4 +52,19 @@ final class World {
     double noise(double range) {
         return range == 0 ? 0 : (random.nextDouble() * 2 - 1) * range;
     }
+
+    /**
+     * The server's noise vector: a length uniform in [0, maxLength] in a uniform direction
+     * (not uniform on each axis), as {x, y}.
+     */
+    double[] polarNoise(double maxLength) {
+        if (maxLength == 0) {
+            return ZERO;
+        }
+        double length = random.nextDouble() * maxLength;
+        double angle = (random.nextDouble() * 2 - 1) * Math.PI;
+        return new double[] {length * Math.cos(angle), length * Math.sin(angle)};
+    }
+
+    private static final double[] ZERO = {0, 0};
 }

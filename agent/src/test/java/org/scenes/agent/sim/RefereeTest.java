@@ -10,7 +10,7 @@ import org.scenes.scene.Side;
 
 class RefereeTest {
     private final World world = new World(ServerParams.DEFAULT, 1);
-    private final Referee referee = new Referee(world, 6000);
+    private final Referee referee = new Referee(world, 6000, new Physics(world));
     private final Player left = world.add("Teal", Side.LEFT, 1);
     private final Player right = world.add("Amber", Side.RIGHT, 1);
 
@@ -51,6 +51,23 @@ class RefereeTest {
     }
 
     @Test
+    void afterAGoalTheBallStaysAndAtTheKickOffPlayersStandInTheirOwnHalf() {
+        left.place(40, 20);
+        right.place(4, 1);
+        world.ball.place(53, 2);
+        referee.endStep();
+        assertEquals(53, world.ball.x, "the ball stays where it crossed");
+        for (int i = 0; i < Referee.PAUSE_STEPS; i++) {
+            referee.endStep();
+        }
+        // The left player was in the other half: back to its side of the halfway line, same y.
+        assertEquals(-0.3, left.x, 1e-9);
+        assertEquals(20, left.y, 1e-9);
+        // The right kicks off: its player may stand in the centre circle.
+        assertEquals(4, right.x, 1e-9);
+    }
+
+    @Test
     void ballOverTheTouchLineIsAKickInForTheOtherSide() {
         world.lastTouch = Side.LEFT;
         world.ball.place(20, 34.5);
@@ -85,7 +102,7 @@ class RefereeTest {
         referee.endStep(); // kick-in for the right: the left keeps away
         left.place(19, 33);
         referee.endStep();
-        assertEquals(Referee.KEEP_AWAY, left.distanceTo(world.ball), 1e-9);
+        assertEquals(Referee.KEEP_AWAY + 0.3, left.distanceTo(world.ball), 1e-9); // and a player's size
         assertTrue(right.distanceTo(world.ball) < 2, "the side taking it may come close");
         referee.takeAnnouncements();
         for (int i = 1; i < Referee.DROP_BALL_TIME; i++) {
@@ -101,8 +118,11 @@ class RefereeTest {
     void halfTimeAndTimeOver() {
         world.time = 2999;
         referee.endStep();
-        assertEquals(List.of("(hear 3000 referee half_time)"), referee.takeAnnouncements());
-        for (int i = 0; i < Referee.PAUSE_STEPS; i++) {
+        assertEquals(List.of("(hear 3000 referee half_time)", "(hear 3000 referee before_kick_off)"),
+                referee.takeAnnouncements());
+        assertEquals(PlayMode.BEFORE_KICK_OFF, world.mode);
+        assertTrue(right.x > 0, "in its own half");
+        for (int i = 0; i < Referee.BEFORE_KICK_OFF_STEPS; i++) {
             referee.endStep();
         }
         assertEquals(List.of("(hear 3000 referee kick_off_r)"), referee.takeAnnouncements());

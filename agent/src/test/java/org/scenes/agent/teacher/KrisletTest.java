@@ -15,10 +15,10 @@ class KrisletTest {
     private static final String SENSE_BODY = "(sense_body 0 (view_mode high normal) (stamina 8000 1) (speed 0 0)"
             + " (head_angle 0) (kick 0) (dash 0) (turn 0) (say 0) (turn_neck 0) (catch 0) (move 0) (change_view 0))";
 
-    /** The command Krislet sends at its next think time (at most two steps) after this see. */
+    /** The command Krislet sends at its next think time (at most two steps) after this see, the step's see. */
     private String see(String see) {
-        assertEquals(null, answer(see), "Krislet thinks on its own clock, not on arrival");
-        String command = answer(SENSE_BODY);
+        assertEquals(null, answer(SENSE_BODY));
+        String command = answer(see);
         return command != null ? command : answer(SENSE_BODY);
     }
 
@@ -57,6 +57,26 @@ class KrisletTest {
         answer("(init r 3 before_kick_off)");
         assertEquals("(turn 40.0)", see("(see 12 ((b) 0.7 10) ((g r) 20 5))"));
         assertEquals("(kick 100.0 -31.0)", see("(see 12 ((b) 0.7 10) ((g l) 40.4 -31))"));
+    }
+
+    @Test
+    void takesABallSeenBehindForTheBall() {
+        answer("(init l 3 before_kick_off)");
+        assertEquals("(turn 88.0)", see("(see 12 ((B) 1.6 88))"));
+        assertEquals("(kick 100.0 -30.0)", see("(see 14 ((B) 0.6 -80) ((g r) 40 -30))"));
+    }
+
+    @Test
+    void waitsForASeeTakenAfterItsLastCommand() {
+        answer(SENSE_BODY);
+        answer("(see 0 ((b) 12.2 -17))");
+        assertEquals("(turn -17.0)", answer(SENSE_BODY));
+        assertEquals(null, answer(SENSE_BODY));
+        assertEquals(null, answer(SENSE_BODY), "its latest see is from before the turn");
+        assertEquals("(dash 122.0)", answer("(see 3 ((b) 12.2 0))"), "decided on the step's see");
+        assertEquals(null, answer(SENSE_BODY));
+        assertEquals(null, answer(SENSE_BODY), "the see came in the step of the dash");
+        assertEquals("(dash 122.0)", answer(SENSE_BODY), "no see came during the step: it acts on what it has");
     }
 
     @Test
