@@ -35,7 +35,7 @@ class SparkJobsTest {
 
     /** Two short seeded games of three Krislet players a side, each in its own directory of player logs. */
     @BeforeAll
-    static void games() {
+    static void games() throws IOException {
         games = work.resolve("games");
         for (int seed = 1; seed <= 2; seed++) {
             Path game = games.resolve("game" + seed);
@@ -137,7 +137,7 @@ class SparkJobsTest {
         assertEquals(local, distributed);
         String table = Files.readString(work.resolve("local-results/sweep.md"));
         String sparkTable = Files.readString(work.resolve("spark-results/sweep.md"));
-        String pivot = table.substring(table.indexOf("| metric"), table.indexOf("\n![")) + "\n";
+        String pivot = table.substring(table.indexOf("| metric"), table.indexOf("\n!["));
         assertTrue(sparkTable.endsWith(pivot), sparkTable);
         assertEquals(8 * 3 + 1, Files.readAllLines(work.resolve("spark-results/sweep.csv")).size());
         // one knowledge base per fold on the (only) executor, not one per task
