@@ -23,11 +23,11 @@ import picocli.CommandLine.Spec;
 
 /** {@code scenes-spark convert}: player logs to scene files as a Spark job, one task per game. */
 @Command(name = "convert", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Convert player logs into scene files as 'scenes convert --out-dir' does, as a Spark job with one",
-                "task per game. A game is a directory of player logs: each directory given, and each of its",
-                "subdirectories, that holds logs (.lsf, .log, .txt, gzip or not); a log given by name belongs to the game",
-                "of its directory. OUT/GAME/<log name>.json.gz appear only when complete; paths may be any",
-                "Hadoop-compatible file system (hdfs://, s3a://, file://; no scheme: the local disk)."})
+        description = "Convert player logs into scene files as 'scenes convert --out-dir' does, as a Spark job with "
+                + "one task per game. A game is a directory of player logs: each directory given, and each of its "
+                + "subdirectories, that holds logs (.lsf, .log, .txt, gzip or not); a log given by name belongs to "
+                + "the game of its directory. OUT/GAME/<log name>.json.gz appear only when complete; paths may be "
+                + "any Hadoop-compatible file system (hdfs://, s3a://, file://; no scheme: the local disk).")
 final class ConvertCommand implements Callable<Integer> {
     private static final String[] LOG_SUFFIXES = {".lsf", ".log", ".txt"};
 

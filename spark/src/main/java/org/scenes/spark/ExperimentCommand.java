@@ -30,9 +30,9 @@ import picocli.CommandLine.Spec;
 
 /** {@code scenes-spark experiment}: {@code scenes experiment} as a Spark job, one task per (configuration, fold). */
 @Command(name = "experiment", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Run the parameter sweep a Groovy script describes, as 'scenes experiment' does, as a Spark job:",
-                "one task per (configuration, fold), each fold's knowledge base built once per executor. Writes the",
-                "same results table as CSV, JSON and Markdown (no chart: 'scenes experiment' draws it)."})
+        description = "Run the parameter sweep a Groovy script describes, as 'scenes experiment' does, as a Spark job: "
+                + "one task per (configuration, fold), each fold's knowledge base built once per executor. Writes "
+                + "the same results table as CSV, JSON and Markdown (no chart: 'scenes experiment' draws it).")
 final class ExperimentCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;

@@ -10,8 +10,9 @@ import picocli.CommandLine.Spec;
 
 /** The top-level {@code scenes-spark} command: the project's conversion and sweeps as Spark jobs. */
 @Command(name = "scenes-spark", mixinStandardHelpOptions = true, versionProvider = SparkCommand.Version.class,
-        description = {"Conversion and sweeps of scenes as Apache Spark jobs: the same code and results as the scenes",
-                "commands, spread over the cores of this machine (the default, --master local[*]) or of a cluster."},
+        description = "Conversion and sweeps of scenes as Apache Spark jobs: the same code and results as the scenes "
+                + "commands, spread over the cores of this machine (the default, --master local[*]) or of a "
+                + "cluster.",
         subcommands = {CommandLine.HelpCommand.class, ConvertCommand.class, ExperimentCommand.class, TuneCommand.class})
 final class SparkCommand implements Runnable {
     @Spec

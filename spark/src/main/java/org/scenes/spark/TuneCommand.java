@@ -25,9 +25,9 @@ import picocli.CommandLine.Spec;
 
 /** {@code scenes-spark tune}: {@code scenes tune} with every (configuration, fold) a Spark task. */
 @Command(name = "tune", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Search metric, object weights, memory, k and selector by cross-validation on the training files,",
-                "as 'scenes tune' does and with the same result, each (configuration, fold) a Spark task; writes the",
-                "best configuration for --config."})
+        description = "Search metric, object weights, memory, k and selector by cross-validation on the training "
+                + "files, as 'scenes tune' does and with the same result, each (configuration, fold) a Spark task; "
+                + "writes the best configuration for --config.")
 final class TuneCommand implements Callable<Integer> {
     private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
 
