@@ -9,8 +9,8 @@ gradle -q :cli:installDist :spark:installDist
 scenes=cli/build/install/scenes/bin/scenes
 spark=spark/build/install/scenes-spark/bin/scenes-spark
 out=build/spark-bench
-rm -rf "$out" && mkdir -p "$out"
-"$spark" convert ../shared/data/krislet/classic-game1 --out-dir "$out/scenes" > "$out/convert.txt"
+mkdir -p "$out" && rm -rf "$out"/local-* "$out"/spark-*
+[ -d "$out/scenes/classic-game1" ] || "$spark" convert ../shared/data/krislet/classic-game1 --out-dir "$out/scenes" > "$out/convert.txt"
 sweep=spark/bench/sweep-100.groovy
 run() {
     local label=$1; shift
