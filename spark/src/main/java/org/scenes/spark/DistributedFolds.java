@@ -113,8 +113,9 @@ final class DistributedFolds implements AutoCloseable {
         return Predictions.of(task.index(), report);
     }
 
+    /** Drops the executors' copies of the scene files, waiting for it (the driver's goes with the context). */
     @Override
     public void close() {
-        data.destroy();
+        data.unpersist(true);
     }
 }

@@ -24,7 +24,8 @@ class SharedRecordingsJobsTest {
         Path game = SharedData.resolve("krislet/classic-game1");
         List<String> logs = new ArrayList<>();
         try (Stream<Path> list = Files.list(game)) {
-            list.filter(p -> p.getFileName().toString().startsWith("Carleton_")).sorted().forEach(p -> logs.add(p.toString()));
+            list.filter(p -> p.getFileName().toString().matches("Carleton_[123]\\.lsf\\.gz")).sorted()
+                    .forEach(p -> logs.add(p.toString()));
         }
         List<String> args = new ArrayList<>(List.of("convert"));
         args.addAll(logs);
@@ -48,9 +49,9 @@ class SharedRecordingsJobsTest {
         Path sweep = Files.writeString(work.resolve("krislet.groovy"), """
                 title 'Krislet classic game 1'
                 data %s
-                metrics 'ball-goal', 'cell'
+                metrics 'ball-goal'
                 k 1, 5
-                selectors 'first-valid'
+                selectors 'first-valid', 'vote'
                 table columns: 'k'
                 """.formatted(data));
         SparkJobsTest.Run expected = SparkJobsTest.local("experiment", sweep.toString(), "--out-dir",
