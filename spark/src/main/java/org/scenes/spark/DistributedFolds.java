@@ -109,8 +109,17 @@ final class DistributedFolds implements AutoCloseable {
         ExecutorState state = ExecutorState.forJob(job, scenes::value);
         MatchConfig config = task.config().config();
         ExecutorState.Fold fold = state.fold(config, registry, task.fold(), protocol);
-        ValidationReport report = Validator.run(fold.train(), fold.test(), config, registry, false, null);
-        return Predictions.of(task.index(), report);
+        try {
+            ValidationReport report = Validator.run(fold.train(), fold.test(), config, registry, false, null);
+            return Predictions.of(task.index(), report);
+        } catch (RuntimeException e) {
+            // named as the local sweep names it, with the fold
+            String message = "configuration " + config.describe() + ", fold " + (task.fold() + 1) + ": " + e.getMessage();
+            if (e.getClass() == IllegalArgumentException.class) {
+                throw new IllegalArgumentException(message, e);
+            }
+            throw new org.scenes.experiment.ExperimentException(message, e);
+        }
     }
 
     /** Drops the executors' copies of the scene files, waiting for it (the driver's goes with the context). */
