@@ -24,7 +24,6 @@ import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.SceneFile;
 import org.scenes.script.ScriptFailure;
 import org.scenes.script.Sweeps;
-import org.scenes.validate.Folds;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -134,23 +133,10 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     private static void writeMarkdown(Path file, ResultTable table, String command, String chart) throws IOException {
-        Sweep sweep = table.sweep();
-        StringBuilder text = new StringBuilder();
-        text.append("# ").append(sweep.title().isEmpty() ? file.getFileName() : sweep.title()).append("\n\n");
-        text.append("Regenerate with `").append(command).append("` (sweep script, data and protocol: ")
-                .append("docs/scripting.md). Cross-validation over ").append(sweep.data().size())
-                .append(" scene files, each tested against ")
-                .append(sweep.protocol() == Folds.Protocol.NEXT ? "the next one" : "all the others")
-                .append("; seed ").append(sweep.seed());
-        if (!sweep.transforms().isEmpty()) {
-            text.append("; transforms ").append(String.join(", ", sweep.transforms()));
-        }
-        text.append(". Values are means over the folds of ").append(String.join(", ", sweep.layout().measures()))
-                .append("; every measure of every configuration is in the CSV and JSON files beside this one.\n\n");
-        text.append(table.markdown()).append("\n![").append(sweep.title()).append("](").append(chart).append(")\n");
+        String text = table.markdownDocument(file.getFileName().toString(), command, chart);
         try (AtomicOutput output = AtomicOutput.create(file);
              Writer writer = new OutputStreamWriter(output.stream(), StandardCharsets.UTF_8)) {
-            writer.write(text.toString());
+            writer.write(text);
             writer.flush();
             output.commit();
         }

@@ -238,6 +238,32 @@ public final class ResultTable {
         }
     }
 
+    /**
+     * The Markdown page of a sweep's results: heading, how to regenerate it, the protocol and the pivot.
+     *
+     * @param command the command line that produced it
+     * @param chart the chart's file name, linked below the table, or null for none
+     */
+    public String markdownDocument(String fallbackTitle, String command, String chart) {
+        StringBuilder text = new StringBuilder();
+        text.append("# ").append(sweep.title().isEmpty() ? fallbackTitle : sweep.title()).append("\n\n");
+        text.append("Regenerate with `").append(command).append("` (sweep script, data and protocol: ")
+                .append("docs/scripting.md). Cross-validation over ").append(sweep.data().size())
+                .append(" scene files, each tested against ")
+                .append(sweep.protocol() == org.scenes.validate.Folds.Protocol.NEXT ? "the next one" : "all the others")
+                .append("; seed ").append(sweep.seed());
+        if (!sweep.transforms().isEmpty()) {
+            text.append("; transforms ").append(String.join(", ", sweep.transforms()));
+        }
+        text.append(". Values are means over the folds of ").append(String.join(", ", sweep.layout().measures()))
+                .append("; every measure of every configuration is in the CSV and JSON files beside this one.\n\n");
+        text.append(markdown());
+        if (chart != null) {
+            text.append("\n![").append(sweep.title()).append("](").append(chart).append(")\n");
+        }
+        return text.toString();
+    }
+
     /** The pivot as a Markdown table, values with four decimals. */
     public String markdown() {
         Sweep.Layout layout = sweep.layout();

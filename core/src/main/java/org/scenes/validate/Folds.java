@@ -70,32 +70,48 @@ public final class Folds {
         if (files.size() < 2) {
             throw new IllegalArgumentException("--folds needs at least two scene files, not " + files.size());
         }
+        List<List<Scene>> sequences = sequences(files, config, registry);
+        List<ValidationReport> reports = new ArrayList<>();
+        for (int i = 0; i < files.size(); i++) {
+            KnowledgeBase train = KnowledgeBase.of(files.get(0).grid(), trainingScenes(sequences, i, protocol));
+            reports.add(Validator.run(train, sequences.get(i), config, registry, parallel, progress));
+        }
+        return new Folds(reports, protocol);
+    }
+
+    /** Folds already validated one by one (e.g. as separate tasks of a distributed job), in fold order. */
+    public static Folds of(List<ValidationReport> reports, Protocol protocol) {
+        return new Folds(reports, protocol);
+    }
+
+    /** Each file's scenes through fresh transforms of the configuration, in file order; all files share one grid. */
+    public static List<List<Scene>> sequences(List<SceneFile> files, MatchConfig config, PluginRegistry registry) {
         List<List<Scene>> sequences = new ArrayList<>();
         for (SceneFile file : files) {
             sequences.add(KnowledgeBase.transform(file.scenes(), config.transformFactory(registry).get()));
         }
-        List<ValidationReport> reports = new ArrayList<>();
         for (SceneFile file : files) {
             if (!file.grid().equals(files.get(0).grid())) {
                 throw new IllegalArgumentException("scene files use different grids (" + files.get(0).grid().describe()
                         + " and " + file.grid().describe() + "); convert them with the same grid");
             }
         }
-        for (int i = 0; i < files.size(); i++) {
-            List<Scene> trainScenes = new ArrayList<>();
-            if (protocol == Protocol.NEXT) {
-                trainScenes.addAll(sequences.get((i + 1) % files.size()));
-            } else {
-                for (int j = 0; j < files.size(); j++) {
-                    if (j != i) {
-                        trainScenes.addAll(sequences.get(j));
-                    }
+        return sequences;
+    }
+
+    /** The training scenes of fold {@code fold} (whose test scenes are {@code sequences.get(fold)}). */
+    public static List<Scene> trainingScenes(List<List<Scene>> sequences, int fold, Protocol protocol) {
+        List<Scene> trainScenes = new ArrayList<>();
+        if (protocol == Protocol.NEXT) {
+            trainScenes.addAll(sequences.get((fold + 1) % sequences.size()));
+        } else {
+            for (int j = 0; j < sequences.size(); j++) {
+                if (j != fold) {
+                    trainScenes.addAll(sequences.get(j));
                 }
             }
-            KnowledgeBase train = KnowledgeBase.of(files.get(0).grid(), trainScenes);
-            reports.add(Validator.run(train, sequences.get(i), config, registry, parallel, progress));
         }
-        return new Folds(reports, protocol);
+        return trainScenes;
     }
 
     public Protocol protocol() {

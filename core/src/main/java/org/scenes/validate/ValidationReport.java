@@ -240,6 +240,16 @@ public final class ValidationReport {
         }
     }
 
+    /** Each test scene's predicted actions, primary first (empty: none), in test order. */
+    public List<List<Action>> predictions() {
+        return java.util.Collections.unmodifiableList(predictedActions);
+    }
+
+    /** Each test scene's decision time in nanoseconds, in test order. */
+    public long[] decisionNanos() {
+        return nanos.clone();
+    }
+
     public int trainScenes() {
         return trainScenes;
     }

@@ -1,0 +1,130 @@
+package org.scenes.spark;
+
+import java.io.Serializable;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.UUID;
+import org.apache.spark.api.java.JavaSparkContext;
+import org.apache.spark.broadcast.Broadcast;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SceneFile;
+import org.scenes.validate.Folds;
+import org.scenes.validate.MatchConfig;
+import org.scenes.validate.ValidationReport;
+import org.scenes.validate.Validator;
+
+/**
+ * Cross-validation of many matching configurations as one Spark job each call: one task per
+ * (configuration, fold). The scene files go to every executor once (a broadcast); each executor
+ * builds a fold's knowledge base once and shares it between that fold's tasks. A task runs the
+ * project's recognizer and validator on its fold, as {@code scenes validate --folds} does, and sends
+ * back its predictions; the driver rebuilds each fold's report from them, so every figure, the
+ * fold means and the pooled report come from the validator's own code and equal the local run's.
+ */
+final class DistributedFolds implements AutoCloseable {
+    private final JavaSparkContext spark;
+    private final List<SceneFile> files;
+    private final Folds.Protocol protocol;
+    private final PluginRegistry registry;
+    private final ArrayList<String> pluginPath;
+    private final Broadcast<SceneData> data;
+    private final String job = UUID.randomUUID().toString();
+    /** the driver's transformed sequences, by transform key */
+    private final Map<String, List<List<Scene>>> sequences = new HashMap<>();
+
+    /**
+     * @param files the decoded scene files (the driver's copy, for rebuilding reports)
+     * @param data the same files as bytes, for the executors
+     */
+    DistributedFolds(JavaSparkContext spark, List<SceneFile> files, SceneData data, Folds.Protocol protocol,
+                     PluginRegistry registry, List<String> pluginPath) {
+        if (files.size() < 2) {
+            throw new IllegalArgumentException("cross-validation needs at least two scene files, one per fold, not "
+                    + files.size());
+        }
+        this.spark = spark;
+        this.files = List.copyOf(files);
+        this.protocol = protocol;
+        this.registry = registry;
+        this.pluginPath = new ArrayList<>(pluginPath);
+        this.data = spark.broadcast(data);
+    }
+
+    int folds() {
+        return files.size();
+    }
+
+    /** One (configuration, fold) task's input. */
+    private record Task(int index, ConfigSpec config, int fold) implements Serializable {
+    }
+
+    /** Every configuration's folds, in the order given; one Spark task per (configuration, fold). */
+    Map<MatchConfig, Folds> run(List<MatchConfig> configurations) {
+        for (MatchConfig config : configurations) {
+            config.check(registry);
+        }
+        List<Task> tasks = new ArrayList<>();
+        for (MatchConfig config : configurations) {
+            for (int fold = 0; fold < files.size(); fold++) {
+                tasks.add(new Task(tasks.size(), ConfigSpec.of(config), fold));
+            }
+        }
+        Map<MatchConfig, Folds> results = new LinkedHashMap<>();
+        if (tasks.isEmpty()) {
+            return results;
+        }
+        Broadcast<SceneData> scenes = data;
+        String jobId = job;
+        Folds.Protocol folds = protocol;
+        ArrayList<String> plugins = pluginPath;
+        List<Predictions> predictions = spark.parallelize(tasks, tasks.size())
+                .map(task -> predict(task, scenes, jobId, folds, plugins)).collect();
+        Predictions[] byTask = new Predictions[tasks.size()];
+        for (Predictions p : predictions) {
+            byTask[p.task] = p;
+        }
+        for (int c = 0; c < configurations.size(); c++) {
+            MatchConfig config = configurations.get(c);
+            List<List<Scene>> transformed = sequences.computeIfAbsent(ConfigSpec.transformKey(config),
+                    key -> Folds.sequences(files, config, registry));
+            List<ValidationReport> reports = new ArrayList<>();
+            for (int fold = 0; fold < files.size(); fold++) {
+                Predictions p = byTask[c * files.size() + fold];
+                reports.add(ValidationReport.of(Folds.trainingScenes(transformed, fold, protocol), transformed.get(fold),
+                        p.actions(), p.nanos()));
+            }
+            results.put(config, Folds.of(reports, protocol));
+        }
+        return results;
+    }
+
+    /** On an executor: one fold of one configuration, its queries one after another (the task is the unit of parallelism). */
+    private static Predictions predict(Task task, Broadcast<SceneData> scenes, String job, Folds.Protocol protocol,
+                                       List<String> pluginPath) {
+        PluginRegistry registry = ExecutorState.registry(pluginPath);
+        ExecutorState state = ExecutorState.forJob(job, scenes::value);
+        MatchConfig config = task.config().config();
+        ExecutorState.Fold fold = state.fold(config, registry, task.fold(), protocol);
+        try {
+            ValidationReport report = Validator.run(fold.train(), fold.test(), config, registry, false, null);
+            return Predictions.of(task.index(), report);
+        } catch (RuntimeException e) {
+            // named as the local sweep names it, with the fold
+            String message = "configuration " + config.describe() + ", fold " + (task.fold() + 1) + ": " + e.getMessage();
+            if (e.getClass() == IllegalArgumentException.class) {
+                throw new IllegalArgumentException(message, e);
+            }
+            throw new org.scenes.experiment.ExperimentException(message, e);
+        }
+    }
+
+    /** Drops the executors' copies of the scene files, waiting for it (the driver's goes with the context). */
+    @Override
+    public void close() {
+        data.unpersist(true);
+    }
+}

@@ -1,0 +1,152 @@
+package org.scenes.spark;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.apache.hadoop.fs.FileStatus;
+import org.apache.spark.api.java.JavaSparkContext;
+import org.scenes.experiment.Configuration;
+import org.scenes.experiment.FoldValidation;
+import org.scenes.experiment.Result;
+import org.scenes.experiment.ResultTable;
+import org.scenes.experiment.Sweep;
+import org.scenes.scene.SceneFile;
+import org.scenes.script.ScriptFailure;
+import org.scenes.script.Sweeps;
+import org.scenes.validate.Folds;
+import org.scenes.validate.MatchConfig;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.Spec;
+
+/** {@code scenes-spark experiment}: {@code scenes experiment} as a Spark job, one task per (configuration, fold). */
+@Command(name = "experiment", mixinStandardHelpOptions = true, sortOptions = false,
+        description = "Run the parameter sweep a Groovy script describes, as 'scenes experiment' does, as a Spark job: "
+                + "one task per (configuration, fold), each fold's knowledge base built once per executor. Writes "
+                + "the same results table as CSV, JSON and Markdown (no chart: 'scenes experiment' draws it).")
+final class ExperimentCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @ParentCommand
+    SparkCommand top;
+
+    @Parameters(paramLabel = "SWEEP.groovy", description = "The sweep script (the same as for 'scenes experiment').")
+    Path sweepFile;
+
+    @Option(names = {"-o", "--out-dir"}, paramLabel = "DIR",
+            description = "Where NAME.csv, NAME.json and NAME.md go, any Hadoop-compatible path (default: the script's directory).")
+    String outDir;
+
+    @Option(names = "--name", paramLabel = "NAME", description = "Base name of the result files (default: the script's name).")
+    String name;
+
+    @Override
+    public Integer call() throws IOException {
+        Sweep sweep = load();
+        HadoopFiles hadoop = HadoopFiles.fromEnvironment();
+        List<String> paths = dataPaths(sweep.data(), hadoop);
+        SceneData data = SceneData.read(paths, hadoop);
+        List<SceneFile> files = SweepInputs.decodeOnDriver(paths, data, hadoop);
+        List<Configuration> configurations = sweep.configurations();
+        List<MatchConfig> configs = new ArrayList<>();
+        for (Configuration configuration : configurations) {
+            configs.add(FoldValidation.matchConfig(configuration, sweep.transforms(), sweep.seed()));
+        }
+        ResultTable table;
+        try (JavaSparkContext spark = top.options.start("experiment " + sweepFile.getFileName());
+             DistributedFolds folds = new DistributedFolds(spark, files, data, sweep.protocol(), top.options.registry(),
+                     top.options.pluginDirectories())) {
+            Map<MatchConfig, Folds> validated = folds.run(configs);
+            List<Result> results = new ArrayList<>();
+            for (int i = 0; i < configurations.size(); i++) {
+                results.add(new Result(configurations.get(i), FoldValidation.measures(validated.get(configs.get(i)))));
+            }
+            table = new ResultTable(sweep, results);
+        }
+        table.checkMeasures();
+        String base = name != null ? name : sweepFile.getFileName().toString().replaceFirst("\\.groovy$", "");
+        String directory = outDir != null ? outDir : sweepFile.toAbsolutePath().getParent().toString();
+        String command = "scenes-spark experiment " + sweepFile + (outDir == null ? "" : " --out-dir " + outDir)
+                + (name == null ? "" : " --name " + name);
+        List<String> written = write(table, hadoop, directory, base, command);
+        PrintWriter out = spec.commandLine().getOut();
+        out.printf("%s (%d configurations, %d folds, seed %d)%n%n", sweep.title().isEmpty() ? base : sweep.title(),
+                configurations.size(), files.size(), sweep.seed());
+        out.print(table.markdown());
+        out.printf("%nWritten %s%n", String.join(", ", written));
+        out.flush();
+        return 0;
+    }
+
+    /** The table's files, written locally as the local command writes them, then published to the directory. */
+    private static List<String> write(ResultTable table, HadoopFiles hadoop, String directory, String base, String command)
+            throws IOException {
+        Path scratch = Files.createTempDirectory("scenes-spark-results");
+        List<String> written = new ArrayList<>();
+        try {
+            Path csv = scratch.resolve(base + ".csv");
+            Path json = scratch.resolve(base + ".json");
+            Path markdown = scratch.resolve(base + ".md");
+            table.writeCsv(csv);
+            table.writeJson(json, command);
+            Files.writeString(markdown, table.markdownDocument(markdown.getFileName().toString(), command, null),
+                    StandardCharsets.UTF_8);
+            for (Path file : List.of(csv, json, markdown)) {
+                String target = directory.replaceFirst("/+$", "") + "/" + file.getFileName();
+                hadoop.publish(file, target);
+                written.add(target);
+            }
+        } finally {
+            try (var listing = Files.list(scratch)) {
+                for (Path file : listing.toList()) {
+                    Files.deleteIfExists(file);
+                }
+            }
+            Files.deleteIfExists(scratch);
+        }
+        return written;
+    }
+
+    private Sweep load() {
+        try {
+            return Sweeps.load(sweepFile.toString());
+        } catch (ScriptFailure e) {
+            throw new UsageException(e.getMessage());
+        }
+    }
+
+    /** The sweep's scene files, a directory standing for the .json and .json.gz files in it, sorted (as the local command). */
+    static List<String> dataPaths(List<String> data, HadoopFiles hadoop) throws IOException {
+        List<String> paths = new ArrayList<>();
+        for (String entry : data) {
+            if (hadoop.isDirectory(entry)) {
+                for (FileStatus status : hadoop.list(entry)) {
+                    String file = status.getPath().getName();
+                    if (status.isFile() && (file.endsWith(".json") || file.endsWith(".json.gz"))) {
+                        paths.add(entry.replaceFirst("/+$", "") + "/" + file);
+                    }
+                }
+            } else if (hadoop.exists(entry)) {
+                paths.add(entry);
+            } else {
+                throw new UsageException("the sweep's scene file " + entry + " does not exist (looked in "
+                        + hadoop.path(entry) + "); convert logs first with 'scenes-spark convert' or 'scenes convert'");
+            }
+        }
+        if (paths.size() < 2) {
+            throw new UsageException("the sweep's data hold " + paths.size() + " scene file(s); cross-validation needs "
+                    + "at least two, one per fold");
+        }
+        return paths;
+    }
+}

@@ -1,0 +1,139 @@
+package org.scenes.spark;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.Callable;
+import org.apache.spark.api.java.JavaSparkContext;
+import org.scenes.scene.SceneFile;
+import org.scenes.validate.Folds;
+import org.scenes.validate.MatchConfig;
+import org.scenes.validate.Tuner;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.Spec;
+
+/** {@code scenes-spark tune}: {@code scenes tune} with every (configuration, fold) a Spark task. */
+@Command(name = "tune", mixinStandardHelpOptions = true, sortOptions = false,
+        description = "Search metric, object weights, memory, k and selector by cross-validation on the training "
+                + "files, as 'scenes tune' does and with the same result, each (configuration, fold) a Spark task; "
+                + "writes the best configuration for --config.")
+final class TuneCommand implements Callable<Integer> {
+    private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+
+    @Spec
+    CommandSpec spec;
+
+    @ParentCommand
+    SparkCommand top;
+
+    @Option(names = "--train", arity = "2..*", paramLabel = "FILE", required = true,
+            description = "Training scene files, at least two (one per player works well); any Hadoop-compatible path.")
+    List<String> train = new ArrayList<>();
+
+    @Option(names = {"-o", "--output"}, paramLabel = "CONFIG.json", required = true, description = "Where to write the configuration.")
+    String output;
+
+    @Option(names = "--seed", paramLabel = "S", description = "Seed of every random choice (default 1).")
+    long seed = 1;
+
+    @Option(names = "--sweeps", paramLabel = "N", description = "Passes over the search dimensions (default 2).")
+    int sweeps = 2;
+
+    @Option(names = "--protocol", paramLabel = "leave-one-out|next",
+            description = "Cross-validation: each file against all others (default) or against the next one.")
+    String protocol = "leave-one-out";
+
+    @Option(names = "--objective", paramLabel = "mean|accuracy|direction|macro-f1",
+            description = "What to maximise: the mean of accuracy, action-with-direction accuracy and macro F1 (default), or one of them.")
+    String objective = "mean";
+
+    @Option(names = "--quiet", description = "Do not print each configuration tried.")
+    boolean quiet;
+
+    @Override
+    public Integer call() throws IOException {
+        if (sweeps < 1) {
+            throw new UsageException("--sweeps must be at least 1");
+        }
+        Folds.Protocol chosen = switch (protocol) {
+            case "leave-one-out" -> Folds.Protocol.LEAVE_ONE_OUT;
+            case "next" -> Folds.Protocol.NEXT;
+            default -> throw new UsageException("--protocol must be leave-one-out or next, not " + protocol);
+        };
+        Tuner.Objective goal = switch (objective) {
+            case "mean" -> Tuner.Objective.MEAN;
+            case "accuracy" -> Tuner.Objective.ACCURACY;
+            case "direction" -> Tuner.Objective.DIRECTION;
+            case "macro-f1" -> Tuner.Objective.MACRO_F1;
+            default -> throw new UsageException("--objective must be mean, accuracy, direction or macro-f1, not " + objective);
+        };
+        HadoopFiles hadoop = HadoopFiles.fromEnvironment();
+        SceneData data = SceneData.read(train, hadoop);
+        List<SceneFile> files = SweepInputs.decodeOnDriver(train, data, hadoop);
+        PrintWriter out = spec.commandLine().getOut();
+        Tuner.Result result;
+        int validated;
+        try (JavaSparkContext spark = top.options.start("tune");
+             DistributedFolds folds = new DistributedFolds(spark, files, data, chosen, top.options.registry(),
+                     top.options.pluginDirectories())) {
+            DistributedTuner tuner = new DistributedTuner(folds, goal, quiet ? null : line -> {
+                out.println(line);
+                out.flush();
+            });
+            result = tuner.tune(MatchConfig.DEFAULT.withSeed(seed), Tuner.defaultSearch(), sweeps);
+            validated = tuner.validated();
+        }
+        Map<String, Object> score = new LinkedHashMap<>();
+        score.put("score", result.score());
+        score.put("protocol", protocol);
+        score.put("objective", objective);
+        score.put("scoreFormula", objective.equals("mean")
+                ? "(accuracy + action-with-direction accuracy + macro F1) / 3 over the decisions of all folds"
+                : objective + " over the decisions of all folds");
+        score.put("figures", result.figures());
+        score.put("configurationsTried", result.evaluated());
+        score.put("trainFiles", train);
+        write(hadoop, result.config(), score);
+        out.printf("Best of %d configurations: %s%n", result.evaluated(), result.config().describe());
+        out.printf("Cross-validation score %.4f (accuracy %.4f, with direction %.4f, macro F1 %.4f)%n", result.score(),
+                result.figures().get("accuracy"), result.figures().get("directionAccuracy"), result.figures().get("macroF1"));
+        out.printf("Validated %d configurations in all (%d ahead of the search, to keep the executors busy)%n", validated,
+                validated - result.evaluated());
+        out.println("Written to " + output);
+        out.flush();
+        return 0;
+    }
+
+    /** The configuration file of {@code scenes tune}: the same fields in the same order. */
+    private void write(HadoopFiles hadoop, MatchConfig config, Map<String, Object> crossValidation) throws IOException {
+        Map<String, Object> map = new LinkedHashMap<>();
+        map.put("metric", config.metric());
+        map.put("options", new TreeMap<>(config.metricOptions()));
+        map.put("objectWeights", config.objectWeights().format());
+        map.put("actionWeights", config.actionWeights().format());
+        map.put("k", config.k());
+        map.put("selector", config.selector());
+        map.put("selectorOptions", new TreeMap<>(config.selectorOptions()));
+        map.put("transforms", config.transforms());
+        map.put("seed", config.seed());
+        map.put("crossValidation", crossValidation);
+        Path scratch = Files.createTempFile("scenes-spark-tune", ".json");
+        try {
+            JSON.writeValue(scratch.toFile(), map);
+            hadoop.publish(scratch, output);
+        } finally {
+            Files.deleteIfExists(scratch);
+        }
+    }
+}
