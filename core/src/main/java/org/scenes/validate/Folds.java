@@ -42,8 +42,11 @@ public final class Folds {
             throw new IllegalArgumentException("--folds needs at least two scene files, not " + files.size());
         }
         List<List<Scene>> sequences = new ArrayList<>();
+        // what training stores may differ from the queries (a mirror transform adds scenes)
+        List<List<Scene>> stored = new ArrayList<>();
         for (SceneFile file : files) {
             sequences.add(KnowledgeBase.transform(file.scenes(), config.transformFactory(registry).get()));
+            stored.add(KnowledgeBase.stored(file.scenes(), config.transformFactory(registry).get()));
         }
         List<ValidationReport> reports = new ArrayList<>();
         for (SceneFile file : files) {
@@ -55,11 +58,11 @@ public final class Folds {
         for (int i = 0; i < files.size(); i++) {
             List<Scene> trainScenes = new ArrayList<>();
             if (protocol == Protocol.NEXT) {
-                trainScenes.addAll(sequences.get((i + 1) % files.size()));
+                trainScenes.addAll(stored.get((i + 1) % files.size()));
             } else {
                 for (int j = 0; j < files.size(); j++) {
                     if (j != i) {
-                        trainScenes.addAll(sequences.get(j));
+                        trainScenes.addAll(stored.get(j));
                     }
                 }
             }
