@@ -50,6 +50,10 @@ final class ShowCommand implements Callable<Integer> {
     @Option(names = "--metric", paramLabel = "NAME", description = "The metric ranking --key-scenes (default: the default configuration's).")
     String metric;
 
+    @Option(names = "--key-by", paramLabel = "influence|events",
+            description = "--key-scenes by influence on neighbours' predictions (default) or the first N events (kicks, moves, the ball changing hands).")
+    String keyBy = "influence";
+
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
@@ -89,13 +93,24 @@ final class ShowCommand implements Callable<Integer> {
         if (count < 1) {
             throw new UsageException("--key-scenes must be at least 1, not " + count);
         }
+        if (!keyBy.equals("influence") && !keyBy.equals("events")) {
+            throw new UsageException("--key-by must be influence or events, not " + keyBy);
+        }
         SceneFile scenes = SceneFileReader.read(file);
+        if (keyBy.equals("events")) {
+            return print(out, KeyScenes.events(scenes.scenes(), count), scenes.grid(), "events");
+        }
         MatchConfig config = metric == null ? MatchConfig.DEFAULT : MatchConfig.DEFAULT.withMetric(metric, java.util.Map.of());
         PluginRegistry registry = top.global.registry();
         config.check(registry);
-        for (KeyScenes.Ranked ranked : KeyScenes.rank(scenes.grid(), scenes.scenes(), config.metricFactory(registry), count)) {
-            out.printf("#%d  influence %d  ", ranked.index(), ranked.influence());
-            out.print(VisionTable.render(ranked.scene(), scenes.grid()));
+        return print(out, KeyScenes.rank(scenes.grid(), scenes.scenes(), config.metricFactory(registry), count),
+                scenes.grid(), "influence");
+    }
+
+    private static int print(PrintWriter out, java.util.List<KeyScenes.Ranked> ranked, Grid grid, String measure) {
+        for (KeyScenes.Ranked each : ranked) {
+            out.printf("#%d  %s %d  ", each.index(), measure, each.influence());
+            out.print(VisionTable.render(each.scene(), grid));
             out.println();
         }
         out.flush();

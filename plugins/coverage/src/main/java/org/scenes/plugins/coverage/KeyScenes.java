@@ -9,8 +9,11 @@ import org.scenes.match.Neighbour;
 import org.scenes.match.ObjectSetMetric;
 import org.scenes.match.Recognizer;
 import org.scenes.match.SceneMetric;
+import org.scenes.scene.ActionType;
 import org.scenes.scene.Grid;
+import org.scenes.scene.ObjectKind;
 import org.scenes.scene.Scene;
+import org.scenes.scene.SeenObject;
 
 /**
  * Key scenes: a scene matters as much as the predictions of other scenes that hang on it. For
@@ -25,6 +28,69 @@ public final class KeyScenes {
 
     /** @param index where the scene is in the input, @param influence the predictions hanging on it */
     public record Ranked(int index, Scene scene, int influence) {
+    }
+
+    /**
+     * Scenes of events, in order, at most {@code top}: the player kicks or moves (a move follows a
+     * change of play mode: kick-off, goal), or the ball changes hands: the nearest player to
+     * the ball (the observer itself when the ball is within 1 m) is another than in the scene
+     * before. Influence is 1 for each event the scene holds.
+     */
+    public static List<Ranked> events(List<Scene> scenes, int top) {
+        List<Ranked> found = new ArrayList<>();
+        String holder = null;
+        for (int i = 0; i < scenes.size() && found.size() < top; i++) {
+            Scene scene = scenes.get(i);
+            int events = scene.actionType() == ActionType.KICK || scene.actionType() == ActionType.MOVE ? 1 : 0;
+            String now = holder(scene);
+            if (now != null && holder != null && !now.equals(holder)) {
+                events++;
+            }
+            if (now != null) {
+                holder = now;
+            }
+            if (events > 0) {
+                found.add(new Ranked(i, scene, events));
+            }
+        }
+        return List.copyOf(found);
+    }
+
+    /** Who is nearest the ball in the scene, or null when the ball or every readable player is out of sight. */
+    private static String holder(Scene scene) {
+        SeenObject ball = null;
+        for (SeenObject object : scene.objects()) {
+            if (object.kind() == ObjectKind.BALL && !object.remembered() && !Double.isNaN(object.distance())) {
+                ball = object;
+                break;
+            }
+        }
+        if (ball == null) {
+            return null;
+        }
+        if (ball.distance() <= 1) {
+            return "self";
+        }
+        String nearest = "self";
+        double best = ball.distance();
+        for (SeenObject object : scene.objects()) {
+            if (object.kind() != ObjectKind.PLAYER || object.uniformNumber() == 0 || object.remembered()
+                    || Double.isNaN(object.distance()) || Double.isNaN(object.direction())) {
+                continue;
+            }
+            double gap = separation(ball, object);
+            if (gap < best) {
+                best = gap;
+                nearest = object.identity();
+            }
+        }
+        return nearest;
+    }
+
+    private static double separation(SeenObject a, SeenObject b) {
+        double angle = Math.toRadians(a.direction() - b.direction());
+        return Math.sqrt(Math.max(0, a.distance() * a.distance() + b.distance() * b.distance()
+                - 2 * a.distance() * b.distance() * Math.cos(angle)));
     }
 
     /** The {@code top} scenes of most influence (fewer when fewer have any), most first. */

@@ -75,4 +75,22 @@ class CoverageTest {
         }
         assertTrue(top.get(0).influence() >= top.get(top.size() - 1).influence());
     }
+
+    @Test
+    void eventsAreKicksMovesAndTheBallChangingHands() {
+        SeenObject nearBall = SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, 0.8, 0, GRID);
+        SeenObject farBall = SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, 20, 0, GRID);
+        SeenObject opponent = new SeenObject(ObjectKind.PLAYER, "p", "University", 4, false, Relation.OPPONENT, 19, 2,
+                Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, GRID.cell(19, 2));
+        List<Scene> game = List.of(
+                new Scene(1, Observer.UNKNOWN, List.of(nearBall), List.of(Action.dash(50))),
+                new Scene(2, Observer.UNKNOWN, List.of(nearBall), List.of(Action.kick(100, 0))),
+                new Scene(3, Observer.UNKNOWN, List.of(farBall, opponent), List.of(Action.dash(50))),
+                new Scene(4, Observer.UNKNOWN, List.of(farBall, opponent), List.of(Action.dash(50))),
+                new Scene(5, Observer.UNKNOWN, List.of(), List.of(Action.move(-10, 0))));
+        List<KeyScenes.Ranked> events = KeyScenes.events(game, 10);
+        assertEquals(List.of(1, 2, 4), events.stream().map(KeyScenes.Ranked::index).toList(),
+                "the kick, the opponent taking the ball, the move");
+        assertEquals(List.of(1), KeyScenes.events(game, 1).stream().map(KeyScenes.Ranked::index).toList());
+    }
 }
