@@ -13,7 +13,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "scenes", mixinStandardHelpOptions = true, versionProvider = ScenesCommand.Version.class,
         description = "Learn to play RoboCup 2D soccer by watching another agent: record, convert, validate, play.",
         subcommands = {CommandLine.HelpCommand.class, PluginsCommand.class, ConvertCommand.class,
-                ShowCommand.class, StatsCommand.class, ExportCommand.class,
+                ShowCommand.class, StatsCommand.class, ExportCommand.class, CondenseCommand.class,
                 ValidateCommand.class, TuneCommand.class, ExperimentCommand.class, BenchCommand.class,
                 SimulateCommand.class, PlayCommand.class, TeamCommand.class, EvaluateCommand.class,
                 MatchCommand.class, ReplayCommand.class, DemoCommand.class, ProxyCommand.class, ServerCommand.class})

@@ -11,6 +11,11 @@ import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParentCommand;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.plugins.coverage.KeyScenes;
+import org.scenes.scene.SceneFile;
+import org.scenes.validate.MatchConfig;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
@@ -33,11 +38,28 @@ final class ShowCommand implements Callable<Integer> {
 
         @Option(names = "--cycle", paramLabel = "C", description = "Only the scenes of server cycle C.")
         Integer cycle;
+
+        @Option(names = "--key-scenes", paramLabel = "N",
+                description = "The N scenes whose neighbours' predictions hang on them most (see docs/extensions.md), most first.")
+        Integer keyScenes;
     }
+
+    @ParentCommand
+    ScenesCommand top;
+
+    @Option(names = "--metric", paramLabel = "NAME", description = "The metric ranking --key-scenes (default: the default configuration's).")
+    String metric;
+
+    @Option(names = "--key-by", paramLabel = "influence|events",
+            description = "--key-scenes by influence on neighbours' predictions (default) or the first N events (kicks, moves, the ball changing hands).")
+    String keyBy = "influence";
 
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
+        if (selection != null && selection.keyScenes != null) {
+            return showKeyScenes(out, selection.keyScenes);
+        }
         long shown = 0;
         long index = 0;
         try (SceneFileReader reader = SceneFileReader.open(file)) {
@@ -64,6 +86,34 @@ final class ShowCommand implements Callable<Integer> {
             String what = selection.index != null ? "index " + selection.index : "cycle " + selection.cycle;
             throw new UsageException("no scene with " + what + " in " + file + " (" + index + " scenes)");
         }
+        return ExitCodes.OK;
+    }
+
+    private int showKeyScenes(PrintWriter out, int count) {
+        if (count < 1) {
+            throw new UsageException("--key-scenes must be at least 1, not " + count);
+        }
+        if (!keyBy.equals("influence") && !keyBy.equals("events")) {
+            throw new UsageException("--key-by must be influence or events, not " + keyBy);
+        }
+        SceneFile scenes = SceneFileReader.read(file);
+        if (keyBy.equals("events")) {
+            return print(out, KeyScenes.events(scenes.scenes(), count), scenes.grid(), "events");
+        }
+        MatchConfig config = metric == null ? MatchConfig.DEFAULT : MatchConfig.DEFAULT.withMetric(metric, java.util.Map.of());
+        PluginRegistry registry = top.global.registry();
+        config.check(registry);
+        return print(out, KeyScenes.rank(scenes.grid(), scenes.scenes(), config.metricFactory(registry), count),
+                scenes.grid(), "influence");
+    }
+
+    private static int print(PrintWriter out, java.util.List<KeyScenes.Ranked> ranked, Grid grid, String measure) {
+        for (KeyScenes.Ranked each : ranked) {
+            out.printf("#%d  %s %d  ", each.index(), measure, each.influence());
+            out.print(VisionTable.render(each.scene(), grid));
+            out.println();
+        }
+        out.flush();
         return ExitCodes.OK;
     }
 }

@@ -44,6 +44,8 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
     private static final int POINTING = 1 << 6;
     private static final int PLAYER_DETAILS = 1 << 7;
     private static final int EXPLICIT_CELL = 1 << 8;
+    /** a remembered object's confidence follows (below 1) */
+    private static final int CONFIDENCE = 1 << 9;
 
     private final Grid grid;
     private final List<String> strings = new ArrayList<>();
@@ -175,6 +177,9 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
         if (explicitCell) {
             presence |= EXPLICIT_CELL;
         }
+        if (object.remembered()) {
+            presence |= CONFIDENCE;
+        }
         Shape shape = new Shape(object.kind(), object.relation(), object.name(), object.goalie(), object.mark(), presence);
         writeVarint(shapeIndex.computeIfAbsent(shape, key -> {
             shapes.add(key);
@@ -192,6 +197,9 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
         if (explicitCell) {
             writeVarint(object.cell().column());
             writeVarint(object.cell().row());
+        }
+        if (object.remembered()) {
+            writeValue(object.confidence());
         }
     }
 
@@ -295,8 +303,10 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
             }
             Cell cell = (presence & EXPLICIT_CELL) != 0 ? new Cell((int) varint(), (int) varint())
                     : grid.cell(values[0], values[1]);
+            double confidence = (presence & CONFIDENCE) != 0 ? value() : 1;
             return new SeenObject(shape.kind(), shape.name(), team, uniformNumber, shape.goalie(), shape.relation(),
-                    values[0], values[1], values[2], values[3], values[4], values[5], values[6], shape.mark(), cell);
+                    values[0], values[1], values[2], values[3], values[4], values[5], values[6], shape.mark(), cell,
+                    confidence);
         }
 
         private double value() {

@@ -56,7 +56,7 @@ public final class KnowledgeBase {
         /** Adds one player's scenes in order, through fresh transforms. */
         public Builder addSequence(Iterable<Scene> sequence, List<SceneTransform> transforms) {
             for (Scene scene : sequence) {
-                add(transformed(scene, transforms));
+                storedScenes(scene, transforms).forEach(this::add);
             }
             return this;
         }
@@ -129,6 +129,31 @@ public final class KnowledgeBase {
             out.add(transformed(scene, transforms));
         }
         return out;
+    }
+
+    /** What a knowledge base stores for one player's scenes through fresh transforms, in order (see {@link SceneTransform#stored}). */
+    public static List<Scene> stored(List<Scene> scenes, List<SceneTransform> transforms) {
+        if (transforms.isEmpty()) {
+            return scenes;
+        }
+        List<Scene> out = new ArrayList<>(scenes.size());
+        for (Scene scene : scenes) {
+            out.addAll(storedScenes(scene, transforms));
+        }
+        return out;
+    }
+
+    /** What the transforms store for one scene, in order: each transform's scenes for each scene before it. */
+    private static List<Scene> storedScenes(Scene scene, List<SceneTransform> transforms) {
+        List<Scene> current = List.of(scene);
+        for (SceneTransform transform : transforms) {
+            List<Scene> next = new ArrayList<>(current.size());
+            for (Scene each : current) {
+                next.addAll(transform.stored(each));
+            }
+            current = next;
+        }
+        return current;
     }
 
     private static Scene transformed(Scene scene, List<SceneTransform> transforms) {

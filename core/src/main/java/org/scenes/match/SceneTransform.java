@@ -9,4 +9,13 @@ import org.scenes.scene.Scene;
  */
 public interface SceneTransform {
     Scene apply(Scene scene);
+
+    /**
+     * The scenes a knowledge base stores for {@code scene}: by default {@link #apply} alone. A
+     * transform that adds scenes (the mirror image of each) returns several, while queries still
+     * go through {@link #apply}.
+     */
+    default java.util.List<Scene> stored(Scene scene) {
+        return java.util.List.of(apply(scene));
+    }
 }

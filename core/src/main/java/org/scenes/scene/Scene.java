@@ -1,6 +1,10 @@
 package org.scenes.scene;
 
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
+import java.util.function.Predicate;
+import java.util.stream.Collectors;
 
 /**
  * What one player saw in one cycle and what it did in response: the latest {@code see}
@@ -62,6 +66,51 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
     /** The primary action's type, {@link ActionType#NONE} when there is none. */
     public ActionType actionType() {
         return actions.isEmpty() ? ActionType.NONE : actions.get(0).type();
+    }
+
+    /** The same scene (cycle, observer, actions, memory, see age) holding other objects. */
+    public Scene withObjects(List<SeenObject> newObjects) {
+        return new Scene(cycle, observer, newObjects, actions, previous, seeAge);
+    }
+
+    /*
+     * Set operations on the objects of two scenes, objects being the same when their
+     * SeenObject.identity() is (kind, name, relation, team, uniform number). Each result is this
+     * scene (cycle, observer, actions, memory) with the resulting objects: this scene's own
+     * objects keep their order and values, the other's follow in theirs.
+     */
+
+    /** This scene's objects, then those of {@code other} whose identity none of this scene's has. */
+    public Scene union(Scene other) {
+        Set<String> own = identities(this);
+        List<SeenObject> joined = new ArrayList<>(objects);
+        Set<String> added = new java.util.HashSet<>();
+        for (SeenObject object : other.objects) {
+            if (!own.contains(object.identity()) && added.add(object.identity())) {
+                joined.add(object);
+            }
+        }
+        return withObjects(joined);
+    }
+
+    /** This scene's objects whose identity {@code other} holds too. */
+    public Scene intersection(Scene other) {
+        Set<String> theirs = identities(other);
+        return keep(object -> theirs.contains(object.identity()));
+    }
+
+    /** This scene's objects whose identity {@code other} does not hold. */
+    public Scene difference(Scene other) {
+        Set<String> theirs = identities(other);
+        return keep(object -> !theirs.contains(object.identity()));
+    }
+
+    private Scene keep(Predicate<SeenObject> wanted) {
+        return withObjects(objects.stream().filter(wanted).toList());
+    }
+
+    private static Set<String> identities(Scene scene) {
+        return scene.objects.stream().map(SeenObject::identity).collect(Collectors.toSet());
     }
 
     /** The same scene with objects re-assigned to the cells of another grid. */

@@ -70,11 +70,11 @@ public final class Folds {
         if (files.size() < 2) {
             throw new IllegalArgumentException("--folds needs at least two scene files, not " + files.size());
         }
-        List<List<Scene>> sequences = sequences(files, config, registry);
+        Sequences sequences = sequences(files, config, registry);
         List<ValidationReport> reports = new ArrayList<>();
         for (int i = 0; i < files.size(); i++) {
-            KnowledgeBase train = KnowledgeBase.of(files.get(0).grid(), trainingScenes(sequences, i, protocol));
-            reports.add(Validator.run(train, sequences.get(i), config, registry, parallel, progress));
+            KnowledgeBase train = KnowledgeBase.of(files.get(0).grid(), sequences.training(i, protocol));
+            reports.add(Validator.run(train, sequences.test(i), config, registry, parallel, progress));
         }
         return new Folds(reports, protocol);
     }
@@ -84,34 +84,47 @@ public final class Folds {
         return new Folds(reports, protocol);
     }
 
-    /** Each file's scenes through fresh transforms of the configuration, in file order; all files share one grid. */
-    public static List<List<Scene>> sequences(List<SceneFile> files, MatchConfig config, PluginRegistry registry) {
-        List<List<Scene>> sequences = new ArrayList<>();
-        for (SceneFile file : files) {
-            sequences.add(KnowledgeBase.transform(file.scenes(), config.transformFactory(registry).get()));
+    /**
+     * Each file's scenes through fresh transforms of the configuration, in file order, as queries
+     * and as training stores them (a mirror transform stores more scenes than it asks).
+     */
+    public record Sequences(List<List<Scene>> queries, List<List<Scene>> stored) {
+        /** The test scenes of fold {@code fold}: the queries of file {@code fold}. */
+        public List<Scene> test(int fold) {
+            return queries.get(fold);
         }
+
+        /** The training scenes of fold {@code fold}: the stored scenes of the other file(s). */
+        public List<Scene> training(int fold, Protocol protocol) {
+            List<Scene> trainScenes = new ArrayList<>();
+            if (protocol == Protocol.NEXT) {
+                trainScenes.addAll(stored.get((fold + 1) % stored.size()));
+            } else {
+                for (int j = 0; j < stored.size(); j++) {
+                    if (j != fold) {
+                        trainScenes.addAll(stored.get(j));
+                    }
+                }
+            }
+            return trainScenes;
+        }
+    }
+
+    /** The queries and stored scenes of every file; all files must share one grid. */
+    public static Sequences sequences(List<SceneFile> files, MatchConfig config, PluginRegistry registry) {
         for (SceneFile file : files) {
             if (!file.grid().equals(files.get(0).grid())) {
                 throw new IllegalArgumentException("scene files use different grids (" + files.get(0).grid().describe()
                         + " and " + file.grid().describe() + "); convert them with the same grid");
             }
         }
-        return sequences;
-    }
-
-    /** The training scenes of fold {@code fold} (whose test scenes are {@code sequences.get(fold)}). */
-    public static List<Scene> trainingScenes(List<List<Scene>> sequences, int fold, Protocol protocol) {
-        List<Scene> trainScenes = new ArrayList<>();
-        if (protocol == Protocol.NEXT) {
-            trainScenes.addAll(sequences.get((fold + 1) % sequences.size()));
-        } else {
-            for (int j = 0; j < sequences.size(); j++) {
-                if (j != fold) {
-                    trainScenes.addAll(sequences.get(j));
-                }
-            }
+        List<List<Scene>> queries = new ArrayList<>();
+        List<List<Scene>> stored = new ArrayList<>();
+        for (SceneFile file : files) {
+            queries.add(KnowledgeBase.transform(file.scenes(), config.transformFactory(registry).get()));
+            stored.add(KnowledgeBase.stored(file.scenes(), config.transformFactory(registry).get()));
         }
-        return trainScenes;
+        return new Sequences(queries, stored);
     }
 
     public Protocol protocol() {

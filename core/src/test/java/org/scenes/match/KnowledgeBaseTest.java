@@ -1,6 +1,7 @@
 package org.scenes.match;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -75,6 +76,8 @@ class KnowledgeBaseTest {
         objects.add(SeenObject.simple(ObjectKind.FLAG, "f c", Relation.NONE, Double.NaN, Double.NaN, grid));
         objects.add(new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, 3, 7,
                 -0.02, 0.1, Double.NaN, Double.NaN, Double.NaN, 'k', grid.cell(3, 7)));
+        // a remembered object keeps its confidence
+        objects.add(objects.get(objects.size() - 1).remembered(4, 60, 0.7 / 3, grid));
         Scene earlier = new Scene(-5, Observer.UNKNOWN, objects.subList(0, 2), List.of(Action.turn(-0.0)));
         Scene scene = new Scene(Integer.MAX_VALUE, new Observer("Carleton", Side.RIGHT, 9), objects,
                 List.of(Action.kick(100, Double.longBitsToDouble(0x7ff8000000000001L)),
@@ -89,6 +92,10 @@ class KnowledgeBaseTest {
             assertEquals(new Cell(7, 9), object.cell());
         }
         assertEquals(0x7ff8000000000001L, Double.doubleToRawLongBits(back.primaryAction().second()));
+        SeenObject remembered = back.objects().get(back.objects().size() - 1);
+        assertTrue(remembered.remembered());
+        assertEquals(0.7 / 3, remembered.confidence());
+        assertFalse(back.objects().get(0).remembered());
     }
 
     @Test

@@ -34,7 +34,7 @@ final class DistributedFolds implements AutoCloseable {
     private final Broadcast<SceneData> data;
     private final String job = UUID.randomUUID().toString();
     /** the driver's transformed sequences, by transform key */
-    private final Map<String, List<List<Scene>>> sequences = new HashMap<>();
+    private final Map<String, Folds.Sequences> sequences = new HashMap<>();
 
     /**
      * @param files the decoded scene files (the driver's copy, for rebuilding reports)
@@ -89,12 +89,12 @@ final class DistributedFolds implements AutoCloseable {
         }
         for (int c = 0; c < configurations.size(); c++) {
             MatchConfig config = configurations.get(c);
-            List<List<Scene>> transformed = sequences.computeIfAbsent(ConfigSpec.transformKey(config),
+            Folds.Sequences transformed = sequences.computeIfAbsent(ConfigSpec.transformKey(config),
                     key -> Folds.sequences(files, config, registry));
             List<ValidationReport> reports = new ArrayList<>();
             for (int fold = 0; fold < files.size(); fold++) {
                 Predictions p = byTask[c * files.size() + fold];
-                reports.add(ValidationReport.of(Folds.trainingScenes(transformed, fold, protocol), transformed.get(fold),
+                reports.add(ValidationReport.of(transformed.training(fold, protocol), transformed.test(fold),
                         p.actions(), p.nanos()));
             }
             results.put(config, Folds.of(reports, protocol));

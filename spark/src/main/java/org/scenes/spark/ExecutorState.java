@@ -29,7 +29,7 @@ final class ExecutorState {
     }
 
     private final List<SceneFile> files;
-    private final Map<String, List<List<Scene>>> sequences = new ConcurrentHashMap<>();
+    private final Map<String, Folds.Sequences> sequences = new ConcurrentHashMap<>();
     private final Map<String, Fold> folds = new ConcurrentHashMap<>();
 
     private ExecutorState(List<SceneFile> files) {
@@ -57,9 +57,9 @@ final class ExecutorState {
     Fold fold(MatchConfig config, PluginRegistry registry, int fold, Folds.Protocol protocol) {
         String key = ConfigSpec.transformKey(config);
         return folds.computeIfAbsent(key + "#" + fold, k -> {
-            List<List<Scene>> transformed = sequences.computeIfAbsent(key, t -> Folds.sequences(files, config, registry));
-            return new Fold(transformed.get(fold), KnowledgeBase.of(files.get(0).grid(),
-                    Folds.trainingScenes(transformed, fold, protocol)));
+            Folds.Sequences transformed = sequences.computeIfAbsent(key, t -> Folds.sequences(files, config, registry));
+            return new Fold(transformed.test(fold), KnowledgeBase.of(files.get(0).grid(),
+                    transformed.training(fold, protocol)));
         });
     }
 

@@ -66,11 +66,10 @@ final class TuneCommand implements Callable<Integer> {
         if (sweeps < 1) {
             throw new UsageException("--sweeps must be at least 1");
         }
-        Folds.Protocol chosen = switch (protocol) {
-            case "leave-one-out" -> Folds.Protocol.LEAVE_ONE_OUT;
-            case "next" -> Folds.Protocol.NEXT;
-            default -> throw new UsageException("--protocol must be leave-one-out or next, not " + protocol);
-        };
+        Folds.Protocol chosen = Folds.Protocol.fromKey(protocol);
+        if (chosen == null) {
+            throw new UsageException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
+        }
         Tuner.Objective goal = switch (objective) {
             case "mean" -> Tuner.Objective.MEAN;
             case "accuracy" -> Tuner.Objective.ACCURACY;

@@ -40,6 +40,7 @@ public final class BallGoalMetricProvider implements MetricProvider {
         options.put("missing", "cost of a ball or goal seen in one scene only (default 10)");
         options.put("memory", "weight of the remembered previous scene's ball and goal (needs the memory transform; default 0)");
         options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
+        options.put("remembered", "cost added when the ball or goal is remembered (recall transform) in one scene and seen in the other (default 0: compared alike)");
         options.put("index", "true: search an exact index of the distinct ball and goal keys; false: scan every scene (default true)");
         return options;
     }
@@ -52,7 +53,8 @@ public final class BallGoalMetricProvider implements MetricProvider {
         double missing = config.doubleOption("missing", 10);
         double memory = config.doubleOption("memory", 0);
         double memoryAction = config.doubleOption("memory-action", 0);
-        for (double value : new double[] {row, column, angle, missing, memory, memoryAction}) {
+        double remembered = config.doubleOption("remembered", 0);
+        for (double value : new double[] {row, column, angle, missing, memory, memoryAction, remembered}) {
             if (!(value >= 0) || Double.isInfinite(value)) {
                 throw new PluginException("ball-goal weights must be finite and not negative");
             }
@@ -62,7 +64,8 @@ public final class BallGoalMetricProvider implements MetricProvider {
             throw new PluginException("ball-goal option index must be true or false, not " + index);
         }
         return new BallGoalMetric(row, column, angle / 10, missing,
-                config.objectWeights().ball(), config.objectWeights().goal(), memory, memoryAction, index.equals("true"));
+                config.objectWeights().ball(), config.objectWeights().goal(), memory, memoryAction, index.equals("true"))
+                .withRemembered(remembered);
     }
 
     /**
@@ -80,6 +83,8 @@ public final class BallGoalMetricProvider implements MetricProvider {
         private final double memory;
         private final double memoryAction;
         private final boolean indexed;
+        /** cost of comparing a remembered object with a seen one; remembered objects are marked only when above 0 */
+        private double remembered;
 
         BallGoalMetric(double rowWeight, double columnWeight, double anglePerDegree, double missing,
                        double ballWeight, double goalWeight, double memory, double memoryAction, boolean indexed) {
@@ -94,10 +99,15 @@ public final class BallGoalMetricProvider implements MetricProvider {
             this.goalWeight = goalWeight;
         }
 
+        BallGoalMetric withRemembered(double cost) {
+            remembered = cost;
+            return this;
+        }
+
         /** Packed columns of the current scene's ball and goal, indexed unless disabled; none with memory terms. */
         @Override
         public PackedScenes pack(List<Scene> scenes) {
-            return memory > 0 || memoryAction > 0 ? null : PackedBallGoal.pack(this, scenes, indexed);
+            return memory > 0 || memoryAction > 0 || remembered > 0 ? null : PackedBallGoal.pack(this, scenes, indexed);
         }
 
         double rowWeight() {
@@ -130,7 +140,7 @@ public final class BallGoalMetricProvider implements MetricProvider {
         }
 
         /**
-         * [present, column, row, direction] for the ball, then for the opponent goal; then the
+         * [present (1 seen, 2 remembered when that costs), column, row, direction] for the ball, then for the opponent goal; then the
          * same for the remembered previous scene, and the previous action's class (-1 for none).
          */
         @Override
@@ -145,7 +155,7 @@ public final class BallGoalMetricProvider implements MetricProvider {
             return features;
         }
 
-        private static void place(Scene scene, double[] features, int start) {
+        private void place(Scene scene, double[] features, int start) {
             for (SeenObject object : scene.objects()) {
                 int offset;
                 if (object.kind() == ObjectKind.BALL) {
@@ -156,7 +166,7 @@ public final class BallGoalMetricProvider implements MetricProvider {
                     continue;
                 }
                 if (features[offset] == 0) { // the first one the server listed, should it list two
-                    features[offset] = 1;
+                    features[offset] = remembered > 0 && object.remembered() ? 2 : 1;
                     features[offset + 1] = object.cell().column();
                     features[offset + 2] = object.cell().row();
                     features[offset + 3] = Double.isNaN(object.direction()) ? 0 : object.direction();
@@ -188,7 +198,7 @@ public final class BallGoalMetricProvider implements MetricProvider {
             double cost = columnWeight * Math.abs(x[offset + 1] - y[offset + 1])
                     + rowWeight * Math.abs(x[offset + 2] - y[offset + 2])
                     + anglePerDegree * Math.abs(x[offset + 3] - y[offset + 3]);
-            return Math.min(cost, 2 * missing);
+            return Math.min(cost, 2 * missing) + (x[offset] != y[offset] ? remembered : 0);
         }
     }
 }

@@ -1,0 +1,97 @@
+package org.scenes.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.scenes.match.KnowledgeBase;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.plugins.coverage.Condenser;
+import org.scenes.scene.Grid;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SceneFile;
+import org.scenes.scene.SceneFileHeader;
+import org.scenes.scene.SceneFileReader;
+import org.scenes.scene.SceneFileWriter;
+import org.scenes.scene.SceneSource;
+import org.scenes.validate.MatchConfig;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.Spec;
+
+/** {@code scenes condense}: a smaller knowledge base that predicts the dropped scenes as the whole one did. */
+@Command(name = "condense", mixinStandardHelpOptions = true, sortOptions = false,
+        description = {"Keep only the scenes that decide something: edited (Wilson) then condensed (Hart) nearest neighbour",
+                "with the configuration's metric; writes one scene file usable wherever scene files are (docs/extensions.md)."})
+final class CondenseCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @ParentCommand
+    ScenesCommand top;
+
+    @Option(names = "--train", arity = "1..*", paramLabel = "FILE", required = true, description = "Scene files to condense.")
+    List<Path> train = new ArrayList<>();
+
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT.json[.gz]", required = true, description = "The condensed scene file.")
+    Path output;
+
+    @Option(names = "--edit-k", paramLabel = "K",
+            description = "Neighbours whose majority must agree with a scene for editing to keep it (default 3; 0: no editing).")
+    int editK = 3;
+
+    @Mixin
+    MatchOptions match;
+
+    @Override
+    public Integer call() throws Exception {
+        if (editK < 0) {
+            throw new UsageException("--edit-k must be 0 or more, not " + editK);
+        }
+        List<MatchConfig> configs = match.configs();
+        if (configs.size() != 1) {
+            throw new UsageException("condense takes one metric and one k");
+        }
+        MatchConfig config = configs.get(0);
+        PluginRegistry registry = top.global.registry();
+        config.check(registry);
+        List<Scene> scenes = new ArrayList<>();
+        Grid grid = null;
+        for (Path path : train) {
+            SceneFile file = SceneFileReader.read(path);
+            if (grid != null && !grid.equals(file.grid())) {
+                throw new IllegalArgumentException(path + ": grid " + file.grid().describe() + " differs from "
+                        + grid.describe() + " of " + train.get(0) + "; convert them with the same grid");
+            }
+            grid = file.grid();
+            // what a knowledge base of these files would store (transforms such as mirror add scenes)
+            scenes.addAll(KnowledgeBase.stored(file.scenes(), config.transformFactory(registry).get()));
+        }
+        long start = System.nanoTime();
+        Condenser.Result result = new Condenser(config.metricFactory(registry), editK).condense(grid, scenes);
+        double seconds = (System.nanoTime() - start) / 1e9;
+        try (SceneFileWriter writer = SceneFileWriter.create(output,
+                SceneFileHeader.of(grid, new SceneSource("condensed", null)))) {
+            for (Scene scene : result.scenes()) {
+                // remembered objects and memory are rebuilt by transforms when the file is read
+                writer.write(scene.withPrevious(null).withObjects(
+                        scene.objects().stream().filter(o -> !o.remembered()).toList()));
+            }
+            writer.commit();
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        out.printf(Locale.ROOT, "%-24s %s%n", "Configuration", config.describe());
+        out.printf(Locale.ROOT, "%-24s %d%n", "Scenes", scenes.size());
+        out.printf(Locale.ROOT, "%-24s %d%n", "Edited away", result.edited());
+        out.printf(Locale.ROOT, "%-24s %d (%.1f %% of the scenes), %d passes%n", "Kept", result.scenes().size(),
+                100.0 * result.scenes().size() / scenes.size(), result.passes());
+        out.printf(Locale.ROOT, "%-24s %.1f s%n", "Time", seconds);
+        out.printf(Locale.ROOT, "%-24s %s%n", "Written", output);
+        return ExitCodes.OK;
+    }
+}

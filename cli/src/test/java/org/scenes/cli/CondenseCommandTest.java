@@ -1,0 +1,64 @@
+package org.scenes.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scenes.scene.Action;
+import org.scenes.scene.Grid;
+import org.scenes.scene.ObjectKind;
+import org.scenes.scene.Observer;
+import org.scenes.scene.Relation;
+import org.scenes.scene.Scene;
+import org.scenes.scene.SceneFile;
+import org.scenes.scene.SceneFileHeader;
+import org.scenes.scene.SceneFileReader;
+import org.scenes.scene.SceneFileWriter;
+import org.scenes.scene.SceneSource;
+import org.scenes.scene.SeenObject;
+
+class CondenseCommandTest {
+    private final CommandRunner cli = new CommandRunner();
+
+    /** A player that turns to a ball out of the middle, dashes to it otherwise, kicks when it is near. */
+    private static Path scenes(Path dir) throws IOException {
+        Random random = new Random(5);
+        List<Scene> scenes = new ArrayList<>();
+        for (int i = 0; i < 400; i++) {
+            double direction = random.nextInt(81) - 40;
+            double distance = 0.5 + random.nextInt(30);
+            Action action = distance < 1 ? Action.kick(100, 0)
+                    : Math.abs(direction) > 20 ? Action.turn(direction) : Action.dash(80);
+            scenes.add(new Scene(i, Observer.UNKNOWN,
+                    List.of(SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, distance, direction, Grid.DEFAULT)),
+                    List.of(action)));
+        }
+        Path file = dir.resolve("player.json");
+        SceneFileWriter.write(file, new SceneFile(SceneFileHeader.of(Grid.DEFAULT, new SceneSource("", null)), scenes));
+        return file;
+    }
+
+    @Test
+    void condenseWritesFewerScenesThatPredictTheWholeFileAsWell(@TempDir Path dir) throws IOException {
+        Path file = scenes(dir);
+        Path condensed = dir.resolve("condensed.json.gz");
+        assertEquals(ExitCodes.OK, cli.run("condense", "--train", file, "--metric", "ball-goal", "-o", condensed), cli.err());
+        assertTrue(cli.out().contains("Kept"), cli.out());
+        int kept = SceneFileReader.read(condensed).scenes().size();
+        assertTrue(kept > 0 && kept < 200, "kept " + kept + " of 400");
+        assertEquals(ExitCodes.OK, cli.run("validate", "--train", condensed, "--test", file, "--metric", "ball-goal"), cli.err());
+        assertTrue(cli.out().contains("Action accuracy"), cli.out());
+        assertEquals(ExitCodes.OK, cli.run("show", file, "--key-scenes", "2", "--metric", "ball-goal"), cli.err());
+        assertTrue(cli.out().contains("influence"), cli.out());
+        assertEquals(ExitCodes.USAGE, cli.run("condense", "--train", file, "-o", dir.resolve("x.json"), "--edit-k", "-2"));
+        assertTrue(cli.err().contains("--edit-k"), cli.err());
+        assertTrue(Files.notExists(dir.resolve("x.json")), "nothing written on a usage error");
+    }
+}
