@@ -126,18 +126,34 @@ final class ProxyCommand implements Callable<Integer> {
         console.printf("logging to %s (%s); Ctrl-C to stop%n", out, format);
         console.flush();
         CountDownLatch stopped = new CountDownLatch(1);
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+        java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();
+        java.util.concurrent.atomic.AtomicBoolean clean = new java.util.concurrent.atomic.AtomicBoolean();
+        Runnable stop = () -> {
+            if (!closed.compareAndSet(false, true)) {
+                return;
+            }
             try {
                 proxy.close();
+                clean.set(true);
             } catch (IOException e) {
                 System.err.println("scenes: " + e.getMessage());
             } finally {
                 summary(console, proxy.stats());
                 stopped.countDown();
             }
-        }, "scenes-proxy-shutdown"));
+        };
+        // Ctrl-C and SIGTERM are the documented way to stop: handled here, a clean and complete
+        // shutdown exits 0 (the JVM's default would exit 130/143); the hook covers other exits
+        for (String signal : List.of("INT", "TERM")) {
+            try {
+                sun.misc.Signal.handle(new sun.misc.Signal(signal), s -> new Thread(stop, "scenes-proxy-stop").start());
+            } catch (IllegalArgumentException unavailable) {
+                // no such signal here: the shutdown hook still completes the logs
+            }
+        }
+        Runtime.getRuntime().addShutdownHook(new Thread(stop, "scenes-proxy-shutdown"));
         stopped.await();
-        return ExitCodes.OK;
+        return clean.get() ? ExitCodes.OK : ExitCodes.FAILURE;
     }
 
     private static void summary(PrintWriter console, ProxyStats stats) {

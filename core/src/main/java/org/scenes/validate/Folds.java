@@ -8,6 +8,7 @@ import java.util.function.ToDoubleFunction;
 import org.scenes.match.KnowledgeBase;
 import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.ActionType;
+import org.scenes.scene.Grid;
 import org.scenes.scene.Scene;
 import org.scenes.scene.SceneFile;
 
@@ -41,17 +42,12 @@ public final class Folds {
         if (files.size() < 2) {
             throw new IllegalArgumentException("--folds needs at least two scene files, not " + files.size());
         }
+        Grid grid = Grid.common(files);
         List<List<Scene>> sequences = new ArrayList<>();
         for (SceneFile file : files) {
             sequences.add(KnowledgeBase.transform(file.scenes(), config.transformFactory(registry).get()));
         }
         List<ValidationReport> reports = new ArrayList<>();
-        for (SceneFile file : files) {
-            if (!file.grid().equals(files.get(0).grid())) {
-                throw new IllegalArgumentException("scene files use different grids (" + files.get(0).grid().describe()
-                        + " and " + file.grid().describe() + "); convert them with the same grid");
-            }
-        }
         for (int i = 0; i < files.size(); i++) {
             List<Scene> trainScenes = new ArrayList<>();
             if (protocol == Protocol.NEXT) {
@@ -63,7 +59,7 @@ public final class Folds {
                     }
                 }
             }
-            KnowledgeBase train = KnowledgeBase.of(files.get(0).grid(), trainScenes);
+            KnowledgeBase train = KnowledgeBase.of(grid, trainScenes);
             reports.add(Validator.run(train, sequences.get(i), config, registry, parallel, progress));
         }
         return new Folds(reports, protocol);
