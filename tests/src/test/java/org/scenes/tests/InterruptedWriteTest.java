@@ -1,0 +1,137 @@
+package org.scenes.tests;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.BufferedWriter;
+import java.io.File;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Random;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scenes.scene.SceneFile;
+import org.scenes.scene.SceneFileReader;
+
+/**
+ * A child JVM running {@code scenes convert} or {@code scenes simulate} is stopped at random
+ * points, with SIGTERM (Ctrl-C's effect) or SIGKILL: afterwards each output is the old file or
+ * the complete new one, never a broken one, and after SIGTERM no temporary file is left (SIGKILL
+ * runs no code, so its temporary file stays: the target is still whole).
+ */
+class InterruptedWriteTest {
+    private static final int SEES = 150_000;
+    @TempDir
+    static Path dir;
+    private static Path bigLog;
+    private static Path smallLog;
+
+    @BeforeAll
+    static void logs() throws IOException {
+        bigLog = lsf("big.lsf", SEES);
+        smallLog = lsf("small.lsf", 50);
+    }
+
+    private static Path lsf(String name, int sees) throws IOException {
+        Path file = dir.resolve(name);
+        Random random = new Random(16);
+        try (BufferedWriter out = Files.newBufferedWriter(file, StandardCharsets.US_ASCII)) {
+            out.write("(init l 1 before_kick_off)\n");
+            for (int i = 0; i < sees; i++) {
+                out.write("(see " + i + " ((b) " + (1 + random.nextInt(40)) + " " + (random.nextInt(91) - 45)
+                        + ") ((g r) " + (5 + random.nextInt(60)) + " " + (random.nextInt(91) - 45) + ") ((f c) 20 "
+                        + (random.nextInt(91) - 45) + "))\n");
+                out.write(random.nextBoolean() ? "(dash " + random.nextInt(100) + ")\n" : "(turn " + (random.nextInt(91) - 45) + ")\n");
+            }
+        }
+        return file;
+    }
+
+    private static Process start(Path workDir, String... args) throws IOException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Xmx256m", "-cp", System.getProperty("java.class.path"), "org.scenes.cli.Main"));
+        command.addAll(Arrays.asList(args));
+        return new ProcessBuilder(command).directory(workDir.toFile()).redirectErrorStream(true)
+                .redirectOutput(workDir.resolve("child.out").toFile()).start();
+    }
+
+    private static List<Path> temporaries(Path directory) throws IOException {
+        try (Stream<Path> files = Files.walk(directory)) {
+            return files.filter(f -> f.getFileName().toString().endsWith(".tmp")).toList();
+        }
+    }
+
+    @Test
+    void aConvertStoppedAnywhereLeavesTheOldOrTheNewSceneFile() throws Exception {
+        Random random = new Random(1616);
+        int trials = 8;
+        int replaced = 0;
+        for (int trial = 0; trial < trials; trial++) {
+            boolean kill = trial % 4 == 3;
+            Path work = Files.createDirectories(dir.resolve("convert-" + trial));
+            Path target = work.resolve("scenes.json.gz");
+            Process old = start(work, "convert", smallLog.toString(), "-o", target.toString());
+            assertTrue(old.waitFor(120, TimeUnit.SECONDS) && old.exitValue() == 0, Files.readString(work.resolve("child.out")));
+            byte[] before = Files.readAllBytes(target);
+
+            Process child = start(work, "convert", bigLog.toString(), "-o", target.toString());
+            // a random point of the run: JVM start, reading, writing, the rename, or after it
+            Thread.sleep(300 + random.nextInt(6000));
+            if (kill) {
+                child.destroyForcibly();
+            } else {
+                child.destroy();
+            }
+            assertTrue(child.waitFor(120, TimeUnit.SECONDS), "the child stops");
+            String output = Files.readString(work.resolve("child.out"));
+            byte[] after = Files.readAllBytes(target);
+            if (!Arrays.equals(before, after)) {
+                SceneFile file = SceneFileReader.read(target);
+                assertEquals(SEES, file.scenes().size(), "a new file is complete: " + output);
+                replaced++;
+            } else {
+                assertArrayEquals(before, after);
+            }
+            if (!kill) {
+                assertEquals(List.of(), temporaries(work), "after SIGTERM: " + output);
+                if (child.exitValue() != 0) {
+                    assertTrue(output.contains("interrupted: "), output);
+                }
+            }
+        }
+        // what the random points reached is reported, not required (the machine's speed decides it)
+        System.out.println("InterruptedWriteTest: " + replaced + " of " + trials + " converts finished before the signal");
+    }
+
+    @Test
+    void aSimulationStoppedBySigtermLeavesNoHalfWrittenLog() throws Exception {
+        Random random = new Random(1617);
+        for (int trial = 0; trial < 3; trial++) {
+            Path work = Files.createDirectories(dir.resolve("simulate-" + trial));
+            Path logs = work.resolve("logs");
+            Process child = start(work, "simulate", "--teams", "krislet:2,krislet:2", "--cycles", "6000",
+                    "--seed", Integer.toString(trial + 1), "--out-dir", logs.toString());
+            Thread.sleep(500 + random.nextInt(5000));
+            child.destroy();
+            assertTrue(child.waitFor(120, TimeUnit.SECONDS), "the child stops");
+            assertEquals(List.of(), temporaries(work), Files.readString(work.resolve("child.out")));
+            if (Files.isDirectory(logs)) {
+                File[] written = logs.toFile().listFiles();
+                for (File log : written == null ? new File[0] : written) {
+                    // a log is there only when complete: it converts without error
+                    assertTrue(new org.scenes.convert.SceneConverter(org.scenes.scene.Grid.DEFAULT, false, null)
+                            .convert(log.toPath(), scene -> { }).scenes() > 0, log.toString());
+                }
+            }
+        }
+    }
+}
