@@ -119,12 +119,6 @@ final class ProxyCommand implements Callable<Integer> {
                     }
                 });
         LogProxy proxy = LogProxy.start(config);
-        for (Route route : routes) {
-            console.printf("%s: %s:%d -> %s%n", route.kind().name().toLowerCase(Locale.ROOT).replace('_', ' '),
-                    bind, proxy.listenPort(route.kind()), route.server());
-        }
-        console.printf("logging to %s (%s); Ctrl-C to stop%n", out, format);
-        console.flush();
         CountDownLatch stopped = new CountDownLatch(1);
         java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();
         java.util.concurrent.atomic.AtomicBoolean clean = new java.util.concurrent.atomic.AtomicBoolean();
@@ -152,6 +146,13 @@ final class ProxyCommand implements Callable<Integer> {
             }
         }
         Runtime.getRuntime().addShutdownHook(new Thread(stop, "scenes-proxy-shutdown"));
+        // only now "Ctrl-C to stop": a signal from here on is handled
+        for (Route route : routes) {
+            console.printf("%s: %s:%d -> %s%n", route.kind().name().toLowerCase(Locale.ROOT).replace('_', ' '),
+                    bind, proxy.listenPort(route.kind()), route.server());
+        }
+        console.printf("logging to %s (%s); Ctrl-C to stop%n", out, format);
+        console.flush();
         stopped.await();
         return clean.get() ? ExitCodes.OK : ExitCodes.FAILURE;
     }
