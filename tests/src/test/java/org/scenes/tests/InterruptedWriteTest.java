@@ -73,6 +73,13 @@ class InterruptedWriteTest {
     @Test
     void aConvertStoppedAnywhereLeavesTheOldOrTheNewSceneFile() throws Exception {
         Random random = new Random(1616);
+        // how long an uninterrupted run takes here and now: the stops are spread over it and a bit beyond
+        Path reference = Files.createDirectories(dir.resolve("reference"));
+        long started = System.nanoTime();
+        Process whole = start(reference, "convert", bigLog.toString(), "-o", reference.resolve("scenes.json.gz").toString());
+        assertTrue(whole.waitFor(600, TimeUnit.SECONDS) && whole.exitValue() == 0, Files.readString(reference.resolve("child.out")));
+        long runMillis = (System.nanoTime() - started) / 1_000_000;
+        assertEquals(SEES, SceneFileReader.read(reference.resolve("scenes.json.gz")).scenes().size());
         int trials = 8;
         int replaced = 0;
         for (int trial = 0; trial < trials; trial++) {
@@ -85,7 +92,7 @@ class InterruptedWriteTest {
 
             Process child = start(work, "convert", bigLog.toString(), "-o", target.toString());
             // a random point of the run: JVM start, reading, writing, the rename, or after it
-            Thread.sleep(300 + random.nextInt(6000));
+            Thread.sleep(runMillis / 5 + (long) (random.nextDouble() * runMillis * 1.1));
             if (kill) {
                 child.destroyForcibly();
             } else {
@@ -109,7 +116,8 @@ class InterruptedWriteTest {
             }
         }
         // what the random points reached is reported, not required (the machine's speed decides it)
-        System.out.println("InterruptedWriteTest: " + replaced + " of " + trials + " converts finished before the signal");
+        System.out.println("InterruptedWriteTest: " + replaced + " of " + trials + " converts finished before the signal"
+                + " (an uninterrupted one took " + runMillis + " ms)");
     }
 
     @Test
