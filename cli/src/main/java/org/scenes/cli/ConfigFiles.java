@@ -1,10 +1,13 @@
 package org.scenes.cli;
 
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -46,50 +49,110 @@ final class ConfigFiles {
         return map;
     }
 
+    /** The keys a configuration may hold; {@code crossValidation} is what tune writes beside them. */
+    static final List<String> KEYS = List.of("metric", "options", "objectWeights", "actionWeights", "k", "selector",
+            "selectorOptions", "transforms", "seed", "crossValidation");
+
+    /** Reads a configuration; a key that is unknown or of the wrong type is an error naming the key and the file. */
     static MatchConfig read(Path file) {
+        if (!Files.exists(file)) {
+            throw new UsageException(file + ": no such configuration file");
+        }
         JsonNode root;
         try (var in = Inputs.open(file)) {
             root = JSON.readTree(in);
+        } catch (JsonProcessingException e) {
+            JsonLocation at = e.getLocation();
+            throw new UsageException(file + (at == null ? "" : ":" + at.getLineNr() + ":" + at.getColumnNr())
+                    + ": not a valid configuration (JSON): " + e.getOriginalMessage());
         } catch (IOException e) {
             throw new UsageException(file + ": not a readable configuration: " + e.getMessage());
         }
         if (!(root instanceof ObjectNode)) {
             throw new UsageException(file + ": a configuration is a JSON object");
         }
+        root.fieldNames().forEachRemaining(key -> {
+            if (!KEYS.contains(key)) {
+                throw new UsageException(file + ": unknown key '" + key + "' (known: " + String.join(", ", KEYS) + ")");
+            }
+        });
         try {
             MatchConfig base = MatchConfig.DEFAULT;
             return new MatchConfig(
-                    text(root, "metric", base.metric()),
-                    strings(root.get("options")),
-                    root.has("objectWeights") ? ObjectWeights.parse(root.get("objectWeights").asText()) : base.objectWeights(),
-                    root.has("actionWeights") ? ActionWeights.parse(root.get("actionWeights").asText()) : base.actionWeights(),
-                    root.path("k").asInt(base.k()),
-                    text(root, "selector", base.selector()),
-                    strings(root.get("selectorOptions")),
-                    list(root.get("transforms")),
-                    root.path("seed").asLong(base.seed()));
+                    text(file, root, "metric", base.metric()),
+                    strings(file, root, "options"),
+                    root.has("objectWeights") ? ObjectWeights.parse(text(file, root, "objectWeights", "")) : base.objectWeights(),
+                    root.has("actionWeights") ? ActionWeights.parse(text(file, root, "actionWeights", "")) : base.actionWeights(),
+                    (int) integer(file, root, "k", base.k(), Integer.MIN_VALUE, Integer.MAX_VALUE),
+                    text(file, root, "selector", base.selector()),
+                    strings(file, root, "selectorOptions"),
+                    list(file, root, "transforms"),
+                    integer(file, root, "seed", base.seed(), Long.MIN_VALUE, Long.MAX_VALUE));
         } catch (IllegalArgumentException e) {
             throw new UsageException(file + ": " + e.getMessage());
         }
     }
 
-    private static String text(JsonNode root, String field, String fallback) {
-        JsonNode node = root.get(field);
-        return node == null || node.isNull() ? fallback : node.asText();
+    private static UsageException wrongType(Path file, String key, String expected, JsonNode node) {
+        return new UsageException(file + ": key '" + key + "' must be " + expected + ", not " + node);
     }
 
-    private static Map<String, String> strings(JsonNode node) {
+    private static String text(Path file, JsonNode root, String field, String fallback) {
+        JsonNode node = root.get(field);
+        if (node == null || node.isNull()) {
+            return fallback;
+        }
+        if (!node.isTextual()) {
+            throw wrongType(file, field, "a string", node);
+        }
+        return node.asText();
+    }
+
+    private static long integer(Path file, JsonNode root, String field, long fallback, long min, long max) {
+        JsonNode node = root.get(field);
+        if (node == null || node.isNull()) {
+            return fallback;
+        }
+        if (!node.isIntegralNumber() || !node.canConvertToLong() || node.asLong() < min || node.asLong() > max) {
+            throw wrongType(file, field, "an integer", node);
+        }
+        return node.asLong();
+    }
+
+    private static Map<String, String> strings(Path file, JsonNode root, String field) {
+        JsonNode node = root.get(field);
         Map<String, String> map = new LinkedHashMap<>();
-        if (node != null && node.isObject()) {
-            node.fields().forEachRemaining(e -> map.put(e.getKey(), e.getValue().asText()));
+        if (node == null || node.isNull()) {
+            return map;
+        }
+        if (!node.isObject()) {
+            throw wrongType(file, field, "an object of option values", node);
+        }
+        var fields = node.fields();
+        while (fields.hasNext()) {
+            var entry = fields.next();
+            if (!entry.getValue().isValueNode() || entry.getValue().isNull()) {
+                throw wrongType(file, field + "." + entry.getKey(), "a string or number", entry.getValue());
+            }
+            map.put(entry.getKey(), entry.getValue().asText());
         }
         return map;
     }
 
-    private static List<String> list(JsonNode node) {
+    private static List<String> list(Path file, JsonNode root, String field) {
+        JsonNode node = root.get(field);
         List<String> list = new ArrayList<>();
-        if (node != null && node.isArray()) {
-            node.forEach(n -> list.add(n.asText()));
+        if (node == null || node.isNull()) {
+            return list;
+        }
+        if (!node.isArray()) {
+            throw wrongType(file, field, "an array of names", node);
+        }
+        for (JsonNode item : node) {
+            if (!item.isTextual()) {
+                throw wrongType(file, field, "an array of names", node);
+            }
+            list.add(item.asText());
         }
         return list;
     }

@@ -18,6 +18,7 @@ import org.scenes.convert.DropReason;
 import org.scenes.convert.MalformedLine;
 import org.scenes.convert.Pairing;
 import org.scenes.convert.SceneConverter;
+import org.scenes.files.AtomicOutput;
 import org.scenes.scene.Grid;
 import org.scenes.scene.Observer;
 import org.scenes.scene.Scene;
@@ -94,12 +95,26 @@ final class ConvertCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         Grid grid = gridOptions.grid();
+        if (output.file != null) {
+            OutputPaths.checkFile("-o", output.file);
+        } else {
+            OutputPaths.checkDirectory("--out-dir", output.directory);
+        }
         PrintWriter err = spec.commandLine().getErr();
         SceneConverter converter = new SceneConverter(grid, pairing, strict, line -> warn(err, line));
         ConversionReport total = new ConversionReport();
-        List<Path> written = new ArrayList<>();
+        List<Path> written = new java.util.concurrent.CopyOnWriteArrayList<>();
         int failed = 0;
         long started = System.nanoTime();
+        Thread interrupted = new Thread(() -> {
+            // Ctrl-C or SIGTERM: no half-written scene file, and a word on what is complete
+            List<Path> abandoned = AtomicOutput.abandonAll();
+            err.printf("%nscenes: interrupted: %d of %d scene files written%s%s%n", written.size(),
+                    output.file != null ? 1 : logs.size(), written.isEmpty() ? "" : " (" + written + ")",
+                    abandoned.isEmpty() ? "" : "; not written (its temporary file removed): " + abandoned);
+            err.flush();
+        }, "scenes-convert-interrupted");
+        Runtime.getRuntime().addShutdownHook(interrupted);
         try (Progress progress = Progress.start(logs)) {
             if (output.file != null) {
                 try (LazyWriter writer = new LazyWriter(output.file, grid, sourceName(logs))) {
@@ -133,6 +148,12 @@ final class ConvertCommand implements Callable<Integer> {
                     progress.logDone(log);
                 }
             }
+        } finally {
+            try {
+                Runtime.getRuntime().removeShutdownHook(interrupted);
+            } catch (IllegalStateException stopping) {
+                // the JVM is already stopping: the hook reports
+            }
         }
         if (warningsShown < total.malformed()) {
             err.printf("scenes: warning: %d more malformed lines not shown%n", total.malformed() - warningsShown);
@@ -150,6 +171,10 @@ final class ConvertCommand implements Callable<Integer> {
 
     /** A log with messages but no scene is a failed conversion: says so in one line naming the log. */
     private static boolean noScenes(PrintWriter err, Path log, ConversionReport report) {
+        if (report.lines() == 0) {
+            err.printf("scenes: warning: %s is empty: no lines, no scenes%n", log);
+            return false;
+        }
         if (report.scenes() > 0 || (report.messages() == 0 && report.malformed() == 0)) {
             return false;
         }

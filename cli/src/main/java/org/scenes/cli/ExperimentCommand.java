@@ -33,9 +33,10 @@ import picocli.CommandLine.Spec;
 
 /** {@code scenes experiment}: a parameter sweep described by a Groovy script, validated configuration by configuration. */
 @Command(name = "experiment", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Run the parameter sweep a Groovy script describes (metrics x object weights x k x selectors x action",
-                "weights), cross-validating each configuration on the sweep's scene files as 'scenes validate --folds' does,",
-                "and write one results table as CSV, JSON, Markdown and an SVG chart. Sweep scripts: docs/scripting.md."})
+        // one element: the main help shows a command's first description line, which must be a whole sentence
+        description = {"Run the parameter sweep a Groovy script describes (metrics x object weights x k x selectors x action"
+                + " weights), cross-validating each configuration on the sweep's scene files as 'scenes validate --folds' does,"
+                + " and write one results table as CSV, JSON, Markdown and an SVG chart. Sweep scripts: docs/scripting.md."})
 final class ExperimentCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;

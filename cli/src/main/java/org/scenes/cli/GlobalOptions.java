@@ -25,6 +25,9 @@ final class GlobalOptions {
             List<Path> directories = new ArrayList<>(pluginPath);
             directories.addAll(PluginRegistry.parsePluginPath(System.getenv(PluginRegistry.PLUGIN_PATH_VARIABLE)));
             registry = PluginRegistry.load(directories);
+            for (String warning : registry.warnings()) {
+                System.err.println("scenes: warning: " + warning);
+            }
         }
         return registry;
     }

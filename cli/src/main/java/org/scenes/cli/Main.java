@@ -1,13 +1,25 @@
 package org.scenes.cli;
 
 import java.io.PrintWriter;
+import java.util.Set;
+import org.scenes.files.AtomicOutput;
 
 /** Entry point of the {@code scenes} launcher. */
 public final class Main {
     private Main() {
     }
 
+    /**
+     * Commands whose outputs are worthless when interrupted: on Ctrl-C or SIGTERM their temporary
+     * files are removed. Not the proxy, server or live players, which complete their logs then.
+     */
+    static final Set<String> ABANDONED_ON_INTERRUPT = Set.of("convert", "export", "validate", "tune", "experiment",
+            "simulate", "bench", "replay", "stats", "show");
+
     public static void main(String[] args) {
+        if (args.length > 0 && ABANDONED_ON_INTERRUPT.contains(args[0])) {
+            Runtime.getRuntime().addShutdownHook(new Thread(AtomicOutput::abandonAll, "scenes-abandon-outputs"));
+        }
         System.exit(ScenesCommand.commandLine().execute(args));
     }
 

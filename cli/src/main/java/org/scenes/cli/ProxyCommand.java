@@ -119,25 +119,42 @@ final class ProxyCommand implements Callable<Integer> {
                     }
                 });
         LogProxy proxy = LogProxy.start(config);
-        for (Route route : routes) {
-            console.printf("%s: %s:%d -> %s%n", route.kind().name().toLowerCase(Locale.ROOT).replace('_', ' '),
-                    bind, proxy.listenPort(route.kind()), route.server());
-        }
-        console.printf("logging to %s (%s); Ctrl-C to stop%n", out, format);
-        console.flush();
         CountDownLatch stopped = new CountDownLatch(1);
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+        java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();
+        java.util.concurrent.atomic.AtomicBoolean clean = new java.util.concurrent.atomic.AtomicBoolean();
+        Runnable stop = () -> {
+            if (!closed.compareAndSet(false, true)) {
+                return;
+            }
             try {
                 proxy.close();
+                clean.set(true);
             } catch (IOException e) {
                 System.err.println("scenes: " + e.getMessage());
             } finally {
                 summary(console, proxy.stats());
                 stopped.countDown();
             }
-        }, "scenes-proxy-shutdown"));
+        };
+        // Ctrl-C and SIGTERM are the documented way to stop: handled here, a clean and complete
+        // shutdown exits 0 (the JVM's default would exit 130/143); the hook covers other exits
+        for (String signal : List.of("INT", "TERM")) {
+            try {
+                sun.misc.Signal.handle(new sun.misc.Signal(signal), s -> new Thread(stop, "scenes-proxy-stop").start());
+            } catch (IllegalArgumentException unavailable) {
+                // no such signal here: the shutdown hook still completes the logs
+            }
+        }
+        Runtime.getRuntime().addShutdownHook(new Thread(stop, "scenes-proxy-shutdown"));
+        // only now "Ctrl-C to stop": a signal from here on is handled
+        for (Route route : routes) {
+            console.printf("%s: %s:%d -> %s%n", route.kind().name().toLowerCase(Locale.ROOT).replace('_', ' '),
+                    bind, proxy.listenPort(route.kind()), route.server());
+        }
+        console.printf("logging to %s (%s); Ctrl-C to stop%n", out, format);
+        console.flush();
         stopped.await();
-        return ExitCodes.OK;
+        return clean.get() ? ExitCodes.OK : ExitCodes.FAILURE;
     }
 
     private static void summary(PrintWriter console, ProxyStats stats) {

@@ -87,7 +87,8 @@ final class ReportTables {
         out.printf("  dash direction error   %s (body dashes on both sides; a plain dash is 0)%n",
                 number(report.dashDirectionError()));
         out.printf("  neck angle error       %s%n", number(report.neckAngleError()));
-        out.printf("Decision time            mean %.1f us, p99 %.1f us%n", report.meanDecisionMicros(), report.p99DecisionMicros());
+        out.printf("Decision time            mean %.1f us, p99 %.1f us, max %.1f us, all over the same %d decisions%n",
+                report.meanDecisionMicros(), report.p99DecisionMicros(), report.maxDecisionMicros(), report.testScenes());
         out.printf("Scenes per 100 ms        %d (stored scenes one decision could scan)%n", report.scenesPer100ms());
     }
 
@@ -97,9 +98,12 @@ final class ReportTables {
         out.printf("  %-28s %10s %10s%n", "figure", "mean", "std");
         for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : Folds.figuresWithBaselines().entrySet()) {
             boolean time = figure.getKey().contains("Micros");
-            double scale = time ? 1 : 100;
-            out.printf("  %-28s %10.3f %10.3f%s%n", figure.getKey(), scale * folds.mean(figure.getValue()),
-                    scale * folds.std(figure.getValue()), time ? " us" : " %");
+            // macro F1 is no rate: printed as the fraction it is, as in the pooled table
+            boolean fraction = figure.getKey().equals("macroF1");
+            double scale = time || fraction ? 1 : 100;
+            out.printf(fraction ? "  %-28s %10.4f %10.4f%s%n" : "  %-28s %10.3f %10.3f%s%n", figure.getKey(),
+                    scale * folds.mean(figure.getValue()), scale * folds.std(figure.getValue()),
+                    time ? " us" : fraction ? "" : " %");
         }
         out.println();
         out.println("Pooled over the decisions of all folds:");

@@ -35,6 +35,8 @@ final class ScenesCommand implements Runnable {
         commandLine.setExecutionExceptionHandler(ScenesCommand::handleError);
         commandLine.setExitCodeExceptionMapper(e -> ExitCodes.FAILURE);
         commandLine.setParameterExceptionHandler(ScenesCommand::handleUsageError);
+        // `--train a --frobnicate b`: an unknown option is a usage error wherever it stands, never a file name
+        commandLine.setUnmatchedOptionsAllowedAsOptionParameters(false);
         return commandLine;
     }
 
@@ -50,7 +52,7 @@ final class ScenesCommand implements Runnable {
         PrintWriter err = commandLine.getErr();
         boolean verbose = parseResult.hasMatchedOption("--verbose")
                 || (parseResult.subcommand() != null && anyVerbose(parseResult));
-        err.println("scenes: " + message(e));
+        err.println("scenes: " + printable(message(e)));
         if (verbose) {
             e.printStackTrace(err);
         }
@@ -76,6 +78,20 @@ final class ScenesCommand implements Runnable {
         }
         String message = e.getMessage();
         return message == null ? e.getClass().getSimpleName() : message;
+    }
+
+    /** Control characters of a message (quoted from a file) escaped, so they cannot drive the terminal. */
+    static String printable(String message) {
+        StringBuilder text = new StringBuilder(message.length());
+        for (int i = 0; i < message.length(); i++) {
+            char c = message.charAt(i);
+            if ((c < 0x20 && c != '\n') || c == 0x7f) {
+                text.append(String.format("\\x%02X", (int) c));
+            } else {
+                text.append(c);
+            }
+        }
+        return text.toString();
     }
 
     /** Version from the jar manifest, so it never drifts from the build. */

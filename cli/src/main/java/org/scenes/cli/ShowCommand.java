@@ -66,6 +66,7 @@ final class ShowCommand implements Callable<Integer> {
             Grid grid = reader.header().grid();
             while (reader.hasNext()) {
                 Scene scene = reader.next();
+                // with --index the rest is still read: a truncated or broken file is an error, not silence
                 boolean wanted = selection == null
                         || (selection.index != null && selection.index == index)
                         || (selection.cycle != null && selection.cycle == scene.cycle());
@@ -74,9 +75,6 @@ final class ShowCommand implements Callable<Integer> {
                     out.print(VisionTable.render(scene, grid));
                     out.println();
                     shown++;
-                    if (selection != null && selection.index != null) {
-                        break;
-                    }
                 }
                 index++;
             }

@@ -58,6 +58,7 @@ final class TuneCommand implements Callable<Integer> {
         if (sweeps < 1) {
             throw new UsageException("--sweeps must be at least 1");
         }
+        OutputPaths.checkFile("-o", output);
         List<SceneFile> files = new ArrayList<>();
         for (Path path : train) {
             files.add(SceneFileReader.read(path));

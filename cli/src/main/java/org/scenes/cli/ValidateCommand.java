@@ -13,8 +13,10 @@ import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.match.KnowledgeBase;
 import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.ActionType;
+import org.scenes.scene.Grid;
 import org.scenes.scene.Scene;
 import org.scenes.scene.SceneFile;
+import org.scenes.scene.SceneFileException;
 import org.scenes.scene.SceneFileReader;
 import org.scenes.validate.Folds;
 import org.scenes.validate.MatchConfig;
@@ -102,6 +104,9 @@ final class ValidateCommand implements Callable<Integer> {
         if (foldProtocol == null) {
             throw new UsageException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
         }
+        if (chart != null) {
+            OutputPaths.checkFile("--chart", chart, ".png", ".svg");
+        }
         List<MatchConfig> configs = match.configs();
         PluginRegistry registry = top.global.registry();
         for (MatchConfig config : configs) {
@@ -110,8 +115,19 @@ final class ValidateCommand implements Callable<Integer> {
         if (!labels.isEmpty() && labels.size() != configs.size()) {
             throw new UsageException(labels.size() + " --label for " + configs.size() + " configurations");
         }
-        List<SceneFile> trainFiles = readSameGrid(folds.isEmpty() ? train : folds);
-        List<SceneFile> testFiles = self ? trainFiles : readSameGrid(test);
+        List<Path> trainPaths = folds.isEmpty() ? train : folds;
+        List<Path> testPaths = self ? List.of() : test;
+        // Train and test are checked as one set: a test grid unlike the training grid matches silently wrong.
+        List<Path> allPaths = concat(trainPaths, testPaths);
+        List<SceneFile> all = readSameGrid(allPaths);
+        for (int i = 0; i < all.size(); i++) {
+            if (all.get(i).scenes().isEmpty()) {
+                // an accuracy over no scene is NaN, and a knowledge base without it silently smaller
+                throw new SceneFileException(allPaths.get(i), 0, 0, "holds no scenes; convert a log that has some", null);
+            }
+        }
+        List<SceneFile> trainFiles = all.subList(0, trainPaths.size());
+        List<SceneFile> testFiles = self ? trainFiles : all.subList(trainPaths.size(), all.size());
         long queries = (long) configs.size() * testFiles.stream().mapToLong(f -> f.scenes().size()).sum();
         List<Outcome> outcomes = new ArrayList<>();
         try (ProgressBar bar = progress(queries)) {
@@ -154,13 +170,14 @@ final class ValidateCommand implements Callable<Integer> {
      */
     static List<SceneFile> readSameGrid(List<Path> paths) {
         List<SceneFile> files = paths.parallelStream().map(SceneFileReader::read).toList();
-        for (int i = 1; i < files.size(); i++) {
-            if (!files.get(i).grid().equals(files.get(0).grid())) {
-                throw new UsageException(paths.get(i) + ": grid " + files.get(i).grid().describe() + " differs from "
-                        + files.get(0).grid().describe() + " of " + paths.get(0) + "; convert them with the same grid");
-            }
-        }
+        Grid.common(paths, files.stream().map(SceneFile::grid).toList());
         return files;
+    }
+
+    private static List<Path> concat(List<Path> first, List<Path> second) {
+        List<Path> all = new ArrayList<>(first);
+        all.addAll(second);
+        return all;
     }
 
     private static ProgressBar progress(long total) {

@@ -8,7 +8,8 @@ public final class LogException extends RuntimeException {
     private final long line;
 
     public LogException(Path file, long line, String message, Throwable cause) {
-        super(file + (line > 0 ? ":" + line : "") + ": " + message, cause);
+        // log text quoted in a message is escaped: raw control bytes would drive the user's terminal
+        super(file + (line > 0 ? ":" + line : "") + ": " + MalformedLine.escaped(message), cause);
         this.file = file;
         this.line = line;
     }

@@ -17,6 +17,11 @@ import org.scenes.proxylog.MessageEscapes;
  * A line whose frame (time, direction) is broken is still returned, with {@link #problem()} set.
  */
 public final class LogReader implements AutoCloseable {
+    /**
+     * The longest line read, in bytes: far above any message the server sends (8 KiB) even
+     * escaped, and low enough that a file with no line ends (e.g. {@code /dev/zero}) stops at once.
+     */
+    public static final int MAX_LINE_BYTES = 1 << 20;
     private final Path file;
     private final InputStream in;
     private final LogFormat format;
@@ -71,6 +76,9 @@ public final class LogReader implements AutoCloseable {
         }
         try {
             return new LogReader(file, in);
+        } catch (Inputs.CorruptGzipException e) {
+            closeQuietly(in);
+            throw new LogException(file, 0, e.reason(), e);
         } catch (IOException e) {
             closeQuietly(in);
             throw new LogException(file, 0, "cannot read: " + e.getMessage(), e);
@@ -112,6 +120,10 @@ public final class LogReader implements AutoCloseable {
                 continue;
             }
             problem = null;
+            String nul = nulProblem();
+            if (nul != null) {
+                return broken(nul);
+            }
             boolean message = switch (format) {
                 case LSF -> lsf();
                 case PROXY -> proxy();
@@ -280,10 +292,26 @@ public final class LogReader implements AutoCloseable {
 
     // ---- lines ------------------------------------------------------------------------------
 
+    /**
+     * NUL bytes are no part of any message: the server ends a datagram with one, which captures
+     * keep after the closing parenthesis; a NUL anywhere else (or a line of them) is a broken line.
+     */
+    private String nulProblem() {
+        int end = lineLength;
+        while (end > 0 && line[end - 1] == 0) {
+            end--;
+        }
+        if (end < lineLength && (end == 0 || line[end - 1] != ')')) {
+            return "NUL byte at column " + (end + 1);
+        }
+        int nul = LogFormat.indexOf(line, 0, end, (byte) 0);
+        return nul < 0 ? null : "NUL byte at column " + (nul + 1);
+    }
+
     private boolean isBlank() {
         for (int i = 0; i < lineLength; i++) {
             byte c = line[i];
-            if (c != ' ' && c != '\t' && c != 0) {
+            if (c != ' ' && c != '\t') {
                 return false;
             }
         }
@@ -332,8 +360,12 @@ public final class LogReader implements AutoCloseable {
         return true;
     }
 
-    private void append(int from, int to) {
+    private void append(int from, int to) throws IOException {
         int count = to - from;
+        if (lineLength + count > MAX_LINE_BYTES) {
+            throw new LogException(file, lineNumber + 1, "line longer than " + MAX_LINE_BYTES
+                    + " bytes, the longest a log line may be; is this a player log?", null);
+        }
         if (lineLength + count > line.length) {
             byte[] bigger = new byte[Math.max(line.length * 2, lineLength + count)];
             System.arraycopy(line, 0, bigger, 0, lineLength);

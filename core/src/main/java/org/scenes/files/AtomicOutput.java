@@ -4,17 +4,26 @@ import java.io.BufferedOutputStream;
 import java.io.FilterOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.zip.GZIPOutputStream;
 
 /**
  * An output file that appears only when complete: bytes go to a temporary file beside the
  * target, which {@link #commit()} renames over it. Closing without commit deletes the
  * temporary file, so a crash or an error never leaves a half-written target. A target
- * ending in {@code .gz} is gzip-compressed.
+ * ending in {@code .gz} is gzip-compressed. A command stopped by Ctrl-C or SIGTERM before its
+ * commit calls {@link #abandonAll()} from its shutdown hook, so no temporary file is left behind
+ * (not a hook of its own here: commands such as the proxy commit their logs in their hooks).
  */
 public final class AtomicOutput implements AutoCloseable {
     private final Path target;
@@ -23,15 +32,35 @@ public final class AtomicOutput implements AutoCloseable {
     private final OutputStream stream;
     private boolean closed;
 
+    /** Temporary files not yet committed or abandoned: what the shutdown hook deletes. */
+    private static final Set<Path> OPEN = ConcurrentHashMap.newKeySet();
+
     private AtomicOutput(Path target) throws IOException {
         this.target = target.toAbsolutePath();
         Path directory = this.target.getParent();
-        Files.createDirectories(directory);
+        if (Files.isDirectory(this.target)) {
+            throw new IOException(target + ": is a directory, not a file to write");
+        }
+        try {
+            Files.createDirectories(directory);
+        } catch (FileAlreadyExistsException e) {
+            throw new IOException(target + ": cannot write: " + e.getFile() + " is a file, not a directory", e);
+        } catch (IOException e) {
+            throw new IOException(target + ": cannot create its directory " + directory + ": " + reason(e), e);
+        }
         // Not Files.createTempFile: its owner-only permissions would carry over to the target.
         this.temporary = directory.resolve("." + this.target.getFileName() + "." + Long.toUnsignedString(
                 java.util.concurrent.ThreadLocalRandom.current().nextLong(), 36) + ".tmp");
-        OutputStream out = new BufferedOutputStream(
-                Files.newOutputStream(temporary, java.nio.file.StandardOpenOption.CREATE_NEW), 1 << 16);
+        OPEN.add(temporary);
+        OutputStream out;
+        try {
+            out = new BufferedOutputStream(
+                    Files.newOutputStream(temporary, java.nio.file.StandardOpenOption.CREATE_NEW), 1 << 16);
+        } catch (IOException e) {
+            OPEN.remove(temporary);
+            // the temporary file's name means nothing to the user: name the target and the reason
+            throw new IOException(target + ": cannot write in " + directory + ": " + reason(e), e);
+        }
         this.file = target.getFileName().toString().endsWith(".gz") ? new GZIPOutputStream(out, 1 << 16) : out;
         // Writers wrapping the stream may close it; only commit() or close() may end the file.
         this.stream = new FilterOutputStream(file) {
@@ -45,6 +74,37 @@ public final class AtomicOutput implements AutoCloseable {
                 flush();
             }
         };
+    }
+
+    private static String reason(IOException e) {
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof FileSystemException fileSystem && fileSystem.getReason() != null) {
+            return fileSystem.getReason();
+        }
+        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+    }
+
+    /**
+     * Deletes the temporary files of every output neither committed nor closed, for a shutdown hook
+     * of a command whose interrupted work is abandoned; returns the targets that were not written.
+     */
+    public static List<Path> abandonAll() {
+        List<Path> abandoned = new ArrayList<>();
+        for (Path temporary : List.copyOf(OPEN)) {
+            try {
+                Files.deleteIfExists(temporary);
+                OPEN.remove(temporary);
+                String name = temporary.getFileName().toString();
+                // ".<target>.<random>.tmp" back to the target's name
+                String target = name.substring(1, name.lastIndexOf('.', name.length() - 5));
+                abandoned.add(temporary.resolveSibling(target));
+            } catch (IOException e) {
+                // stopping: nothing more can be done
+            }
+        }
+        return abandoned;
     }
 
     public static AtomicOutput create(Path target) throws IOException {
@@ -77,6 +137,7 @@ public final class AtomicOutput implements AutoCloseable {
             }
             moved = true;
         } finally {
+            OPEN.remove(temporary);
             if (!moved) {
                 Files.deleteIfExists(temporary);
             }
@@ -94,6 +155,7 @@ public final class AtomicOutput implements AutoCloseable {
             file.close();
         } finally {
             Files.deleteIfExists(temporary);
+            OPEN.remove(temporary);
         }
     }
 }

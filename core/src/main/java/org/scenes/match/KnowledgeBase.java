@@ -80,14 +80,8 @@ public final class KnowledgeBase {
         if (files.isEmpty()) {
             throw new IllegalArgumentException("a knowledge base needs at least one scene file");
         }
-        Grid grid = files.get(0).grid();
-        Builder builder = builder(grid);
+        Builder builder = builder(Grid.common(files));
         for (SceneFile file : files) {
-            if (!file.grid().equals(grid)) {
-                throw new IllegalArgumentException("scene files use different grids (" + grid.describe() + " and "
-                        + file.grid().describe() + " from " + file.header().source().log()
-                        + "); convert them with the same --grid and --bounds");
-            }
             builder.addSequence(file.scenes(), transforms.get());
         }
         return builder.build();
@@ -109,9 +103,8 @@ public final class KnowledgeBase {
                 if (grid == null) {
                     grid = fileGrid;
                     builder = builder(grid);
-                } else if (!fileGrid.equals(grid)) {
-                    throw new IllegalArgumentException(path + ": grid " + fileGrid.describe() + " differs from "
-                            + grid.describe() + " of " + paths.get(0) + "; convert them with the same grid");
+                } else {
+                    Grid.common(List.of(paths.get(0), path), List.of(grid, fileGrid));
                 }
                 builder.addSequence(() -> reader, transforms.get());
             }

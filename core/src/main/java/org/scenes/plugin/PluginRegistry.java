@@ -16,6 +16,7 @@ import java.util.Map;
 import java.util.ServiceConfigurationError;
 import java.util.ServiceLoader;
 import java.util.TreeMap;
+import java.util.jar.JarFile;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.scenes.match.ActionSelector;
@@ -38,6 +39,7 @@ public final class PluginRegistry {
     public static final String PLUGIN_PATH_VARIABLE = "SCENES_PLUGIN_PATH";
 
     private final Map<PluginKind, Map<String, NamedProvider>> providers = new EnumMap<>(PluginKind.class);
+    private List<String> warnings = List.of();
 
     private PluginRegistry(ClassLoader loader) {
         for (PluginKind kind : PluginKind.values()) {
@@ -68,13 +70,21 @@ public final class PluginRegistry {
             return load();
         }
         List<URL> jars = new ArrayList<>();
+        List<String> warnings = new ArrayList<>();
         for (Path directory : pluginDirectories) {
             if (!Files.isDirectory(directory)) {
                 throw new PluginException("plugin directory " + directory + " does not exist or is not a directory");
             }
             try (Stream<Path> files = Files.list(directory)) {
                 for (Path jar : files.filter(f -> f.getFileName().toString().endsWith(".jar")).sorted().toList()) {
-                    jars.add(jar.toUri().toURL());
+                    String problem = jarProblem(jar);
+                    if (problem == null || !problem.startsWith("not")) {
+                        // a jar without a plugin may be a library of the plugins beside it: kept
+                        jars.add(jar.toUri().toURL());
+                    }
+                    if (problem != null) {
+                        warnings.add(jar + ": " + problem);
+                    }
                 }
             } catch (MalformedURLException e) {
                 throw new PluginException("bad plugin jar path in " + directory, e);
@@ -82,7 +92,31 @@ public final class PluginRegistry {
                 throw new PluginException("cannot list plugin directory " + directory + ": " + e.getMessage(), e);
             }
         }
-        return new PluginRegistry(new URLClassLoader(jars.toArray(URL[]::new), PluginRegistry.class.getClassLoader()));
+        PluginRegistry registry = new PluginRegistry(new URLClassLoader(jars.toArray(URL[]::new),
+                PluginRegistry.class.getClassLoader()));
+        registry.warnings = List.copyOf(warnings);
+        return registry;
+    }
+
+    /** Why a jar on the plugin path cannot add a plugin (not a zip, no service entry), or null when it can. */
+    private static String jarProblem(Path jar) {
+        try (JarFile file = new JarFile(jar.toFile())) {
+            for (PluginKind kind : PluginKind.values()) {
+                if (file.getEntry("META-INF/services/" + kind.service().getName()) != null) {
+                    return null;
+                }
+            }
+            return "holds no scenes plugin (no META-INF/services entry of a scenes plugin kind);"
+                    + " kept on the class path as a library";
+        } catch (IOException e) {
+            return "not a readable jar (" + (e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage())
+                    + "); ignored";
+        }
+    }
+
+    /** Jars on the plugin path that were skipped, one line each, for the command line to print once. */
+    public List<String> warnings() {
+        return warnings;
     }
 
     /** Directories named by {@value #PLUGIN_PATH_VARIABLE}-style text, separated by the platform's path separator. */

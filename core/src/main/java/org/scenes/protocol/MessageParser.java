@@ -179,7 +179,7 @@ public final class MessageParser {
                     end = i + 1;
                     return;
                 }
-            } else if (c == '"') {
+            } else if (c == '"' && startsString(i)) {
                 int close = i + 1;
                 while (close < end && buf[close] != '"') {
                     close++;
@@ -951,6 +951,19 @@ public final class MessageParser {
     }
 
     /** End of the atom or string at {@code pos}. */
+    /**
+     * Whether the quote at {@code i} opens a string: only at the start of an atom. A quote inside
+     * an atom ({@code p"x(}) is an ordinary byte, as {@link #atomEnd()} reads it; the balance check
+     * and the skipping must agree with it, or parentheses one skips the other counts (found by fuzzing).
+     */
+    private boolean startsString(int i) {
+        if (i == start) {
+            return true;
+        }
+        byte before = buf[i - 1];
+        return before == '(' || before == ')' || isSpace(before);
+    }
+
     private int atomEnd() {
         int p = pos;
         if (p < end && buf[p] == '"') {
@@ -986,7 +999,7 @@ public final class MessageParser {
         int depth = 0;
         while (pos < end) {
             byte c = buf[pos];
-            if (c == '"') {
+            if (c == '"' && startsString(pos)) {
                 pos = atomEnd();
                 continue;
             }

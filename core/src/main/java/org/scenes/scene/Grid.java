@@ -1,6 +1,7 @@
 package org.scenes.scene;
 
 import java.util.Arrays;
+import java.util.List;
 
 /**
  * The discretisation of the view into columns (angle slices) and rows (distance rings).
@@ -86,6 +87,32 @@ public final class Grid {
 
     public Cell cell(double distance, double direction) {
         return new Cell(column(direction), row(distance));
+    }
+
+    /**
+     * The grid that every source shares, the one check of mixed grids (matching never mixes them):
+     * the first source whose grid differs is named beside the first source's.
+     *
+     * @param sources what the user knows each grid by (a file name), in the order of {@code grids}
+     */
+    public static Grid common(List<?> sources, List<Grid> grids) {
+        if (grids.isEmpty() || sources.size() != grids.size()) {
+            throw new IllegalArgumentException("need one source per grid and at least one grid");
+        }
+        Grid first = grids.get(0);
+        for (int i = 1; i < grids.size(); i++) {
+            if (!grids.get(i).equals(first)) {
+                throw new IllegalArgumentException(sources.get(i) + ": grid " + grids.get(i).describe() + " differs from "
+                        + first.describe() + " of " + sources.get(0) + "; convert them with the same --grid and --bounds");
+            }
+        }
+        return first;
+    }
+
+    /** {@link #common(List, List)} over scene files held in memory, each known by its source log. */
+    public static Grid common(List<SceneFile> files) {
+        return common(files.stream().map(f -> f.header().source().log()).toList(),
+                files.stream().map(SceneFile::grid).toList());
     }
 
     /** "5x3 [-45,45] bounds 1,5": the form shown in reports and errors. */

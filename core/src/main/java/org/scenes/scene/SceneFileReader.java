@@ -454,6 +454,9 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         if (e instanceof java.io.EOFException) {
             return new SceneFileException(file, 0, 0, "the compressed file ends early (is it truncated?)", e);
         }
+        if (e instanceof org.scenes.files.Inputs.CorruptGzipException gzip) {
+            return new SceneFileException(file, 0, 0, gzip.reason(), e);
+        }
         long line = json == null ? 0 : json.currentLocation().getLineNr();
         long column = json == null ? 0 : json.currentLocation().getColumnNr();
         return new SceneFileException(file, line, column, e.getMessage(), e);

@@ -8,6 +8,7 @@ import java.util.function.ToDoubleFunction;
 import org.scenes.match.KnowledgeBase;
 import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.ActionType;
+import org.scenes.scene.Grid;
 import org.scenes.scene.Scene;
 import org.scenes.scene.SceneFile;
 
@@ -70,10 +71,11 @@ public final class Folds {
         if (files.size() < 2) {
             throw new IllegalArgumentException("--folds needs at least two scene files, not " + files.size());
         }
+        Grid grid = Grid.common(files);
         Sequences sequences = sequences(files, config, registry);
         List<ValidationReport> reports = new ArrayList<>();
         for (int i = 0; i < files.size(); i++) {
-            KnowledgeBase train = KnowledgeBase.of(files.get(0).grid(), sequences.training(i, protocol));
+            KnowledgeBase train = KnowledgeBase.of(grid, sequences.training(i, protocol));
             reports.add(Validator.run(train, sequences.test(i), config, registry, parallel, progress));
         }
         return new Folds(reports, protocol);
@@ -112,12 +114,7 @@ public final class Folds {
 
     /** The queries and stored scenes of every file; all files must share one grid. */
     public static Sequences sequences(List<SceneFile> files, MatchConfig config, PluginRegistry registry) {
-        for (SceneFile file : files) {
-            if (!file.grid().equals(files.get(0).grid())) {
-                throw new IllegalArgumentException("scene files use different grids (" + files.get(0).grid().describe()
-                        + " and " + file.grid().describe() + "); convert them with the same grid");
-            }
-        }
+        Grid.common(files);
         List<List<Scene>> queries = new ArrayList<>();
         List<List<Scene>> stored = new ArrayList<>();
         for (SceneFile file : files) {

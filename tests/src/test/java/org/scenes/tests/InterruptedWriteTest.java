@@ -1,0 +1,161 @@
+package org.scenes.tests;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.BufferedWriter;
+import java.io.File;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Random;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scenes.scene.SceneFile;
+import org.scenes.scene.SceneFileReader;
+
+/**
+ * A child JVM running {@code scenes convert} or {@code scenes simulate} is stopped at random
+ * points, with SIGTERM (Ctrl-C's effect) or SIGKILL: afterwards each output is the old file or
+ * the complete new one, never a broken one, and after SIGTERM no temporary file is left (SIGKILL
+ * runs no code, so its temporary file stays: the target is still whole).
+ */
+class InterruptedWriteTest {
+    private static final int SEES = 150_000;
+    @TempDir
+    static Path dir;
+    private static Path bigLog;
+    private static Path smallLog;
+
+    @BeforeAll
+    static void logs() throws IOException {
+        bigLog = lsf("big.lsf", SEES);
+        smallLog = lsf("small.lsf", 50);
+    }
+
+    private static Path lsf(String name, int sees) throws IOException {
+        Path file = dir.resolve(name);
+        Random random = new Random(16);
+        try (BufferedWriter out = Files.newBufferedWriter(file, StandardCharsets.US_ASCII)) {
+            out.write("(init l 1 before_kick_off)\n");
+            for (int i = 0; i < sees; i++) {
+                out.write("(see " + i + " ((b) " + (1 + random.nextInt(40)) + " " + (random.nextInt(91) - 45)
+                        + ") ((g r) " + (5 + random.nextInt(60)) + " " + (random.nextInt(91) - 45) + ") ((f c) 20 "
+                        + (random.nextInt(91) - 45) + "))\n");
+                out.write(random.nextBoolean() ? "(dash " + random.nextInt(100) + ")\n" : "(turn " + (random.nextInt(91) - 45) + ")\n");
+            }
+        }
+        return file;
+    }
+
+    private static Process start(Path workDir, String... args) throws IOException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Xmx256m", "-cp", System.getProperty("java.class.path"), "org.scenes.cli.Main"));
+        command.addAll(Arrays.asList(args));
+        return new ProcessBuilder(command).directory(workDir.toFile()).redirectErrorStream(true)
+                .redirectOutput(workDir.resolve("child.out").toFile()).start();
+    }
+
+    private static List<Path> temporaries(Path directory) throws IOException {
+        try (Stream<Path> files = Files.walk(directory)) {
+            return files.filter(f -> f.getFileName().toString().endsWith(".tmp")).toList();
+        }
+    }
+
+    @Test
+    void aConvertStoppedAnywhereLeavesTheOldOrTheNewSceneFile() throws Exception {
+        Random random = new Random(1616);
+        // how long an uninterrupted run takes here and now: the stops are spread over it and a bit beyond
+        Path reference = Files.createDirectories(dir.resolve("reference"));
+        long started = System.nanoTime();
+        Process whole = start(reference, "convert", bigLog.toString(), "-o", reference.resolve("scenes.json.gz").toString());
+        assertTrue(whole.waitFor(600, TimeUnit.SECONDS) && whole.exitValue() == 0, Files.readString(reference.resolve("child.out")));
+        long runMillis = (System.nanoTime() - started) / 1_000_000;
+        assertEquals(SEES, SceneFileReader.read(reference.resolve("scenes.json.gz")).scenes().size());
+        int trials = 8;
+        int replaced = 0;
+        for (int trial = 0; trial < trials; trial++) {
+            boolean kill = trial % 4 == 3;
+            Path work = Files.createDirectories(dir.resolve("convert-" + trial));
+            Path target = work.resolve("scenes.json.gz");
+            Process old = start(work, "convert", smallLog.toString(), "-o", target.toString());
+            assertTrue(old.waitFor(120, TimeUnit.SECONDS) && old.exitValue() == 0, Files.readString(work.resolve("child.out")));
+            byte[] before = Files.readAllBytes(target);
+
+            Process child = start(work, "convert", bigLog.toString(), "-o", target.toString());
+            // a random point of the run: JVM start, reading, writing, the rename, or after it
+            Thread.sleep(runMillis / 5 + (long) (random.nextDouble() * runMillis * 1.1));
+            if (kill) {
+                child.destroyForcibly();
+            } else {
+                child.destroy();
+            }
+            assertTrue(child.waitFor(120, TimeUnit.SECONDS), "the child stops");
+            String output = Files.readString(work.resolve("child.out"));
+            byte[] after = Files.readAllBytes(target);
+            if (!Arrays.equals(before, after)) {
+                SceneFile file = SceneFileReader.read(target);
+                assertEquals(SEES, file.scenes().size(), "a new file is complete: " + output);
+                replaced++;
+            } else {
+                assertArrayEquals(before, after);
+            }
+            if (!kill) {
+                assertEquals(List.of(), temporaries(work), "after SIGTERM: " + output);
+                // stopped before the command began (JVM start), during it (it says what it completed), or after it
+                assertTrue(output.isBlank() || output.contains("interrupted: ") || output.contains("Written"),
+                        "exit " + child.exitValue() + ": " + output);
+            }
+        }
+        // what the random points reached is reported, not required (the machine's speed decides it)
+        System.out.println("InterruptedWriteTest: " + replaced + " of " + trials + " converts finished before the signal"
+                + " (an uninterrupted one took " + runMillis + " ms)");
+    }
+
+    @Test
+    void aSimulationStoppedBySigtermLeavesNoHalfWrittenLog() throws Exception {
+        Random random = new Random(1617);
+        for (int trial = 0; trial < 3; trial++) {
+            Path work = Files.createDirectories(dir.resolve("simulate-" + trial));
+            Path logs = work.resolve("logs");
+            Process child = start(work, "simulate", "--teams", "krislet:2,krislet:2", "--cycles", "6000",
+                    "--seed", Integer.toString(trial + 1), "--out-dir", logs.toString());
+            Thread.sleep(500 + random.nextInt(5000));
+            child.destroy();
+            assertTrue(child.waitFor(120, TimeUnit.SECONDS), "the child stops");
+            assertEquals(List.of(), temporaries(work), Files.readString(work.resolve("child.out")));
+            if (Files.isDirectory(logs)) {
+                File[] written = logs.toFile().listFiles();
+                for (File log : written == null ? new File[0] : written) {
+                    // a log is there only when complete: it converts without error
+                    assertTrue(new org.scenes.convert.SceneConverter(org.scenes.scene.Grid.DEFAULT, false, null)
+                            .convert(log.toPath(), scene -> { }).scenes() > 0, log.toString());
+                }
+            }
+        }
+    }
+
+    @Test
+    void theProxyStoppedBySigtermExitsZeroAfterACleanShutdown() throws Exception {
+        Path work = Files.createDirectories(dir.resolve("proxy"));
+        Process child = start(work, "proxy", "--server", "127.0.0.1:6000", "--listen", "0", "--out", work.resolve("logs").toString());
+        Path output = work.resolve("child.out");
+        // bounded wait for the proxy to listen (its handlers are installed by then)
+        for (int i = 0; i < 1200 && !Files.readString(output).contains("Ctrl-C to stop"); i++) {
+            Thread.sleep(100);
+        }
+        assertTrue(Files.readString(output).contains("Ctrl-C to stop"), Files.readString(output));
+        child.destroy();
+        assertTrue(child.waitFor(60, TimeUnit.SECONDS), "the proxy stops");
+        assertEquals(0, child.exitValue(), Files.readString(output));
+        assertTrue(Files.readString(output).contains("messages logged"), "the summary is printed: " + Files.readString(output));
+    }
+}
