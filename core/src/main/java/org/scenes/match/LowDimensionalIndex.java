@@ -340,14 +340,16 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             return node; // all points alike in every compared float (cannot happen for distinct points)
         }
         int middle = (from + to) >>> 1;
-        int dimension = widest;
-        Integer[] range = new Integer[to - from];
+        // sorted as primitive keys: the float made order-preserving in the high half, the point in the low
+        long[] keys = new long[to - from];
         for (int r = from; r < to; r++) {
-            range[r - from] = order[r];
+            int bits = Float.floatToIntBits(values[order[r] * width + widest]);
+            int ordered = bits ^ ((bits >> 31) & 0x7fffffff);
+            keys[r - from] = (long) ordered << 32 | (order[r] & 0xffffffffL);
         }
-        Arrays.sort(range, (x, y) -> Float.compare(values[x * width + dimension], values[y * width + dimension]));
+        Arrays.sort(keys);
         for (int r = from; r < to; r++) {
-            order[r] = range[r - from];
+            order[r] = (int) keys[r - from];
         }
         int left = split(tree, order, from, middle);
         int right = split(tree, order, middle, to);

@@ -40,7 +40,8 @@ final class BenchSets {
     static KnowledgeBase synthetic(int size, boolean remember) {
         long start = System.nanoTime();
         KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
-        SyntheticScenes.generate(KNOWLEDGE_SEED, size, Grid.DEFAULT, remember ? remembering(builder::add) : builder::add);
+        java.util.function.Consumer<Scene> add = remember ? remembering(builder::add) : builder::add;
+        SyntheticScenes.generate(KNOWLEDGE_SEED, size, Grid.DEFAULT, add);
         KnowledgeBase knowledge = builder.build();
         report("generated " + size + " synthetic scenes into the knowledge base", start);
         return knowledge;
@@ -52,12 +53,13 @@ final class BenchSets {
 
     static List<Scene> syntheticQueries(boolean remember) {
         List<Scene> queries = new ArrayList<>(QUERIES);
-        SyntheticScenes.generate(QUERY_SEED, QUERIES, Grid.DEFAULT, remember ? remembering(queries::add) : queries::add);
+        java.util.function.Consumer<Scene> add = remember ? remembering(queries::add) : queries::add;
+        SyntheticScenes.generate(QUERY_SEED, QUERIES, Grid.DEFAULT, add);
         return queries;
     }
 
     /** What the memory transform does to one file: each scene remembers the one before it. */
-    static SceneConverter.SceneSink remembering(SceneConverter.SceneSink sink) {
+    static java.util.function.Consumer<Scene> remembering(java.util.function.Consumer<Scene> sink) {
         Scene[] last = new Scene[1];
         return scene -> {
             Scene remembered = last[0] == null ? scene : scene.withPrevious(last[0]);
@@ -81,7 +83,8 @@ final class BenchSets {
         long start = System.nanoTime();
         KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
         for (String player : KRISLET_STORED) {
-            convert(player, remember ? remembering(builder::add) : builder::add);
+            java.util.function.Consumer<Scene> add = remember ? remembering(builder::add) : builder::add;
+            convert(player, add::accept);
         }
         KnowledgeBase knowledge = builder.build();
         report("converted " + knowledge.size() + " Krislet game 1 scenes into the knowledge base", start);
@@ -95,7 +98,8 @@ final class BenchSets {
 
     static List<Scene> krisletQueries(boolean remember) {
         List<Scene> all = new ArrayList<>();
-        convert("Carleton_2", remember ? remembering(all::add) : all::add);
+        java.util.function.Consumer<Scene> add = remember ? remembering(all::add) : all::add;
+        convert("Carleton_2", add::accept);
         List<Scene> queries = new ArrayList<>(QUERIES);
         for (int i = 0; i < QUERIES; i++) {
             queries.add(all.get(i * all.size() / QUERIES));
