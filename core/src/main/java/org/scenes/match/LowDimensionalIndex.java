@@ -120,21 +120,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         int stride = metric.stride();
         int width = slots * stride;
         int n = scenes.size();
-        int[] counts = new int[ObjectSetMetric.GROUPS];
-        int[] previousCounts = new int[ObjectSetMetric.GROUPS];
-        for (Scene scene : scenes) {
-            metric.count(scene, counts);
-            if (remember && scene.previous() != null) {
-                metric.count(scene.previous(), previousCounts);
-            } else {
-                Arrays.fill(previousCounts, 0);
-            }
-            for (int g : groups) {
-                if (counts[g] > 1 || previousCounts[g] > 1) {
-                    return null;
-                }
-            }
-        }
+        // one pass (each stored scene is decoded once): encode, and give up at a group of two objects
         float[] all = new float[Math.multiplyExact(n, width)];
         int[] sceneMask = new int[n];
         int[] sceneClass = new int[n];
@@ -144,6 +130,9 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             float[][] previous = remember ? metric.encode(scene.previous(), false).groups() : null;
             for (int s = 0; s < slots; s++) {
                 float[] objects = (slotPrevious[s] ? previous : current)[slotGroup[s]];
+                if (objects.length > stride) {
+                    return null;
+                }
                 if (objects.length > 0) {
                     sceneMask[i] |= 1 << s;
                     System.arraycopy(objects, 0, all, i * width + s * stride, stride);
