@@ -18,6 +18,7 @@ import org.scenes.plugin.PluginKind;
 import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.Grid;
 import org.scenes.scene.Scene;
+import org.scenes.validate.MatchConfig;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -33,7 +34,7 @@ import picocli.CommandLine.Spec;
  * scales with size can be seen without recorded data.
  */
 @Command(name = "bench", mixinStandardHelpOptions = true,
-        description = "Measure how many stored scenes each metric compares per 100 ms cycle (k=1, one thread).")
+        description = "Measure how many stored scenes each metric compares per 100 ms cycle and how long a decision takes (k=1, one thread).")
 final class BenchCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -55,6 +56,14 @@ final class BenchCommand implements Callable<Integer> {
 
     @Option(names = "--metric", paramLabel = "NAME", description = "Metric to measure (repeatable; default: ball-goal with and without its index, continuous greedy and optimal, cell, projection).")
     List<String> metrics;
+
+    @Option(names = "--config", paramLabel = "CONFIG.json", description = "Also measure this configuration (from scenes tune),"
+            + " with its transforms applied to stored scenes and queries, at its k (repeatable).")
+    List<Path> configs;
+
+    @Option(names = "--latency", description = "Add each decision's wall-clock and thread CPU time, p50 and p99 in"
+            + " microseconds (a neighbour search; CPU time leaves out the waits of a busy machine).")
+    boolean latency;
 
     @Option(names = "--time", paramLabel = "SECONDS", defaultValue = "1", description = "Measuring time per metric, after as long again of warm-up (default ${DEFAULT-VALUE}).")
     double seconds;
@@ -93,6 +102,14 @@ final class BenchCommand implements Callable<Integer> {
         } else {
             metrics.forEach(name -> chosen.add(new Measured(name, name, PluginConfig.DEFAULT)));
         }
+        List<MatchConfig> configured = new ArrayList<>();
+        if (configs != null) {
+            for (Path file : configs) {
+                MatchConfig config = ConfigFiles.read(file);
+                config.check(registry);
+                configured.add(config);
+            }
+        }
         KnowledgeBase knowledge;
         List<Scene> queries = new ArrayList<>();
         String made = "";
@@ -108,20 +125,84 @@ final class BenchCommand implements Callable<Integer> {
             }
         }
         PrintWriter out = spec.commandLine().getOut();
-        out.printf(Locale.ROOT, "%d stored %sscenes%s, one thread, k=1%n%-24s %18s%n", knowledge.size(),
+        out.printf(Locale.ROOT, "%d stored %sscenes%s, one thread, k=1%n%-24s %18s", knowledge.size(),
                 synthetic != null ? "synthetic " : "", made, "metric", "scenes per 100 ms");
+        out.printf(Locale.ROOT, latency ? " %24s %24s%n" : "%n", "decision us p50 / p99", "CPU us p50 / p99");
         for (Measured measured : chosen) {
             registry.check(PluginKind.METRIC, measured.name(), measured.config());
             Recognizer recognizer = new Recognizer(knowledge, () -> registry.metric(measured.name(), measured.config()), 1);
-            scans(recognizer, queries, seconds); // warm-up
-            double perSecond = scans(recognizer, queries, seconds) * knowledge.size();
-            out.printf(Locale.ROOT, "%-24s %,18.0f%n", measured.label(), perSecond / 10);
-            out.flush();
+            row(out, measured.label(), recognizer, queries, knowledge.size());
+        }
+        for (int c = 0; c < configured.size(); c++) {
+            MatchConfig config = configured.get(c);
+            // the configuration's transforms (memory) on the stored scenes and the queries alike
+            KnowledgeBase transformed;
+            List<Scene> transformedQueries = new ArrayList<>();
+            if (synthetic != null) {
+                transformed = KnowledgeBase.of(Grid.DEFAULT, KnowledgeBase.transform(knowledge.scenes(),
+                        config.transformFactory(registry).get()));
+                transformedQueries = KnowledgeBase.transform(queries, config.transformFactory(registry).get());
+            } else {
+                transformed = KnowledgeBase.load(files, config.transformFactory(registry));
+                for (int i = 0; i < QUERIES; i++) {
+                    transformedQueries.add(transformed.scene((int) ((long) i * transformed.size() / QUERIES)));
+                }
+            }
+            Recognizer recognizer = new Recognizer(transformed, config.metricFactory(registry), config.k());
+            row(out, configs.get(c).getFileName().toString(), recognizer, transformedQueries, transformed.size());
         }
         if (metrics == null && chosen.stream().anyMatch(m -> m.label().equals("ball-goal (index)"))) {
             out.println("ball-goal (index) visits few scenes: its figure is stored scenes over decision time.");
         }
         return ExitCodes.OK;
+    }
+
+    /** One measured row: throughput, then the wall and CPU time of each decision. */
+    private void row(PrintWriter out, String label, Recognizer recognizer, List<Scene> queries, int stored) {
+        scans(recognizer, queries, seconds); // warm-up
+        double perSecond = scans(recognizer, queries, seconds) * stored;
+        out.printf(Locale.ROOT, "%-24s %,18.0f", label, perSecond / 10);
+        if (latency) {
+            long[][] times = decisions(recognizer, queries, seconds);
+            out.printf(Locale.ROOT, " %24s %24s",
+                    String.format(Locale.ROOT, "%.1f / %.1f", percentile(times[0], 0.5), percentile(times[0], 0.99)),
+                    String.format(Locale.ROOT, "%.1f / %.1f", percentile(times[1], 0.5), percentile(times[1], 0.99)));
+        }
+        out.println();
+        out.flush();
+    }
+
+    /**
+     * Wall and thread CPU nanoseconds of each of at least one pass of decisions over the queries
+     * (longer while {@code seconds} last): CPU time leaves out the waits of a busy machine.
+     */
+    private static long[][] decisions(Recognizer recognizer, List<Scene> queries, double seconds) {
+        java.lang.management.ThreadMXBean threads = java.lang.management.ManagementFactory.getThreadMXBean();
+        List<long[]> samples = new ArrayList<>();
+        long end = System.nanoTime() + (long) (seconds * 1e9);
+        int done = 0;
+        while (done < queries.size() || System.nanoTime() < end && done < 2_000_000) {
+            Scene query = queries.get(done % queries.size());
+            long cpu = threads.getCurrentThreadCpuTime();
+            long wall = System.nanoTime();
+            recognizer.nearest(query);
+            samples.add(new long[] {System.nanoTime() - wall, threads.getCurrentThreadCpuTime() - cpu});
+            done++;
+        }
+        long[][] times = new long[2][samples.size()];
+        for (int i = 0; i < samples.size(); i++) {
+            times[0][i] = samples.get(i)[0];
+            times[1][i] = samples.get(i)[1];
+        }
+        return times;
+    }
+
+    /** The q-quantile (nearest rank) in microseconds. */
+    private static double percentile(long[] nanos, double q) {
+        long[] sorted = nanos.clone();
+        java.util.Arrays.sort(sorted);
+        int rank = (int) Math.ceil(q * sorted.length) - 1;
+        return sorted[Math.max(0, Math.min(sorted.length - 1, rank))] / 1000.0;
     }
 
     /** A row of the table: what it is called and the metric with its options. */

@@ -88,7 +88,7 @@ final class ExperimentCommand implements Callable<Integer> {
         Path json = directory.resolve(base + ".json");
         Path markdown = directory.resolve(base + ".md");
         Path chart = directory.resolve(base + ".svg");
-        table.writeCsv(csv);
+        CsvFiles.write(csv, table.csvHeader(), table.csvRows());
         table.writeJson(json, command);
         writeMarkdown(markdown, table, command, chart.getFileName().toString());
         ExperimentChart.writeSvg(table, chart);

@@ -13,7 +13,9 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
+import org.apache.commons.csv.CSVPrinter;
 import org.scenes.files.AtomicOutput;
+import org.scenes.scene.Action;
 import org.scenes.scene.ActionType;
 import org.scenes.scene.ObjectKind;
 import org.scenes.scene.Relation;
@@ -30,7 +32,11 @@ import picocli.CommandLine.Spec;
 /**
  * {@code scenes export}: one row per scene for other learners (Weka, scikit-learn): the nearest
  * ball, own and opponent goal, and the K nearest teammates and opponents as distance/direction
- * pairs, the number of unidentified players, and the primary action as the class label (last).
+ * pairs, the number of unidentified players, optionally the previous action and the action's
+ * parameters, and the primary action as the class label (last). Several files give one table,
+ * their rows one after the other with a {@code file} column. Columns are a list built in one
+ * place ({@link #columns()}) and filled in the same order ({@link #row}), so a new column is
+ * one entry in each.
  */
 @Command(name = "export", mixinStandardHelpOptions = true,
         description = {"Write one row per scene as CSV or ARFF: cycle, ball, own goal, opponent goal and the K nearest"
@@ -45,8 +51,9 @@ final class ExportCommand implements Callable<Integer> {
     @Option(names = "--format", required = true, paramLabel = "csv|arff", description = "Output format: ${COMPLETION-CANDIDATES}.")
     Format format;
 
-    @Parameters(paramLabel = "FILE", description = "A scene file (.json or .json.gz).")
-    Path file;
+    @Parameters(arity = "1..*", paramLabel = "FILE", description = "Scene files (.json or .json.gz): one table, a file column"
+            + " first when there are several.")
+    List<Path> files;
 
     @Option(names = {"-o", "--output"}, paramLabel = "OUT", description = "Output file (written atomically); default stdout.")
     Path output;
@@ -64,6 +71,14 @@ final class ExportCommand implements Callable<Integer> {
 
     @Option(names = "--see-age", description = "Add a see_age column before the class: cycles since the see the scene shows.")
     boolean seeAge;
+
+    @Option(names = "--parameters", description = "Add the primary action's parameters before the class: turn_moment,"
+            + " dash_power, dash_dir, kick_power, kick_dir (missing unless the action is of that type).")
+    boolean parameters;
+
+    @Option(names = "--previous", description = "Add the previous scene's action (of the same file and player) before the"
+            + " class: previous_action (type; none at the start) and previous_turn_moment.")
+    boolean previous;
 
     @Option(names = "--missing", paramLabel = "TEXT", defaultValue = "",
             description = "CSV text for a value the scene lacks; default empty (ARFF always uses '?').")
@@ -90,8 +105,14 @@ final class ExportCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
+    private static final List<String> PARAMETER_COLUMNS = List.of("turn_moment", "dash_power", "dash_dir", "kick_power", "kick_dir");
+
     List<String> columns() {
-        List<String> columns = new ArrayList<>(List.of("cycle", "ball_dist", "ball_dir", "own_goal_dist", "own_goal_dir",
+        List<String> columns = new ArrayList<>();
+        if (files.size() > 1) {
+            columns.add("file");
+        }
+        columns.addAll(List.of("cycle", "ball_dist", "ball_dir", "own_goal_dist", "own_goal_dir",
                 "opp_goal_dist", "opp_goal_dir"));
         for (String who : new String[] {"mate", "opp"}) {
             for (int i = 1; i <= players; i++) {
@@ -103,39 +124,92 @@ final class ExportCommand implements Callable<Integer> {
         if (seeAge) {
             columns.add("see_age");
         }
+        if (previous) {
+            columns.add("previous_action");
+            columns.add("previous_turn_moment");
+        }
+        if (parameters) {
+            columns.addAll(PARAMETER_COLUMNS);
+        }
         columns.add(label == Label.primary ? "action" : label.name());
         return columns;
+    }
+
+    /** ARFF types of the columns that are not numeric; the class is nominal too. */
+    private String arffType(String column) {
+        return switch (column) {
+            case "file" -> "string";
+            case "previous_action" -> "{" + String.join(",", primaryValues()) + "}";
+            default -> "numeric";
+        };
     }
 
     private long export(Writer out) throws IOException {
         List<String> columns = columns();
         String gap = format == Format.arff ? "?" : missing;
-        try (SceneFileReader reader = SceneFileReader.open(file)) {
-            if (format == Format.arff) {
-                out.write("% scenes export of " + file.getFileName() + " (grid " + reader.header().grid().describe() + ")\n");
-                out.write("@relation scenes\n\n");
-                for (String column : columns.subList(0, columns.size() - 1)) {
-                    out.write("@attribute " + column + " numeric\n");
+        CSVPrinter csv = null;
+        long rows = 0;
+        for (Path file : files) {
+            try (SceneFileReader reader = SceneFileReader.open(file)) {
+                if (rows == 0 && file == files.get(0)) {
+                    if (format == Format.arff) {
+                        out.write("% scenes export of " + files.stream().map(f -> f.getFileName().toString())
+                                .collect(Collectors.joining(", ")) + " (grid " + reader.header().grid().describe() + ")\n");
+                        out.write("@relation scenes\n\n");
+                        for (String column : columns.subList(0, columns.size() - 1)) {
+                            out.write("@attribute " + column + " " + arffType(column) + "\n");
+                        }
+                        out.write("@attribute " + columns.get(columns.size() - 1) + " {" + String.join(",", classValues())
+                                + "}\n\n@data\n");
+                    } else {
+                        csv = CsvFiles.printer(out, columns);
+                    }
                 }
-                out.write("@attribute " + columns.get(columns.size() - 1) + " {" + String.join(",", classValues())
-                        + "}\n\n@data\n");
-            } else {
-                out.write(String.join(",", columns) + "\n");
+                Scene before = null;
+                String name = file.getFileName().toString();
+                while (reader.hasNext()) {
+                    Scene scene = reader.next();
+                    boolean continues = before != null && before.observer().equals(scene.observer()) && before.cycle() <= scene.cycle();
+                    List<String> cells = row(name, scene, continues ? before : null, gap);
+                    if (csv != null) {
+                        csv.printRecord(cells);
+                    } else {
+                        out.write(arffRow(cells));
+                    }
+                    before = scene;
+                    rows++;
+                }
             }
-            long rows = 0;
-            StringBuilder row = new StringBuilder(256);
-            while (reader.hasNext()) {
-                row.setLength(0);
-                appendRow(row, reader.next(), gap);
-                out.write(row.append('\n').toString());
-                rows++;
-            }
-            return rows;
         }
+        if (csv != null) {
+            csv.flush();
+        }
+        return rows;
     }
 
-    private void appendRow(StringBuilder row, Scene scene, String gap) {
-        row.append(scene.cycle());
+    /** ARFF quotes strings with a comma, quote or space in single quotes. */
+    private static String arffRow(List<String> cells) {
+        StringBuilder line = new StringBuilder(256);
+        for (String cell : cells) {
+            if (line.length() > 0) {
+                line.append(',');
+            }
+            if (cell.matches(".*[,'\\s%{}].*")) {
+                line.append('\'').append(cell.replace("\\", "\\\\").replace("'", "\\'")).append('\'');
+            } else {
+                line.append(cell);
+            }
+        }
+        return line.append('\n').toString();
+    }
+
+    /** One scene's cells, in the order of {@link #columns()}. */
+    private List<String> row(String file, Scene scene, Scene earlier, String gap) {
+        List<String> row = new ArrayList<>(32);
+        if (files.size() > 1) {
+            row.add(file);
+        }
+        row.add(Integer.toString(scene.cycle()));
         List<SeenObject> objects = scene.objects();
         pair(row, nearest(objects, ObjectKind.BALL, null), gap);
         pair(row, nearest(objects, ObjectKind.GOAL, Relation.OWN), gap);
@@ -148,12 +222,27 @@ final class ExportCommand implements Callable<Integer> {
                 pair(row, i < sorted.size() ? sorted.get(i) : null, gap);
             }
         }
-        row.append(',').append(objects.stream()
-                .filter(o -> o.kind() == ObjectKind.PLAYER && o.relation() == Relation.UNKNOWN).count());
+        row.add(Long.toString(objects.stream()
+                .filter(o -> o.kind() == ObjectKind.PLAYER && o.relation() == Relation.UNKNOWN).count()));
         if (seeAge) {
-            row.append(',').append(scene.seeAge());
+            row.add(Integer.toString(scene.seeAge()));
         }
-        row.append(',').append(label == Label.primary ? scene.actionType().key() : actionLabel().of(scene.actions()));
+        if (previous) {
+            Action last = earlier == null ? null : earlier.primaryAction();
+            row.add(last == null ? ActionType.NONE.key() : last.type().key());
+            row.add(number(last != null && last.type() == ActionType.TURN ? last.first() : Double.NaN, gap));
+        }
+        if (parameters) {
+            Action action = scene.primaryAction();
+            ActionType type = action == null ? ActionType.NONE : action.type();
+            row.add(number(type == ActionType.TURN ? action.first() : Double.NaN, gap));
+            row.add(number(type == ActionType.DASH ? action.first() : Double.NaN, gap));
+            row.add(number(type == ActionType.DASH ? action.second() : Double.NaN, gap));
+            row.add(number(type == ActionType.KICK ? action.first() : Double.NaN, gap));
+            row.add(number(type == ActionType.KICK ? action.second() : Double.NaN, gap));
+        }
+        row.add(label == Label.primary ? scene.actionType().key() : actionLabel().of(scene.actions()));
+        return row;
     }
 
     private ActionLabel actionLabel() {
@@ -163,6 +252,11 @@ final class ExportCommand implements Callable<Integer> {
             case neck -> ActionLabel.NECK;
             case both -> ActionLabel.BOTH;
         };
+    }
+
+    /** Every action type, none included: the values of previous_action. */
+    private static List<String> primaryValues() {
+        return Arrays.stream(ActionType.values()).map(ActionType::key).toList();
     }
 
     /** The ARFF class values: every class the label can take. */
@@ -193,20 +287,17 @@ final class ExportCommand implements Callable<Integer> {
         return Double.isNaN(object.distance()) ? Double.MAX_VALUE : object.distance();
     }
 
-    private static void pair(StringBuilder row, SeenObject object, String gap) {
-        row.append(',');
-        number(row, object == null ? Double.NaN : object.distance(), gap);
-        row.append(',');
-        number(row, object == null ? Double.NaN : object.direction(), gap);
+    private static void pair(List<String> row, SeenObject object, String gap) {
+        row.add(number(object == null ? Double.NaN : object.distance(), gap));
+        row.add(number(object == null ? Double.NaN : object.direction(), gap));
     }
 
-    private static void number(StringBuilder row, double value, String gap) {
+    private static String number(double value, String gap) {
         if (Double.isNaN(value)) {
-            row.append(gap);
+            return gap;
         } else if (value == Math.rint(value) && Math.abs(value) < 1e15) {
-            row.append((long) value);
-        } else {
-            row.append(value);
+            return Long.toString((long) value);
         }
+        return Double.toString(value);
     }
 }

@@ -10,7 +10,11 @@ import java.util.concurrent.Callable;
 import org.scenes.scene.SceneFile;
 import org.scenes.scene.SceneFileReader;
 import org.scenes.validate.Folds;
+import me.tongfei.progressbar.ConsoleProgressBarConsumer;
+import me.tongfei.progressbar.ProgressBar;
+import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.validate.MatchConfig;
+import org.scenes.validate.RandomSearch;
 import org.scenes.validate.Tuner;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -53,12 +57,37 @@ final class TuneCommand implements Callable<Integer> {
     @Option(names = "--quiet", description = "Do not print each configuration tried.")
     boolean quiet;
 
+    @Option(names = "--search", paramLabel = "descent|random",
+            description = {"descent (default): coordinate descent over a few families;",
+                    "random: seeded random configurations over every object class, both matchings, memory, k and"
+                            + " selectors, narrowed by successive halving on all cores (docs/validation.md)."})
+    String search = "descent";
+
+    @Option(names = "--budget", paramLabel = "N|TIME",
+            description = "For --search random: configurations to try (default 200), or a time such as 90s or 3m"
+                    + " (brackets of 90 until it is spent).")
+    String budget;
+
+    @Option(names = "--table", paramLabel = "FILE.csv|FILE.json",
+            description = "Also write every configuration tried, with its rung, queries and figures, as CSV or JSON.")
+    Path table;
+
     @Override
     public Integer call() throws Exception {
         if (sweeps < 1) {
             throw new UsageException("--sweeps must be at least 1");
         }
         OutputPaths.checkFile("-o", output);
+        if (!search.equals("descent") && !search.equals("random")) {
+            throw new UsageException("--search must be descent or random, not " + search);
+        }
+        if (budget != null && !search.equals("random")) {
+            throw new UsageException("--budget applies to --search random");
+        }
+        Budget limit = Budget.parse(budget == null ? "200" : budget);
+        if (table != null) {
+            TriedTable.checkName(table);
+        }
         List<SceneFile> files = new ArrayList<>();
         for (Path path : train) {
             files.add(SceneFileReader.read(path));
@@ -75,11 +104,17 @@ final class TuneCommand implements Callable<Integer> {
             case "macro-f1" -> Tuner.Objective.MACRO_F1;
             default -> throw new UsageException("--objective must be mean, accuracy, direction or macro-f1, not " + objective);
         };
+        if (search.equals("random")) {
+            return random(files, chosen, goal, limit, out);
+        }
         Tuner tuner = new Tuner(files, top.global.registry(), chosen, goal, quiet ? null : line -> {
             out.println(line);
             out.flush();
         });
         Tuner.Result result = tuner.tune(MatchConfig.DEFAULT.withSeed(seed), Tuner.defaultSearch(), sweeps);
+        if (table != null) {
+            TriedTable.write(table, tuner.tried());
+        }
         Map<String, Object> score = new LinkedHashMap<>();
         score.put("score", result.score());
         score.put("protocol", protocol);
@@ -94,6 +129,78 @@ final class TuneCommand implements Callable<Integer> {
         out.printf("Best of %d configurations: %s%n", result.evaluated(), result.config().describe());
         out.printf("Cross-validation score %.4f (accuracy %.4f, with direction %.4f, macro F1 %.4f)%n", result.score(),
                 result.figures().get("accuracy"), result.figures().get("directionAccuracy"), result.figures().get("macroF1"));
+        out.println("Written to " + output);
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    /** How much --search random may try: a number of configurations, or a time. */
+    record Budget(int configurations, long nanos) {
+        static Budget parse(String text) {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("(\\d+)(s|m|h)?").matcher(text.trim());
+            if (!m.matches()) {
+                throw new UsageException("--budget must be a number of configurations (200) or a time (90s, 3m, 1h), not " + text);
+            }
+            long value = Long.parseLong(m.group(1));
+            if (value < 1) {
+                throw new UsageException("--budget must be at least 1, not " + text);
+            }
+            if (m.group(2) == null) {
+                if (value > 100_000) {
+                    throw new UsageException("--budget of more than 100000 configurations: give a time instead");
+                }
+                return new Budget((int) value, Long.MAX_VALUE);
+            }
+            long seconds = value * switch (m.group(2)) {
+                case "h" -> 3600;
+                case "m" -> 60;
+                default -> 1;
+            };
+            return new Budget(100_000, seconds * 1_000_000_000L);
+        }
+    }
+
+    private Integer random(List<SceneFile> files, Folds.Protocol chosen, Tuner.Objective goal, Budget limit, PrintWriter out)
+            throws java.io.IOException {
+        RandomSearch searcher = new RandomSearch(files, top.global.registry(), chosen, goal);
+        long startNanos = System.nanoTime();
+        long deadline = limit.nanos() == Long.MAX_VALUE ? Long.MAX_VALUE : startNanos + limit.nanos();
+        RandomSearch.Result result;
+        try (ProgressBar bar = System.console() == null || quiet ? null
+                : new ProgressBarBuilder().setTaskName("Tuning").setInitialMax(1).setUnit(" configurations", 1)
+                        .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build()) {
+            result = searcher.run(MatchConfig.DEFAULT.withSeed(seed), seed, limit.configurations(), deadline,
+                    bar == null ? null : (done, planned, best) -> {
+                        synchronized (bar) {
+                            bar.maxHint(Math.max(planned, done));
+                            bar.stepTo(done);
+                            bar.setExtraMessage(Double.isInfinite(best) ? "" : String.format(java.util.Locale.ROOT, "best %.4f", best));
+                        }
+                    });
+        }
+        double seconds = (System.nanoTime() - startNanos) / 1e9;
+        if (table != null) {
+            TriedTable.write(table, result.table());
+        }
+        long distinct = result.table().stream().map(RandomSearch.Tried::config).distinct().count();
+        Map<String, Object> score = new LinkedHashMap<>();
+        score.put("score", result.score());
+        score.put("protocol", protocol);
+        score.put("objective", objective);
+        score.put("search", "random search with successive halving");
+        score.put("figures", result.figures());
+        score.put("configurationsTried", distinct);
+        score.put("scores", result.table().size());
+        score.put("seconds", Math.round(seconds * 10) / 10.0);
+        score.put("trainFiles", train.stream().map(Path::toString).toList());
+        ConfigFiles.write(output, result.config(), Map.of("crossValidation", score));
+        out.printf("Best of %d configurations (%d scores, %.1f s): %s%n", distinct, result.table().size(), seconds,
+                result.config().describe());
+        out.printf("Cross-validation score %.4f (accuracy %.4f, with direction %.4f, macro F1 %.4f)%n", result.score(),
+                result.figures().get("accuracy"), result.figures().get("directionAccuracy"), result.figures().get("macroF1"));
+        if (table != null) {
+            out.println("Tried configurations written to " + table);
+        }
         out.println("Written to " + output);
         out.flush();
         return ExitCodes.OK;

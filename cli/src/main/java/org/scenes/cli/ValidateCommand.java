@@ -180,8 +180,12 @@ final class ValidateCommand implements Callable<Integer> {
         return all;
     }
 
+    /**
+     * A bar on a terminal, whatever the number of queries (a slow configuration takes minutes over a
+     * few thousand), cleared when done; none when output is piped.
+     */
     private static ProgressBar progress(long total) {
-        if (System.console() == null || total < 20_000) {
+        if (System.console() == null || total == 0) {
             return null;
         }
         return new ProgressBarBuilder().setTaskName("Validating").setInitialMax(total)

@@ -65,6 +65,24 @@ class BenchCommandTest {
     }
 
     @Test
+    void latencyColumnsAndAConfigurationFromTune() throws Exception {
+        Path config = dir.resolve("tuned.json");
+        java.nio.file.Files.writeString(config, "{\"metric\": \"continuous\", \"options\": {\"space\": \"polar\","
+                + " \"memory-action\": \"100\"}, \"objectWeights\": \"ball=1,goal=0.05\", \"transforms\": [\"memory\"]}");
+        assertEquals(0, run("bench", "--time", "0.02", "--synthetic", 1500, "--metric", "ball-goal", "--config", config,
+                "--latency"), cli.err());
+        List<String> rows = new ArrayList<>();
+        for (String line : cli.out().split("\n")) {
+            if (line.matches("\\S+\\s+[0-9,]+\\s+[0-9.]+ / [0-9.]+\\s+[0-9.]+ / [0-9.]+")) {
+                rows.add(line.substring(0, 24).trim());
+                String[] parts = line.trim().split("\\s+");
+                assertTrue(Double.parseDouble(parts[2]) <= Double.parseDouble(parts[4]), "p50 <= p99: " + line);
+            }
+        }
+        assertEquals(List.of("ball-goal", "tuned.json"), rows, cli.out());
+    }
+
+    @Test
     void knowledgeBaseFromFilesOrSyntheticExactlyOne() {
         assertEquals(ExitCodes.USAGE, run("bench", "--time", "0.05"));
         assertTrue(cli.err().contains("--synthetic"), cli.err());

@@ -4,9 +4,6 @@ import com.fasterxml.jackson.core.JsonEncoding;
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonGenerator;
 import java.io.IOException;
-import java.io.OutputStreamWriter;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -99,33 +96,34 @@ public final class ResultTable {
         }
     }
 
-    /** Every configuration and measure; numbers in full precision so files compare exactly. */
-    public void writeCsv(Path file) throws IOException {
-        try (AtomicOutput output = AtomicOutput.create(file);
-             Writer out = new OutputStreamWriter(output.stream(), StandardCharsets.UTF_8)) {
-            List<String> header = new ArrayList<>();
-            for (Axis axis : Axis.values()) {
-                header.add(axis.key());
-            }
-            header.addAll(measures());
-            out.write(String.join(",", header) + "\n");
-            for (Result result : results) {
-                List<String> cells = new ArrayList<>();
-                for (Axis axis : Axis.values()) {
-                    cells.add(csv(result.configuration().value(axis)));
-                }
-                for (String measure : measures()) {
-                    cells.add(number(result.measure(measure)));
-                }
-                out.write(String.join(",", cells) + "\n");
-            }
-            out.flush();
-            output.commit();
+    /** The CSV table's header: the axes, then the measures. */
+    public List<String> csvHeader() {
+        List<String> header = new ArrayList<>();
+        for (Axis axis : Axis.values()) {
+            header.add(axis.key());
         }
+        header.addAll(measures());
+        return header;
     }
 
-    private static String csv(String value) {
-        return value.contains(",") || value.contains("\"") ? '"' + value.replace("\"", "\"\"") + '"' : value;
+    /**
+     * Every configuration and measure, one row each, as the cells of the CSV table (numbers in
+     * full precision so files compare exactly, empty where a measure is undefined); the CLI writes
+     * them through a CSV library.
+     */
+    public List<List<String>> csvRows() {
+        List<List<String>> rows = new ArrayList<>();
+        for (Result result : results) {
+            List<String> cells = new ArrayList<>();
+            for (Axis axis : Axis.values()) {
+                cells.add(result.configuration().value(axis));
+            }
+            for (String measure : measures()) {
+                cells.add(number(result.measure(measure)));
+            }
+            rows.add(cells);
+        }
+        return rows;
     }
 
     private static String number(double value) {

@@ -78,12 +78,23 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         options.put("penalty-scale", "distance at which the unmatched penalty halves (default 10)");
         options.put("memory", "weight of the remembered previous scene (needs the memory transform; default 0)");
         options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
+        options.put("index", "true (default) to search an exact index when every weighted group holds at most one object"
+                + " per scene (ball, goals); false to scan every scene");
         if (projection) {
             options.put("cycles", "cycles to project objects forward by their distance/direction change (default 1; negative: back)");
         } else {
             options.put("space", "cartesian or polar (default for continuous: cartesian)");
         }
         return options;
+    }
+
+    /** The metric a plugin config asks for, with the defaults of the calling metric (and its {@code index} option). */
+    public static ObjectSetMetric create(PluginConfig config, Space defaultSpace, double defaultProjection) {
+        String index = config.option("index", "true").toLowerCase(Locale.ROOT);
+        if (!index.equals("true") && !index.equals("false")) {
+            throw new PluginException("option index=" + index + " must be true or false");
+        }
+        return new ObjectSetMetric(settings(config, defaultSpace, defaultProjection), index.equals("true"));
     }
 
     /** Settings from a plugin config, with the defaults of the calling metric. */
@@ -141,11 +152,19 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     private final int rowAt;
     private final boolean cell;
     private final double penaltyTimesScale;
+    /** Whether {@link #pack} may build the {@link LowDimensionalIndex}. */
+    private final boolean indexed;
     // scratch of the Encoded path; a metric instance serves one thread at a time
     private Assignment.Workspace workspace;
 
     public ObjectSetMetric(Settings settings) {
+        this(settings, true);
+    }
+
+    /** @param indexed whether low-dimensional configurations search an exact index (else every scene is scanned) */
+    public ObjectSetMetric(Settings settings, boolean indexed) {
         this.settings = settings;
+        this.indexed = indexed;
         polar = settings.space() == Space.POLAR;
         greedy = settings.matching() == Matching.GREEDY;
         rows = settings.rowWeight() > 0;
@@ -173,6 +192,11 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
 
     boolean greedy() {
         return greedy;
+    }
+
+    /** Where the penalty is within an object's floats, -1 when it follows from the position. */
+    int penaltyIndex() {
+        return penaltyAt;
     }
 
     double groupWeight(int group) {
@@ -508,9 +532,18 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * The knowledge base in one flat float array, scene after scene, each scene's groups in
      * order, each group's objects nearest first; per scene its start and its objects per group:
      * no object per scene or per object. Not for memory terms, which compare previous scenes too.
+     * Configurations whose weighted groups hold at most one object per scene (ball, goals), with
+     * or without memory terms, get the exact {@link LowDimensionalIndex} instead (unless
+     * {@code index=false}).
      */
     @Override
     public PackedScenes pack(List<Scene> scenes) {
+        if (indexed) {
+            LowDimensionalIndex index = LowDimensionalIndex.build(this, scenes);
+            if (index != null) {
+                return index;
+            }
+        }
         if (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0) {
             return null;
         }

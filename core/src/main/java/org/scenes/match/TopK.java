@@ -30,6 +30,19 @@ public final class TopK {
         return size;
     }
 
+    /** How many pairs are kept at most (k). */
+    public int capacity() {
+        return distance.length;
+    }
+
+    /**
+     * The index of the worst kept pair once full (a scene at exactly {@link #bound()} enters
+     * only with a lower index), Integer.MAX_VALUE before.
+     */
+    public int worstIndex() {
+        return size < distance.length ? Integer.MAX_VALUE : index[0];
+    }
+
     /** Keeps the pair if it is among the k best so far. */
     public void offer(double newDistance, int newIndex) {
         if (size < distance.length) {

@@ -34,6 +34,7 @@ public final class Tuner {
     private final Consumer<String> log;
     private final Map<MatchConfig, Double> scores = new HashMap<>();
     private final Map<MatchConfig, Folds> folds = new HashMap<>();
+    private final List<RandomSearch.Tried> tried = new ArrayList<>();
 
     private final Folds.Protocol protocol;
     private final java.util.function.ToDoubleFunction<ValidationReport> objective;
@@ -88,10 +89,17 @@ public final class Tuner {
         double score = objective.applyAsDouble(pooled);
         scores.put(config, score);
         folds.put(config, result);
+        tried.add(new RandomSearch.Tried(tried.size() + 1, config, 0, pooled.testScenes(), score, pooled.accuracy(),
+                pooled.directionAccuracy(), pooled.macroF1()));
         log.accept(String.format("%.4f  acc %.4f  dir %.4f  F1 %.4f  kicks %d/%d  %s", score, pooled.accuracy(),
                 pooled.directionAccuracy(), pooled.macroF1(), pooled.truePositives(org.scenes.scene.ActionType.KICK),
                 pooled.support(org.scenes.scene.ActionType.KICK), config.describe()));
         return score;
+    }
+
+    /** Every configuration scored so far, in order, on every query of every fold. */
+    public List<RandomSearch.Tried> tried() {
+        return List.copyOf(tried);
     }
 
     public Result tune(MatchConfig start, List<Dimension> dimensions, int sweeps) {

@@ -33,26 +33,58 @@ final class BenchSets {
 
     /** {@code size} synthetic scenes streamed into a knowledge base, never all held as objects. */
     static KnowledgeBase synthetic(int size) {
+        return synthetic(size, false);
+    }
+
+    /** As {@link #synthetic(int)}; with {@code remember}, each scene remembers the one generated before it. */
+    static KnowledgeBase synthetic(int size, boolean remember) {
         long start = System.nanoTime();
         KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
-        SyntheticScenes.generate(KNOWLEDGE_SEED, size, Grid.DEFAULT, builder::add);
+        java.util.function.Consumer<Scene> add = remember ? remembering(builder::add) : builder::add;
+        SyntheticScenes.generate(KNOWLEDGE_SEED, size, Grid.DEFAULT, add);
         KnowledgeBase knowledge = builder.build();
         report("generated " + size + " synthetic scenes into the knowledge base", start);
         return knowledge;
     }
 
     static List<Scene> syntheticQueries() {
+        return syntheticQueries(false);
+    }
+
+    static List<Scene> syntheticQueries(boolean remember) {
         List<Scene> queries = new ArrayList<>(QUERIES);
-        SyntheticScenes.generate(QUERY_SEED, QUERIES, Grid.DEFAULT, queries::add);
+        java.util.function.Consumer<Scene> add = remember ? remembering(queries::add) : queries::add;
+        SyntheticScenes.generate(QUERY_SEED, QUERIES, Grid.DEFAULT, add);
         return queries;
+    }
+
+    /** What the memory transform does to one file: each scene remembers the one before it. */
+    static java.util.function.Consumer<Scene> remembering(java.util.function.Consumer<Scene> sink) {
+        Scene[] last = new Scene[1];
+        return scene -> {
+            Scene remembered = last[0] == null ? scene : scene.withPrevious(last[0]);
+            last[0] = scene;
+            sink.accept(remembered);
+        };
+    }
+
+    /** Whether a benchmark metric name (see {@link #metric}) needs the memory transform. */
+    static boolean remembers(String metric) {
+        return metric.startsWith("tuned");
     }
 
     /** Game 1 of the shared Krislet data without Carleton_2 (about 22,000 scenes). */
     static KnowledgeBase krislet() {
+        return krislet(false);
+    }
+
+    /** As {@link #krislet()}; with {@code remember}, each player's scenes remember their previous one. */
+    static KnowledgeBase krislet(boolean remember) {
         long start = System.nanoTime();
         KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
         for (String player : KRISLET_STORED) {
-            convert(player, builder::add);
+            java.util.function.Consumer<Scene> add = remember ? remembering(builder::add) : builder::add;
+            convert(player, add::accept);
         }
         KnowledgeBase knowledge = builder.build();
         report("converted " + knowledge.size() + " Krislet game 1 scenes into the knowledge base", start);
@@ -61,8 +93,13 @@ final class BenchSets {
 
     /** {@value #QUERIES} of Carleton_2's scenes, spread evenly over its game. */
     static List<Scene> krisletQueries() {
+        return krisletQueries(false);
+    }
+
+    static List<Scene> krisletQueries(boolean remember) {
         List<Scene> all = new ArrayList<>();
-        convert("Carleton_2", all::add);
+        java.util.function.Consumer<Scene> add = remember ? remembering(all::add) : all::add;
+        convert("Carleton_2", add::accept);
         List<Scene> queries = new ArrayList<>(QUERIES);
         for (int i = 0; i < QUERIES; i++) {
             queries.add(all.get(i * all.size() / QUERIES));
@@ -84,7 +121,11 @@ final class BenchSets {
      * A fresh-metric supplier for a benchmark name: a metric plugin's name, {@code continuous-optimal}
      * ({@code continuous} with {@code matching=optimal}), {@code script-ball-goal} (the shipped
      * example script), and as in {@link MatchBench} {@code ball-goal} is its packed scan
-     * ({@code index=false}) and {@code ball-goal-index} its exact index (the plugin's default).
+     * ({@code index=false}) and {@code ball-goal-index} its exact index (the plugin's default);
+     * {@code tuned} is the tuned Krislet configuration of the README ({@code continuous}, polar,
+     * ball and goals, memory of the previous action: its low-dimensional index) and
+     * {@code tuned-scan} the same scanning every scene ({@code index=false}); both need the
+     * memory transform ({@link #remembers}).
      */
     static Supplier<SceneMetric> metric(String name) {
         PluginRegistry registry = PluginRegistry.load();
@@ -92,11 +133,16 @@ final class BenchSets {
             case "script-ball-goal" -> "script:" + Path.of(System.getProperty("scenes.examples", "../examples/scripts"), "ball-goal.groovy");
             case "continuous-optimal" -> "continuous";
             case "ball-goal-index" -> "ball-goal";
+            case "tuned", "tuned-scan" -> "continuous";
             default -> name;
         };
         PluginConfig config = switch (name) {
             case "continuous-optimal" -> PluginConfig.DEFAULT.withOptions(Map.of("matching", "optimal"));
             case "ball-goal" -> PluginConfig.DEFAULT.withOptions(Map.of("index", "false"));
+            case "tuned", "tuned-scan" -> PluginConfig.DEFAULT.withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05"))
+                    .withOptions(Map.of("space", "polar", "log-distance", "true", "distance-weight", "30",
+                            "direction-weight", "10", "row-weight", "1000", "penalty", "20000", "penalty-scale", "10000",
+                            "memory-action", "100", "index", Boolean.toString(name.equals("tuned"))));
             default -> PluginConfig.DEFAULT;
         };
         return () -> registry.metric(spec, config);

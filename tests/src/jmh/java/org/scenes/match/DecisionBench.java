@@ -26,7 +26,8 @@ import org.scenes.scene.Scene;
  * are reported. Knowledge bases ({@code knowledge}): {@code krislet}, the recorded Krislet game 1
  * without Carleton_2 (Carleton_2's scenes are the queries), or that many synthetic scenes. Metrics
  * named as in {@link BenchSets#metric}: {@code ball-goal-index} is what the agent uses,
- * {@code ball-goal} the packed scan without the index
+ * {@code ball-goal} the packed scan without the index, {@code tuned} the tuned Krislet
+ * configuration through its low-dimensional index and {@code tuned-scan} the same scanning every scene
  * ({@link BenchSets#synthetic}, synthetic queries). Each fork builds its knowledge base once
  * (printed as a {@code [setup]} line with the heap in use).
  */
@@ -44,7 +45,7 @@ public class DecisionBench {
     @Param({"1", "5", "15"})
     public int k;
 
-    @Param({"ball-goal-index", "ball-goal", "continuous"})
+    @Param({"ball-goal-index", "ball-goal", "continuous", "tuned", "tuned-scan"})
     public String metric;
 
     private Recognizer recognizer;
@@ -56,8 +57,9 @@ public class DecisionBench {
     @Setup
     public void build() {
         boolean recorded = knowledge.equals("krislet");
-        KnowledgeBase stored = recorded ? BenchSets.krislet() : BenchSets.synthetic(Integer.parseInt(knowledge));
-        queries = recorded ? BenchSets.krisletQueries() : BenchSets.syntheticQueries();
+        boolean remember = BenchSets.remembers(metric);
+        KnowledgeBase stored = recorded ? BenchSets.krislet(remember) : BenchSets.synthetic(Integer.parseInt(knowledge), remember);
+        queries = recorded ? BenchSets.krisletQueries(remember) : BenchSets.syntheticQueries(remember);
         recognizer = BenchSets.recognizer(stored, metric, k);
         selector = PluginRegistry.load().selector(k == 1 ? "first-valid" : "vote", PluginConfig.DEFAULT);
     }

@@ -36,6 +36,6 @@ public final class CellMetricProvider implements MetricProvider {
         Map<String, String> options = new LinkedHashMap<>(config.options());
         options.putIfAbsent("penalty", "1");
         options.putIfAbsent("penalty-scale", "1");
-        return new ObjectSetMetric(ObjectSetMetric.settings(config.withOptions(options), ObjectSetMetric.Space.CELL, 0));
+        return ObjectSetMetric.create(config.withOptions(options), ObjectSetMetric.Space.CELL, 0);
     }
 }

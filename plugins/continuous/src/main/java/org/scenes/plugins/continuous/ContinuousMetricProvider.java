@@ -25,6 +25,6 @@ public final class ContinuousMetricProvider implements MetricProvider {
 
     @Override
     public SceneMetric create(PluginConfig config) {
-        return new ObjectSetMetric(ObjectSetMetric.settings(config, ObjectSetMetric.Space.CARTESIAN, 0));
+        return ObjectSetMetric.create(config, ObjectSetMetric.Space.CARTESIAN, 0);
     }
 }

@@ -32,6 +32,6 @@ public final class ProjectionMetricProvider implements MetricProvider {
 
     @Override
     public SceneMetric create(PluginConfig config) {
-        return new ObjectSetMetric(ObjectSetMetric.settings(config, ObjectSetMetric.Space.CARTESIAN, 1));
+        return ObjectSetMetric.create(config, ObjectSetMetric.Space.CARTESIAN, 1);
     }
 }

@@ -1,0 +1,535 @@
+package org.scenes.match;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.scenes.scene.Scene;
+
+/**
+ * An exact index for {@link ObjectSetMetric} configurations whose weighted groups hold at most
+ * one object in every stored scene (ball, goals; the previous scene's too with {@code memory}),
+ * with or without memory terms: the low-dimensional configurations, such as the tuned Krislet
+ * one. As the {@code ball-goal} index does, it groups, bounds and visits cheapest first:
+ * <ul>
+ * <li>scenes with the same objects and previous action class (every float equal) are one
+ * <em>point</em>, which offers its k lowest indices;</li>
+ * <li>points are split into buckets by which groups they hold and (with {@code memory-action})
+ * their previous action class, and each bucket into a k-d tree whose nodes keep the box of their
+ * points' floats, their least unmatched penalty per group and their least scene index;</li>
+ * <li>a query visits nodes in order of a lower bound of their distance (box gaps and penalties,
+ * the memory-action term exact) and stops once that bound exceeds the k-th best, or equals it
+ * and the node holds no lower index.</li>
+ * </ul>
+ * Distances offered are computed by {@link ObjectSetMetric#groupDistance} in the exhaustive
+ * path's order, so they are bit-identical to it; bounds are shaved against float rounding.
+ * Read-only once built: queries keep their scratch per call.
+ */
+final class LowDimensionalIndex implements PackedMetric.PackedScenes {
+    private static final int LEAF = 8;
+    /** Bounds are lowered by this share: single-precision pair costs are within 3e-7 of the exact one. */
+    private static final double SHAVE = 1e-6;
+
+    private final ObjectSetMetric metric;
+    private final int stride;
+    private final boolean polar;
+    private final boolean optimal;
+    private final int rowAt;
+    private final double memoryAction;
+    /** Per slot (a weighted group of the scene, then of its previous scene) its group and weight. */
+    private final int[] slotGroup;
+    private final boolean[] slotPrevious;
+    private final double[] slotWeight;
+    private final int width;
+    /** Per point its floats (slot after slot, stride each), slot mask, previous action class, indices. */
+    private final float[] values;
+    private final int[] mask;
+    private final int[] actionClass;
+    private final int[] indexStart;
+    private final int[] indices;
+    // the k-d tree: per node its point range, children (-1 for leaves), box, least penalty per slot, least index
+    private final int[] nodeFrom;
+    private final int[] nodeTo;
+    private final int[] nodeLeft;
+    private final int[] nodeRight;
+    private final float[] nodeMin;
+    private final float[] nodeMax;
+    private final double[] nodePenalty;
+    private final int[] nodeIndex;
+    private final int[] roots;
+
+    private LowDimensionalIndex(ObjectSetMetric metric, int[] slotGroup, boolean[] slotPrevious, double[] slotWeight,
+                                float[] values, int[] mask, int[] actionClass, int[] indexStart, int[] indices, Tree tree) {
+        this.metric = metric;
+        this.stride = metric.stride();
+        ObjectSetMetric.Settings settings = metric.settings();
+        this.polar = settings.space() == ObjectSetMetric.Space.POLAR;
+        this.optimal = !metric.greedy();
+        this.rowAt = settings.rowWeight() > 0 ? stride - 1 : -1;
+        this.memoryAction = settings.memoryActionWeight();
+        this.slotGroup = slotGroup;
+        this.slotPrevious = slotPrevious;
+        this.slotWeight = slotWeight;
+        this.width = slotGroup.length * stride;
+        this.values = values;
+        this.mask = mask;
+        this.actionClass = actionClass;
+        this.indexStart = indexStart;
+        this.indices = indices;
+        this.nodeFrom = tree.from.stream().mapToInt(Integer::intValue).toArray();
+        this.nodeTo = tree.to.stream().mapToInt(Integer::intValue).toArray();
+        this.nodeLeft = tree.left.stream().mapToInt(Integer::intValue).toArray();
+        this.nodeRight = tree.right.stream().mapToInt(Integer::intValue).toArray();
+        this.nodeMin = tree.min.toArray();
+        this.nodeMax = tree.max.toArray();
+        this.nodePenalty = tree.penalty.stream().mapToDouble(Double::doubleValue).toArray();
+        this.nodeIndex = tree.index.stream().mapToInt(Integer::intValue).toArray();
+        this.roots = tree.roots.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    /** Points: how many in this index (distinct scenes as compared), for tests and docs. */
+    int points() {
+        return mask.length;
+    }
+
+    /**
+     * The index, or null when some weighted group holds more than one object in a stored scene
+     * (or there are more than 30 slots), where the other paths serve.
+     */
+    static LowDimensionalIndex build(ObjectSetMetric metric, List<Scene> scenes) {
+        ObjectSetMetric.Settings settings = metric.settings();
+        List<Integer> groups = new ArrayList<>();
+        for (int g = 0; g < ObjectSetMetric.GROUPS; g++) {
+            if (metric.groupWeight(g) != 0) {
+                groups.add(g);
+            }
+        }
+        boolean remember = settings.memoryWeight() > 0;
+        int slots = groups.size() * (remember ? 2 : 1);
+        if (slots == 0 || slots > 30) {
+            return null;
+        }
+        int[] slotGroup = new int[slots];
+        boolean[] slotPrevious = new boolean[slots];
+        double[] slotWeight = new double[slots];
+        for (int s = 0; s < slots; s++) {
+            slotGroup[s] = groups.get(s % groups.size());
+            slotPrevious[s] = s >= groups.size();
+            // as ObjectSetMetric.distance weighs them: scale times the group's weight
+            slotWeight[s] = (slotPrevious[s] ? settings.memoryWeight() : 1) * metric.groupWeight(slotGroup[s]);
+        }
+        int stride = metric.stride();
+        int width = slots * stride;
+        int n = scenes.size();
+        // one pass (each stored scene is decoded once): encode, and give up at a group of two objects
+        float[] all = new float[Math.multiplyExact(n, width)];
+        int[] sceneMask = new int[n];
+        int[] sceneClass = new int[n];
+        for (int i = 0; i < n; i++) {
+            Scene scene = scenes.get(i);
+            float[][] current = metric.encode(scene, false).groups();
+            float[][] previous = remember ? metric.encode(scene.previous(), false).groups() : null;
+            for (int s = 0; s < slots; s++) {
+                float[] objects = (slotPrevious[s] ? previous : current)[slotGroup[s]];
+                if (objects.length > stride) {
+                    return null;
+                }
+                if (objects.length > 0) {
+                    sceneMask[i] |= 1 << s;
+                    System.arraycopy(objects, 0, all, i * width + s * stride, stride);
+                }
+            }
+            sceneClass[i] = settings.memoryActionWeight() > 0 && scene.previous() != null
+                    ? ObjectSetMetric.actionClass(scene.previous()) : -1;
+        }
+        // scenes in order of (mask, class, floats, index): equal runs are points, buckets contiguous
+        Integer[] order = new Integer[n];
+        for (int i = 0; i < n; i++) {
+            order[i] = i;
+        }
+        Arrays.sort(order, (x, y) -> {
+            int c = Integer.compare(sceneMask[x], sceneMask[y]);
+            if (c != 0) {
+                return c;
+            }
+            c = Integer.compare(sceneClass[x], sceneClass[y]);
+            if (c != 0) {
+                return c;
+            }
+            for (int f = 0; f < width; f++) {
+                c = Integer.compare(Float.floatToIntBits(all[x * width + f]), Float.floatToIntBits(all[y * width + f]));
+                if (c != 0) {
+                    return c;
+                }
+            }
+            return Integer.compare(x, y);
+        });
+        List<Integer> starts = new ArrayList<>();
+        for (int r = 0; r < n; r++) {
+            if (r == 0 || !samePoint(all, width, sceneMask, sceneClass, order[r - 1], order[r])) {
+                starts.add(r);
+            }
+        }
+        int points = starts.size();
+        float[] values = new float[points * width];
+        int[] mask = new int[points];
+        int[] actionClass = new int[points];
+        int[] indexStart = new int[points + 1];
+        int[] indices = new int[n];
+        for (int p = 0; p < points; p++) {
+            int first = order[starts.get(p)];
+            System.arraycopy(all, first * width, values, p * width, width);
+            mask[p] = sceneMask[first];
+            actionClass[p] = sceneClass[first];
+            indexStart[p] = starts.get(p);
+        }
+        indexStart[points] = n;
+        for (int r = 0; r < n; r++) {
+            indices[r] = order[r];
+        }
+        LowDimensionalIndex shape = new LowDimensionalIndex(metric, slotGroup, slotPrevious, slotWeight, values, mask,
+                actionClass, indexStart, indices, new Tree());
+        return shape.withTree();
+    }
+
+    private static boolean samePoint(float[] all, int width, int[] mask, int[] classes, int x, int y) {
+        if (mask[x] != mask[y] || classes[x] != classes[y]) {
+            return false;
+        }
+        for (int f = 0; f < width; f++) {
+            if (Float.floatToIntBits(all[x * width + f]) != Float.floatToIntBits(all[y * width + f])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The tree under construction, in growable lists. */
+    private static final class Tree {
+        final List<Integer> from = new ArrayList<>();
+        final List<Integer> to = new ArrayList<>();
+        final List<Integer> left = new ArrayList<>();
+        final List<Integer> right = new ArrayList<>();
+        final FloatList min = new FloatList();
+        final FloatList max = new FloatList();
+        final List<Double> penalty = new ArrayList<>();
+        final List<Integer> index = new ArrayList<>();
+        final List<Integer> roots = new ArrayList<>();
+    }
+
+    private static final class FloatList {
+        private float[] data = new float[64];
+        private int size;
+
+        void add(float value) {
+            if (size == data.length) {
+                data = Arrays.copyOf(data, size * 2);
+            }
+            data[size++] = value;
+        }
+
+        float[] toArray() {
+            return Arrays.copyOf(data, size);
+        }
+    }
+
+    /**
+     * This index with its k-d trees: the points reordered within each bucket so that every
+     * node is a contiguous range, a tree per bucket.
+     */
+    private LowDimensionalIndex withTree() {
+        int points = mask.length;
+        int[] order = new int[points];
+        for (int p = 0; p < points; p++) {
+            order[p] = p;
+        }
+        Tree tree = new Tree();
+        int bucketStart = 0;
+        for (int p = 1; p <= points; p++) {
+            if (p == points || mask[p] != mask[bucketStart] || actionClass[p] != actionClass[bucketStart]) {
+                tree.roots.add(split(tree, order, bucketStart, p));
+                bucketStart = p;
+            }
+        }
+        // points in tree order, with their indices
+        float[] sortedValues = new float[values.length];
+        int[] sortedMask = new int[points];
+        int[] sortedClass = new int[points];
+        int[] sortedStart = new int[points + 1];
+        int[] sortedIndices = new int[indices.length];
+        int at = 0;
+        for (int r = 0; r < points; r++) {
+            int p = order[r];
+            System.arraycopy(values, p * width, sortedValues, r * width, width);
+            sortedMask[r] = mask[p];
+            sortedClass[r] = actionClass[p];
+            sortedStart[r] = at;
+            for (int i = indexStart[p]; i < indexStart[p + 1]; i++) {
+                sortedIndices[at++] = indices[i];
+            }
+        }
+        sortedStart[points] = at;
+        return new LowDimensionalIndex(metric, slotGroup, slotPrevious, slotWeight, sortedValues, sortedMask, sortedClass,
+                sortedStart, sortedIndices, tree);
+    }
+
+    /** A node over order[from, to): its box and, above a leaf's size, children split at the median of the widest weighted float. */
+    private int split(Tree tree, int[] order, int from, int to) {
+        int node = tree.from.size();
+        tree.from.add(from);
+        tree.to.add(to);
+        tree.left.add(-1);
+        tree.right.add(-1);
+        int slots = slotGroup.length;
+        float[] low = new float[width];
+        float[] high = new float[width];
+        Arrays.fill(low, Float.POSITIVE_INFINITY);
+        Arrays.fill(high, Float.NEGATIVE_INFINITY);
+        double[] penalty = new double[slots];
+        Arrays.fill(penalty, Double.POSITIVE_INFINITY);
+        int least = Integer.MAX_VALUE;
+        for (int r = from; r < to; r++) {
+            int p = order[r];
+            for (int f = 0; f < width; f++) {
+                float v = values[p * width + f];
+                low[f] = Math.min(low[f], v);
+                high[f] = Math.max(high[f], v);
+            }
+            for (int s = 0; s < slots; s++) {
+                if ((mask[p] & 1 << s) != 0) {
+                    penalty[s] = Math.min(penalty[s], metric.penalty(values, p * width + s * stride));
+                }
+            }
+            least = Math.min(least, indices[indexStart[p]]);
+        }
+        for (int f = 0; f < width; f++) {
+            tree.min.add(low[f]);
+            tree.max.add(high[f]);
+        }
+        for (int s = 0; s < slots; s++) {
+            tree.penalty.add(penalty[s]);
+        }
+        tree.index.add(least);
+        if (to - from <= LEAF) {
+            return node;
+        }
+        int widest = -1;
+        double extent = 0;
+        for (int f = 0; f < width; f++) {
+            int s = f / stride;
+            if ((mask[order[from]] & 1 << s) == 0 || f % stride == metric.penaltyIndex()) {
+                continue;
+            }
+            double e = slotWeight[s] * ((double) high[f] - low[f]);
+            if (e > extent) {
+                extent = e;
+                widest = f;
+            }
+        }
+        if (widest < 0) {
+            return node; // all points alike in every compared float (cannot happen for distinct points)
+        }
+        int middle = (from + to) >>> 1;
+        // sorted as primitive keys: the float made order-preserving in the high half, the point in the low
+        long[] keys = new long[to - from];
+        for (int r = from; r < to; r++) {
+            int bits = Float.floatToIntBits(values[order[r] * width + widest]);
+            int ordered = bits ^ ((bits >> 31) & 0x7fffffff);
+            keys[r - from] = (long) ordered << 32 | (order[r] & 0xffffffffL);
+        }
+        Arrays.sort(keys);
+        for (int r = from; r < to; r++) {
+            order[r] = (int) keys[r - from];
+        }
+        int left = split(tree, order, from, middle);
+        int right = split(tree, order, middle, to);
+        tree.left.set(node, left);
+        tree.right.set(node, right);
+        return node;
+    }
+
+    @Override
+    public void scan(Scene query, TopK top) {
+        int slots = slotGroup.length;
+        float[][] current = metric.encode(query, false).groups();
+        float[][] previous = slotPrevious[slots - 1] ? metric.encode(query.previous(), false).groups() : null;
+        float[][] q = new float[slots][];
+        int[] qn = new int[slots];
+        double[] qPenalty = new double[slots];
+        for (int s = 0; s < slots; s++) {
+            q[s] = (slotPrevious[s] ? previous : current)[slotGroup[s]];
+            qn[s] = q[s].length / stride;
+            qPenalty[s] = qn[s] == 1 ? metric.penalty(q[s], 0) : 0;
+        }
+        int qClass = memoryAction > 0 && query.previous() != null ? ObjectSetMetric.actionClass(query.previous()) : -1;
+        Assignment.Workspace scratch = new Assignment.Workspace();
+        NodeHeap heap = new NodeHeap();
+        for (int root : roots) {
+            int point = nodeFrom[root];
+            double fixed = memoryAction > 0 && qClass != actionClass[point] ? memoryAction : 0;
+            for (int s = 0; s < slots; s++) {
+                if ((mask[point] & 1 << s) == 0 && qn[s] == 1) {
+                    fixed += slotWeight[s] * qPenalty[s];
+                }
+            }
+            heap.push(bound(root, fixed, q, qn, qPenalty), root, fixed);
+        }
+        while (heap.size > 0) {
+            double lower = heap.topBound();
+            int node = heap.topNode();
+            double fixed = heap.topFixed();
+            heap.pop();
+            double worst = top.bound();
+            if (lower > worst) {
+                return; // every node left is bounded at least as far
+            }
+            if (lower == worst && nodeIndex[node] > top.worstIndex()) {
+                continue;
+            }
+            if (nodeLeft[node] < 0) {
+                for (int p = nodeFrom[node]; p < nodeTo[node]; p++) {
+                    offer(p, q, qn, qClass, top, scratch);
+                }
+                continue;
+            }
+            int left = nodeLeft[node];
+            int right = nodeRight[node];
+            heap.push(bound(left, fixed, q, qn, qPenalty), left, fixed);
+            heap.push(bound(right, fixed, q, qn, qPenalty), right, fixed);
+        }
+    }
+
+    /**
+     * A lower bound of the distance of every point under the node: the bucket's fixed terms
+     * plus, per slot the node's points hold, the gap from the query's object to the node's box
+     * (capped by both penalties for optimal matching) or the least stored penalty; shaved.
+     */
+    private double bound(int node, double fixed, float[][] q, int[] qn, double[] qPenalty) {
+        int slots = slotGroup.length;
+        int point = nodeFrom[node];
+        double lower = fixed;
+        int base = node * width;
+        for (int s = 0; s < slots; s++) {
+            if ((mask[point] & 1 << s) == 0) {
+                continue;
+            }
+            double least = nodePenalty[node * slots + s];
+            double gap;
+            if (qn[s] == 0) {
+                gap = least;
+            } else if (qn[s] == 1) {
+                int at = base + s * stride;
+                double da = outside(q[s][0], nodeMin[at], nodeMax[at]);
+                double db = outside(q[s][1], nodeMin[at + 1], nodeMax[at + 1]);
+                gap = polar ? da + db : Math.sqrt(da * da + db * db);
+                if (rowAt >= 0) {
+                    gap += outside(q[s][rowAt], nodeMin[at + rowAt], nodeMax[at + rowAt]);
+                }
+                if (optimal) {
+                    gap = Math.min(gap, qPenalty[s] + least);
+                }
+            } else {
+                gap = 0; // several objects on the query's side: no bound taken
+            }
+            lower += slotWeight[s] * gap;
+        }
+        return lower * (1 - SHAVE);
+    }
+
+    private static double outside(float value, float low, float high) {
+        return value < low ? (double) low - value : value > high ? (double) value - high : 0;
+    }
+
+    /** The point's exact distance, summed as the exhaustive path sums it; its k lowest indices offered unless beyond the bound. */
+    private void offer(int p, float[][] q, int[] qn, int qClass, TopK top, Assignment.Workspace scratch) {
+        double bound = top.bound();
+        double total = 0;
+        if (memoryAction > 0 && qClass != actionClass[p]) {
+            total += memoryAction;
+        }
+        int slots = slotGroup.length;
+        for (int s = 0; s < slots; s++) {
+            double weight = slotWeight[s];
+            int m = (mask[p] & 1 << s) != 0 ? 1 : 0;
+            total += weight * metric.groupDistance(q[s], 0, qn[s], values, p * width + s * stride, m, total, weight, bound, scratch);
+            if (total > bound) {
+                return;
+            }
+        }
+        int last = Math.min(indexStart[p + 1], indexStart[p] + top.capacity());
+        for (int i = indexStart[p]; i < last; i++) {
+            top.offer(total, indices[i]);
+        }
+    }
+
+    /** A min-heap of nodes by lower bound, carrying each node's fixed (bucket) terms. */
+    private static final class NodeHeap {
+        private double[] bounds = new double[64];
+        private double[] fixed = new double[64];
+        private int[] nodes = new int[64];
+        int size;
+
+        void push(double bound, int node, double fixedTerms) {
+            if (size == nodes.length) {
+                bounds = Arrays.copyOf(bounds, size * 2);
+                fixed = Arrays.copyOf(fixed, size * 2);
+                nodes = Arrays.copyOf(nodes, size * 2);
+            }
+            int child = size++;
+            while (child > 0) {
+                int parent = (child - 1) >>> 1;
+                if (bounds[parent] <= bound) {
+                    break;
+                }
+                bounds[child] = bounds[parent];
+                fixed[child] = fixed[parent];
+                nodes[child] = nodes[parent];
+                child = parent;
+            }
+            bounds[child] = bound;
+            fixed[child] = fixedTerms;
+            nodes[child] = node;
+        }
+
+        double topBound() {
+            return bounds[0];
+        }
+
+        int topNode() {
+            return nodes[0];
+        }
+
+        double topFixed() {
+            return fixed[0];
+        }
+
+        void pop() {
+            size--;
+            if (size == 0) {
+                return;
+            }
+            double bound = bounds[size];
+            double fixedTerms = fixed[size];
+            int node = nodes[size];
+            int parent = 0;
+            while (true) {
+                int child = 2 * parent + 1;
+                if (child >= size) {
+                    break;
+                }
+                if (child + 1 < size && bounds[child + 1] < bounds[child]) {
+                    child++;
+                }
+                if (bounds[child] >= bound) {
+                    break;
+                }
+                bounds[parent] = bounds[child];
+                fixed[parent] = fixed[child];
+                nodes[parent] = nodes[child];
+                parent = child;
+            }
+            bounds[parent] = bound;
+            fixed[parent] = fixedTerms;
+            nodes[parent] = node;
+        }
+    }
+}
