@@ -30,6 +30,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
+import org.scenes.files.CsvTables;
 
 /** {@code scenes experiment}: a parameter sweep described by a Groovy script, validated configuration by configuration. */
 @Command(name = "experiment", mixinStandardHelpOptions = true, sortOptions = false,
@@ -88,7 +89,7 @@ final class ExperimentCommand implements Callable<Integer> {
         Path json = directory.resolve(base + ".json");
         Path markdown = directory.resolve(base + ".md");
         Path chart = directory.resolve(base + ".svg");
-        CsvFiles.write(csv, table.csvHeader(), table.csvRows());
+        CsvTables.write(csv, table.csvHeader(), table.csvRows());
         table.writeJson(json, command);
         writeMarkdown(markdown, table, command, chart.getFileName().toString());
         ExperimentChart.writeSvg(table, chart);

@@ -28,6 +28,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import org.scenes.files.CsvTables;
 
 /**
  * {@code scenes export}: one row per scene for other learners (Weka, scikit-learn): the nearest
@@ -162,7 +163,7 @@ final class ExportCommand implements Callable<Integer> {
                         out.write("@attribute " + columns.get(columns.size() - 1) + " {" + String.join(",", classValues())
                                 + "}\n\n@data\n");
                     } else {
-                        csv = CsvFiles.printer(out, columns);
+                        csv = CsvTables.printer(out, columns);
                     }
                 }
                 Scene before = null;

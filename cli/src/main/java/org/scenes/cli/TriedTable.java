@@ -10,6 +10,7 @@ import java.util.Map;
 import org.scenes.files.AtomicOutput;
 import org.scenes.validate.MatchConfig;
 import org.scenes.validate.RandomSearch;
+import org.scenes.files.CsvTables;
 
 /** The table of configurations {@code scenes tune --table} writes: CSV (Commons CSV) or JSON, by the file's extension. */
 final class TriedTable {
@@ -31,7 +32,7 @@ final class TriedTable {
         if (csv) {
             List<List<Object>> table = new ArrayList<>();
             rows.forEach(row -> table.add(new ArrayList<>(cells(row).values())));
-            CsvFiles.write(file, COLUMNS, table);
+            CsvTables.write(file, COLUMNS, table);
             return;
         }
         try (AtomicOutput output = AtomicOutput.create(file)) {

@@ -27,6 +27,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
+import org.scenes.files.CsvTables;
 
 /** {@code scenes-spark experiment}: {@code scenes experiment} as a Spark job, one task per (configuration, fold). */
 @Command(name = "experiment", mixinStandardHelpOptions = true, sortOptions = false,
@@ -97,7 +98,7 @@ final class ExperimentCommand implements Callable<Integer> {
             Path csv = scratch.resolve(base + ".csv");
             Path json = scratch.resolve(base + ".json");
             Path markdown = scratch.resolve(base + ".md");
-            table.writeCsv(csv);
+            CsvTables.write(csv, table.csvHeader(), table.csvRows());
             table.writeJson(json, command);
             Files.writeString(markdown, table.markdownDocument(markdown.getFileName().toString(), command, null),
                     StandardCharsets.UTF_8);
