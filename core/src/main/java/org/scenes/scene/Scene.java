@@ -17,7 +17,8 @@ import java.util.stream.Collectors;
  * @param objects the seen objects, in server order
  * @param actions at most two actions, primary first
  * @param previous the same player's scene before this one, carried by the {@code memory}
- *                 transform so metrics can weigh it; null when not remembered. Never written to
+ *                 transform so metrics can weigh it (with the scenes it remembers in turn, up to
+ *                 {@link #MAX_MEMORY} in all); null when not remembered. Never written to
  *                 scene files: it is rebuilt from the order of the scenes when they are read.
  * @param seeAge cycles between the {@code see} the objects come from and {@code cycle}: 0 when the
  *               player saw in the cycle it acted, 1 when it acted on the see of the cycle before
@@ -26,6 +27,8 @@ import java.util.stream.Collectors;
 public record Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions, Scene previous,
                     int seeAge) {
     public static final int MAX_ACTIONS = 2;
+    /** The longest chain of remembered scenes a scene may carry ({@link #withHistory}). */
+    public static final int MAX_MEMORY = 8;
 
     /** A scene without memory, made from the see of its own cycle. */
     public Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions) {
@@ -47,15 +50,37 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
         if (actions.size() > MAX_ACTIONS) {
             throw new IllegalArgumentException("a scene holds at most " + MAX_ACTIONS + " actions, not " + actions.size());
         }
-        // one step of memory only: a chain through every earlier scene would keep a whole game alive
-        if (previous != null && previous.previous != null) {
-            previous = previous.withPrevious(null);
+        // a bounded chain: one through every earlier scene would keep a whole game alive
+        if (previous != null && previous.memoryDepth() >= MAX_MEMORY) {
+            previous = previous.truncated(MAX_MEMORY - 1);
         }
     }
 
     /** The same scene remembering {@code earlier} (its own memory dropped), or forgetting when null. */
     public Scene withPrevious(Scene earlier) {
         return new Scene(cycle, observer, objects, actions, earlier == null ? null : earlier.withPrevious(null), seeAge);
+    }
+
+    /**
+     * The same scene remembering {@code earlier} with the chain {@code earlier} remembers, cut
+     * after {@link #MAX_MEMORY} scenes in all: what a transform keeping several steps builds.
+     */
+    public Scene withHistory(Scene earlier) {
+        return new Scene(cycle, observer, objects, actions, earlier, seeAge);
+    }
+
+    /** How many remembered scenes this one carries: 0 without memory. */
+    public int memoryDepth() {
+        int depth = 0;
+        for (Scene s = previous; s != null; s = s.previous) {
+            depth++;
+        }
+        return depth;
+    }
+
+    private Scene truncated(int depth) {
+        return depth == 0 ? withPrevious(null)
+                : new Scene(cycle, observer, objects, actions, previous == null ? null : previous.truncated(depth - 1), seeAge);
     }
 
     /** The primary action, or null for a scene without action. */
