@@ -107,6 +107,14 @@ final class ConvertCommand implements Callable<Integer> {
             + " fading dice. Default: 1.")
     long fadingSeed;
 
+    @Option(names = "--threads", paramLabel = "N", description = "Game logs: threads rebuilding the players."
+            + " Default: the number of cores.")
+    int threads = Runtime.getRuntime().availableProcessors();
+
+    @Option(names = "--commands-first", description = {"Game logs: within a step, a player's commands came"
+            + " before its see (as in the simulator's own games), not after it (default)."})
+    boolean commandsFirst;
+
     private int warningsShown;
 
     @Override

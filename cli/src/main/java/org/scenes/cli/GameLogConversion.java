@@ -12,7 +12,6 @@ import java.util.Map;
 import java.util.function.Predicate;
 import org.scenes.convert.ConversionReport;
 import org.scenes.convert.GameLogConverter;
-import org.scenes.convert.SceneConverter;
 import org.scenes.gamelog.ServerLogs;
 import org.scenes.scene.Grid;
 import org.scenes.scene.Observer;
@@ -88,7 +87,6 @@ final class GameLogConversion {
             throw new UsageException("--unum: a uniform number from 1 to 11, not " + options.unum);
         }
         Predicate<Observer> selected = GameLogConverter.only(options.team, options.unum);
-        SceneConverter converter = new SceneConverter(grid, options.pairing, false, line -> { });
         Map<String, SceneFileWriter> writers = new LinkedHashMap<>();
         Path single = options.output.file;
         Path directory = options.output.directory;
@@ -98,7 +96,8 @@ final class GameLogConversion {
         long started = System.nanoTime();
         GameLogConverter.Result result;
         try {
-            result = new GameLogConverter(converter, fading, selected).convert(gameLog, commandLog, observer -> {
+            result = new GameLogConverter(grid, options.pairing, fading, selected, options.threads)
+                    .commandsBeforeSee(options.commandsFirst).convert(gameLog, commandLog, observer -> {
                 String key = observer.team() + "_" + observer.uniformNumber();
                 if (single != null && !writers.isEmpty()) {
                     throw new UsageException("-o takes the scenes of one player (choose it with --team and --unum);"

@@ -9,7 +9,10 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
 import java.util.Objects;
 import java.util.function.Predicate;
 import org.scenes.gamelog.CommandLogReader;
@@ -21,6 +24,7 @@ import org.scenes.gamelog.PlayerState;
 import org.scenes.protocol.Message;
 import org.scenes.protocol.MessageParser;
 import org.scenes.protocol.Parameters;
+import org.scenes.scene.Grid;
 import org.scenes.scene.Observer;
 import org.scenes.scene.Side;
 import org.scenes.vision.Fading;
@@ -64,19 +68,39 @@ public final class GameLogConverter {
     public record Result(long frames, List<PlayerResult> players, List<String> warnings) {
     }
 
-    private final SceneConverter converter;
+    private final Grid grid;
+    private final Pairing pairing;
     private final Fading fading;
     private final Predicate<Observer> selected;
+    private final int threads;
+    private boolean commandsBeforeSee;
 
     /**
-     * @param converter makes the scenes (grid, pairing)
+     * @param grid and {@code pairing} make the scenes, as for player logs
      * @param fading how a seen player's team and number fade with distance
      * @param selected which players get scenes (all are seen by the others)
+     * @param threads threads rebuilding and converting the players (each player on one)
      */
-    public GameLogConverter(SceneConverter converter, Fading fading, Predicate<Observer> selected) {
-        this.converter = Objects.requireNonNull(converter, "converter");
+    public GameLogConverter(Grid grid, Pairing pairing, Fading fading, Predicate<Observer> selected, int threads) {
+        this.grid = Objects.requireNonNull(grid, "grid");
+        this.pairing = Objects.requireNonNull(pairing, "pairing");
         this.fading = Objects.requireNonNull(fading, "fading");
         this.selected = Objects.requireNonNull(selected, "selected");
+        if (threads < 1) {
+            throw new IllegalArgumentException("threads must be 1 or more, not " + threads);
+        }
+        this.threads = threads;
+    }
+
+    /**
+     * Within a step, the player's commands come after its see (the default: players answer what
+     * they see, and synchronous sees come at the start of the cycle) or, with {@code true}, before it,
+     * right after {@code sense_body} (as the simulator's in-process teachers act). The command log
+     * does not say.
+     */
+    public GameLogConverter commandsBeforeSee(boolean before) {
+        this.commandsBeforeSee = before;
+        return this;
     }
 
     /**
@@ -89,35 +113,282 @@ public final class GameLogConverter {
         try (CommandLogReader commands = CommandLogReader.open(commandLog)) {
             Run run = new Run(gameLog, commands, output);
             try {
-                GameLogReader.forEach(gameLog, run::frame, run::parameters);
-            } catch (UncheckedIOException e) {
-                throw e.getCause();
-            } catch (GameLogException e) {
-                if (!run.truncated(e)) {
-                    throw e;
+                try {
+                    GameLogReader.forEach(gameLog, run::frame, run::parameters);
+                } catch (UncheckedIOException e) {
+                    throw e.getCause();
+                } catch (GameLogException e) {
+                    if (!run.truncated(e)) {
+                        throw e;
+                    }
+                    run.warnings.add(e.getMessage() + "; the game log is cut there: scenes up to cycle " + run.lastTime
+                            + " kept");
                 }
-                run.warnings.add(e.getMessage() + "; the game log is cut there: scenes up to cycle " + run.lastTime
-                        + " kept");
+                return run.finish();
+            } finally {
+                run.stopWorkers();
             }
-            return run.finish();
         }
     }
 
-    /** A rebuilt player: its log being converted and how it sees. */
+    /** What a player sent, for its worker. */
+    private record Sent(Player player, String message) {
+    }
+
+    /** One show and what was sent around it, handed to every worker. */
+    private record Step(GameFrame frame, long index, List<Sent> before, List<Sent> at, boolean seesDue,
+                        List<Player> players) {
+    }
+
+    private static final Step END = new Step(null, 0, List.of(), List.of(), false, List.of());
+
+    /** A rebuilt player: its log being converted and how it sees; touched by its worker only once started. */
     private static final class Player {
         final Observer observer;
-        final SceneConverter.Feed feed;
+        final String key;
+        final SceneConverter.SceneSink sink;
+        final Worker worker;
+        final int version;
+        final Fading fading;
+        /** Set by the reading thread when the player's first show is handed out. */
+        boolean started;
+        SceneConverter.Feed feed;
         SeeWriter writer;
         boolean synchSee;
-        int version;
         int type = -1;
-        /** The executed command counts at the last frame, and whether a body command was sent since. */
+        /** The executed command counts at the last show, and whether a body command was sent since. */
         int executed = -1;
         boolean sentBody;
+        long agreed;
+        long disagreed;
 
-        Player(Observer observer, SceneConverter.Feed feed) {
+        Player(Observer observer, String key, SceneConverter.SceneSink sink, Worker worker, int version,
+               boolean synchSee, Fading fading) {
             this.observer = observer;
-            this.feed = feed;
+            this.key = key;
+            this.sink = sink;
+            this.worker = worker;
+            this.version = version;
+            this.synchSee = synchSee;
+            this.fading = fading;
+        }
+    }
+
+    /** Rebuilds and converts its players, step by step, on a thread of its own (or the caller's). */
+    private final class Worker implements Runnable {
+        final Run run;
+        final SceneConverter converter = new SceneConverter(grid, pairing, false, line -> { });
+        final BlockingQueue<Step> queue;
+        final StringBuilder text = new StringBuilder(4096);
+        byte[] bytes = new byte[4096];
+        volatile Throwable failure;
+        Thread thread;
+
+        Worker(Run run, boolean threaded) {
+            this.run = run;
+            this.queue = threaded ? new ArrayBlockingQueue<>(64) : null;
+        }
+
+        @Override
+        public void run() {
+            try {
+                while (true) {
+                    Step step = queue.take();
+                    if (step == END) {
+                        return;
+                    }
+                    if (failure == null) {
+                        process(step);
+                    }
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            } catch (IOException | RuntimeException | Error e) {
+                failure = e;
+                queue.clear();
+            }
+        }
+
+        void submit(Step step) throws IOException {
+            if (queue == null) {
+                process(step);
+                return;
+            }
+            rethrow();
+            try {
+                queue.put(step);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new java.io.InterruptedIOException("interrupted");
+            }
+        }
+
+        void rethrow() throws IOException {
+            Throwable e = failure;
+            if (e instanceof IOException io) {
+                throw io;
+            } else if (e instanceof RuntimeException runtime) {
+                throw runtime;
+            } else if (e instanceof Error error) {
+                throw error;
+            }
+        }
+
+        void process(Step step) throws IOException {
+            GameFrame frame = step.frame();
+            if (frame == null) {
+                // what was sent after the last show
+                for (Sent sent : step.before()) {
+                    if (sent.player().worker == this && sent.player().feed != null) {
+                        deliver(sent.player(), sent.message());
+                    }
+                }
+                return;
+            }
+            for (Player player : step.players()) {
+                if (player.worker == this && player.feed == null) {
+                    start(player, frame);
+                }
+            }
+            for (Sent sent : step.before()) {
+                if (sent.player().worker == this) {
+                    deliver(sent.player(), sent.message());
+                }
+            }
+            int time = frame.time();
+            for (PlayerState state : frame.players()) {
+                Player player = run.slot(frame, state);
+                if (player == null || player.worker != this) {
+                    continue;
+                }
+                checkAgreement(player, state);
+                line(player, "(sense_body " + time + ")");
+                if (commandsBeforeSee) {
+                    for (Sent sent : step.at()) {
+                        if (sent.player() == player) {
+                            deliver(player, sent.message());
+                        }
+                    }
+                }
+                if (step.seesDue()) {
+                    int sees = seesDue(player, state, step.index());
+                    for (int i = 0; i < sees; i++) {
+                        see(player, state, frame);
+                    }
+                }
+            }
+            if (!commandsBeforeSee) {
+                for (Sent sent : step.at()) {
+                    if (sent.player().worker == this) {
+                        deliver(sent.player(), sent.message());
+                    }
+                }
+            }
+        }
+
+        void start(Player player, GameFrame frame) throws IOException {
+            player.feed = converter.feed(Path.of(run.gameLog + "#" + player.key), player.sink);
+            Observer o = player.observer;
+            line(player, "(init " + o.team() + " (version " + Math.max(player.version, 3) + "))");
+            line(player, "(init " + o.side().letter() + ' ' + o.uniformNumber() + ' ' + frame.playMode() + ")");
+            if (player.synchSee) {
+                line(player, "(ok synch_see)");
+            }
+        }
+
+        void deliver(Player player, String message) throws IOException {
+            if (message.startsWith("(synch_see)")) {
+                if (!player.synchSee) {
+                    player.synchSee = true;
+                    line(player, "(ok synch_see)");
+                }
+                return;
+            }
+            if (isBody(message)) {
+                player.sentBody = true;
+            }
+            line(player, message);
+        }
+
+        /**
+         * The game log's counts of executed commands against the command log: a body command the
+         * player sent in a step shows as a count rising by the next show. Another game's command log
+         * disagrees in most steps.
+         */
+        void checkAgreement(Player player, PlayerState state) {
+            PlayerState.Counts c = state.counts();
+            int executed = c.kick() + c.dash() + c.turn() + c.catches() + c.move() + c.tackle();
+            if (player.executed >= 0) {
+                if ((executed > player.executed) == player.sentBody) {
+                    player.agreed++;
+                } else {
+                    player.disagreed++;
+                }
+            }
+            player.executed = executed;
+            player.sentBody = false;
+        }
+
+        /** How many sees the player gets after this show: the server's timing as the simulator keeps it. */
+        int seesDue(Player player, PlayerState state, long index) {
+            // The show was written at the end of its step; its sees go out in the next step.
+            long next = index + 1;
+            double factor = state.viewWidth() / run.visibleAngle;
+            if (player.synchSee) {
+                // synchronous: cones of 2/3, 4/3 and 2 visible_angle for a see every 1, 2, 3 steps
+                int every = (int) Math.max(1, Math.round(factor * 1.5));
+                return next % every == 0 ? 1 : 0;
+            }
+            double period = run.sendStep * factor * (state.viewQuality() == 'h' ? 1 : 0.5);
+            double begin = next * run.simulatorStep;
+            double end = begin + run.simulatorStep;
+            double first = Math.ceil(begin / period - 1e-9) * period;
+            return first < end - 1e-9 ? (int) Math.floor((end - 1e-9 - first) / period) + 1 : 0;
+        }
+
+        void see(Player player, PlayerState self, GameFrame frame) throws IOException {
+            if (player.writer == null || player.type != self.type()) {
+                player.type = self.type();
+                player.writer = new SeeWriter(VisionParams.of(run.serverParam,
+                        player.version >= 18 ? run.playerTypes.get(self.type()) : null), player.fading);
+            }
+            SeeWriter writer = player.writer;
+            text.setLength(0);
+            double head = VisionNumbers.normalize(self.body() + self.neck());
+            writer.begin(text, frame.time(), self.x(), self.y(), self.vx(), self.vy(), head, self.viewWidth(),
+                    self.viewQuality() == 'h');
+            writer.landmarks();
+            GameFrame.BallState ball = frame.ball();
+            writer.ball(ball.x(), ball.y(), ball.vx(), ball.vy());
+            for (PlayerState other : frame.players()) {
+                if (other == self || other.state() == 0) {
+                    continue;
+                }
+                String team = other.side() == Side.LEFT ? frame.leftTeam() : frame.rightTeam();
+                writer.player(other.x(), other.y(), other.vx(), other.vy(), team, other.unum(),
+                        (other.state() & PlayerState.GOALIE) != 0, other.body(),
+                        VisionNumbers.normalize(other.body() + other.neck()));
+            }
+            writer.lines();
+            writer.end();
+            line(player, text);
+        }
+
+        void line(Player player, CharSequence message) throws IOException {
+            int length = message.length();
+            if (bytes.length < length) {
+                bytes = new byte[Math.max(length, bytes.length * 2)];
+            }
+            for (int i = 0; i < length; i++) {
+                char c = message.charAt(i);
+                if (c >= 0x80) {
+                    byte[] encoded = message.toString().getBytes(StandardCharsets.UTF_8);
+                    player.feed.line(encoded, 0, encoded.length);
+                    return;
+                }
+                bytes[i] = (byte) c;
+            }
+            player.feed.line(bytes, 0, length);
         }
     }
 
@@ -129,14 +400,16 @@ public final class GameLogConverter {
         final MessageParser parser = new MessageParser();
         final Map<String, String> serverParam = new HashMap<>();
         final Map<Integer, Map<String, String>> playerTypes = new HashMap<>();
+        /** Every player of the game by TEAM_UNUM; null for those not selected. */
         final Map<String, Player> players = new LinkedHashMap<>();
+        /** The players by show slot (side, number), for the workers: set before a step is handed out. */
+        final Player[][] slots = new Player[2][64];
         /** Versions from the players' init commands (the command log holds them before the game). */
         final Map<String, Integer> versions = new HashMap<>();
         final Map<String, Boolean> synchSee = new HashMap<>();
         /** Command log entries read but not yet delivered, in order. */
         final ArrayDeque<CommandLogReader.Entry> ahead = new ArrayDeque<>();
-        final StringBuilder text = new StringBuilder(4096);
-        byte[] bytes = new byte[4096];
+        final List<Worker> workers = new ArrayList<>();
         boolean commandsEnded;
         boolean teamsKnown;
         int lastCommandTime = -1;
@@ -150,14 +423,22 @@ public final class GameLogConverter {
         double visibleAngle = 90;
         double sendStep = 150;
         double simulatorStep = 100;
-        long agreed;
-        long disagreed;
         long lastLine;
+        int nextWorker;
 
         Run(Path gameLog, CommandLogReader commands, Output output) {
             this.gameLog = gameLog;
             this.commands = commands;
             this.output = output;
+            for (int i = 0; i < threads; i++) {
+                Worker worker = new Worker(this, threads > 1);
+                if (threads > 1) {
+                    worker.thread = new Thread(worker, "rebuild-" + i);
+                    worker.thread.setDaemon(true);
+                    worker.thread.start();
+                }
+                workers.add(worker);
+            }
         }
 
         void parameters(String line) {
@@ -185,6 +466,13 @@ public final class GameLogConverter {
             return frames > 0 && (message.contains("ends inside a list") || message.contains("ends before its closing"));
         }
 
+        Player slot(GameFrame frame, PlayerState state) {
+            if (state.state() == 0 || state.unum() < 0 || state.unum() >= 64) {
+                return null;
+            }
+            return slots[state.side() == Side.LEFT ? 0 : 1][state.unum()];
+        }
+
         void frame(GameFrame frame) {
             try {
                 step(frame);
@@ -210,32 +498,31 @@ public final class GameLogConverter {
                 stoppage = Math.max(stoppage, announced(time, mode, stoppage));
             }
             if (frames == 0) {
-                step = time + stoppage;
+                // steps from 0; a standing clock's first step has stoppage 1
+                step = time + Math.max(0, stoppage - 1);
             } else if (time == lastTime) {
                 step += stoppage - lastStoppage;
             } else {
                 step += (time - lastTime) + stoppage;
             }
-            deliverBefore(time, stoppage);
-            boolean seesDue = !mode.equals("time_over");
+            List<Player> starting = new ArrayList<>(0);
             for (PlayerState state : frame.players()) {
-                if (state.state() == 0) {
-                    continue;
-                }
-                Player player = player(frame, state);
-                if (player == null) {
-                    continue;
-                }
-                checkAgreement(player, state);
-                line(player, "(sense_body " + time + ")");
-                if (seesDue) {
-                    int sees = seesDue(player, state);
-                    for (int i = 0; i < sees; i++) {
-                        see(player, state, frame);
+                if (state.state() != 0) {
+                    Player player = player(frame, state);
+                    if (player != null && !player.started) {
+                        player.started = true;
+                        starting.add(player);
                     }
                 }
             }
-            deliverAt(time, stoppage);
+            List<Sent> before = new ArrayList<>();
+            collect(before, time, stoppage, true);
+            List<Sent> at = new ArrayList<>();
+            collect(at, time, stoppage, false);
+            Step work = new Step(frame, step, before, at, !mode.equals("time_over"), starting);
+            for (Worker worker : workers) {
+                worker.submit(work);
+            }
             lastTime = time;
             lastStoppage = stoppage;
             lastMode = mode;
@@ -244,7 +531,11 @@ public final class GameLogConverter {
 
         /** The stoppage of the referee's announcement of {@code mode} at {@code time}, or -1. */
         int announced(int time, String mode, int from) throws IOException {
-            fillThrough(time);
+            while (!commandsEnded && (ahead.isEmpty() || ahead.peekLast().time() <= time)) {
+                if (!readOne()) {
+                    break;
+                }
+            }
             for (CommandLogReader.Entry entry : ahead) {
                 if (entry.time() == time && entry.stoppage() >= from && entry.referee()
                         && GameLogWriter.playMode(entry.text()).equals(mode)) {
@@ -252,15 +543,6 @@ public final class GameLogConverter {
                 }
             }
             return -1;
-        }
-
-        /** Reads the command log until an entry after {@code time} (kept ahead) or its end. */
-        void fillThrough(int time) throws IOException {
-            while (!commandsEnded && (ahead.isEmpty() || ahead.peekLast().time() <= time)) {
-                if (!readOne()) {
-                    return;
-                }
-            }
         }
 
         boolean readOne() throws IOException {
@@ -274,35 +556,26 @@ public final class GameLogConverter {
             return true;
         }
 
-        /** Delivers what players sent in steps before ({@code time}, {@code stoppage}). */
-        void deliverBefore(int time, int stoppage) throws IOException {
+        /**
+         * What players sent in steps before ({@code time}, {@code stoppage}) (or, when not
+         * {@code before}, in that step, after its see), for the players' workers.
+         */
+        void collect(List<Sent> into, int time, int stoppage, boolean before) throws IOException {
             while (true) {
                 if (ahead.isEmpty() && !readOne()) {
                     return;
                 }
                 CommandLogReader.Entry entry = ahead.peekFirst();
-                if (!entry.before(time, stoppage)) {
+                boolean wanted = before ? entry.before(time, stoppage)
+                        : entry.time() == time && entry.stoppage() == stoppage;
+                if (!wanted) {
                     return;
                 }
-                deliver(ahead.pollFirst());
+                route(ahead.pollFirst(), into);
             }
         }
 
-        /** Delivers what players sent in the step ({@code time}, {@code stoppage}), after its see. */
-        void deliverAt(int time, int stoppage) throws IOException {
-            while (true) {
-                if (ahead.isEmpty() && !readOne()) {
-                    return;
-                }
-                CommandLogReader.Entry entry = ahead.peekFirst();
-                if (entry.time() != time || entry.stoppage() != stoppage) {
-                    return;
-                }
-                deliver(ahead.pollFirst());
-            }
-        }
-
-        void deliver(CommandLogReader.Entry entry) throws IOException {
+        void route(CommandLogReader.Entry entry, List<Sent> into) {
             lastLine = entry.line();
             if (entry.referee()) {
                 return;
@@ -320,188 +593,104 @@ public final class GameLogConverter {
                 return;
             }
             Player player = players.get(key);
-            if (message.startsWith("(synch_see)")) {
-                synchSee.put(key, true);
-                if (player != null && !player.synchSee) {
-                    player.synchSee = true;
-                    line(player, "(ok synch_see)");
-                }
-                return;
-            }
             if (player == null) {
-                return; // before the game log's first show, or a player not converted
+                if (message.startsWith("(synch_see)")) {
+                    synchSee.put(key, true);
+                }
+                return; // before the player's first show, or a player not converted
             }
-            if (isBody(message)) {
-                player.sentBody = true;
-            }
-            line(player, message);
+            into.add(new Sent(player, message));
         }
 
-        /** The player of a show's slot, its log started on first sight; null when not selected. */
+        /** The player of a show's slot, made on first sight; null when not selected. */
         Player player(GameFrame frame, PlayerState state) throws IOException {
             String team = state.side() == Side.LEFT ? frame.leftTeam() : frame.rightTeam();
             String key = team + "_" + state.unum();
-            Player player = players.get(key);
-            if (player != null) {
-                return player;
-            }
             if (players.containsKey(key)) {
-                return null;
+                return players.get(key);
             }
             Observer observer = new Observer(team, state.side(), state.unum());
-            if (!selected.test(observer)) {
-                players.put(key, null);
-                return null;
+            Player player = null;
+            if (selected.test(observer)) {
+                int version = versions.getOrDefault(key, 0);
+                // clients of version 18 and later see synchronously from their init on
+                boolean synch = version >= 18 || synchSee.getOrDefault(key, false);
+                player = new Player(observer, key, output.open(observer), workers.get(nextWorker++ % threads),
+                        version, synch, fading.forObserver(key));
+                if (state.unum() >= 0 && state.unum() < 64) {
+                    slots[state.side() == Side.LEFT ? 0 : 1][state.unum()] = player;
+                }
             }
-            player = new Player(observer, converter.feed(Path.of(gameLog + "#" + key), output.open(observer)));
             players.put(key, player);
-            player.version = versions.getOrDefault(key, 0);
-            line(player, "(init " + team + " (version " + Math.max(player.version, 3) + "))");
-            line(player, "(init " + state.side().letter() + ' ' + state.unum() + ' ' + frame.playMode() + ")");
-            // clients of version 18 and later see synchronously from their init on
-            if (player.version >= 18 || synchSee.getOrDefault(key, false)) {
-                player.synchSee = true;
-                line(player, "(ok synch_see)");
-            }
             return player;
-        }
-
-        /**
-         * The game log's counts of executed commands against the command log: a body command the
-         * player sent in a step shows as a count rising by the next show. Another game's command log
-         * disagrees in most steps.
-         */
-        void checkAgreement(Player player, PlayerState state) {
-            PlayerState.Counts c = state.counts();
-            int executed = c.kick() + c.dash() + c.turn() + c.catches() + c.move() + c.tackle();
-            if (player.executed >= 0) {
-                boolean rose = executed > player.executed;
-                if (rose == player.sentBody) {
-                    agreed++;
-                } else {
-                    disagreed++;
-                }
-                judgeAgreement(false);
-            }
-            player.executed = executed;
-            player.sentBody = false;
-        }
-
-        /** Refuses a command log whose commands disagree with the game log's executed counts. */
-        void judgeAgreement(boolean atEnd) {
-            long compared = agreed + disagreed;
-            boolean due = atEnd ? compared >= AGREEMENT_SAMPLE : compared == AGREEMENT_SAMPLE * 10L;
-            if (due && disagreed > DISAGREEMENT_REFUSED * compared) {
-                throw new LogException(commands.file(), lastLine, String.format(java.util.Locale.ROOT,
-                        "the commands of %.0f %% of %d player steps disagree with what %s says was executed:"
-                                + " the command log of another game?", 100.0 * disagreed / compared, compared,
-                        gameLog.getFileName()), null);
-            }
-        }
-
-        /** How many sees the player gets after this show: the server's timing as the simulator keeps it. */
-        int seesDue(Player player, PlayerState state) {
-            // The show was written at the end of step `step`; its sees go out in the next step.
-            long next = step + 1;
-            double factor = state.viewWidth() / visibleAngle;
-            if (player.synchSee) {
-                // synchronous: cones of 2/3, 4/3 and 2 visible_angle for a see every 1, 2, 3 steps
-                int every = (int) Math.max(1, Math.round(factor * 1.5));
-                return next % every == 0 ? 1 : 0;
-            }
-            double period = sendStep * factor * (state.viewQuality() == 'h' ? 1 : 0.5);
-            double begin = next * simulatorStep;
-            double end = begin + simulatorStep;
-            double first = Math.ceil(begin / period - 1e-9) * period;
-            return first < end - 1e-9 ? (int) Math.floor((end - 1e-9 - first) / period) + 1 : 0;
-        }
-
-        void see(Player player, PlayerState self, GameFrame frame) throws IOException {
-            if (player.writer == null || player.type != self.type()) {
-                player.type = self.type();
-                player.writer = new SeeWriter(VisionParams.of(serverParam,
-                        player.version >= 18 ? playerTypes.get(self.type()) : null), fading);
-            }
-            SeeWriter writer = player.writer;
-            text.setLength(0);
-            double head = VisionNumbers.normalize(self.body() + self.neck());
-            writer.begin(text, frame.time(), self.x(), self.y(), self.vx(), self.vy(), head, self.viewWidth(),
-                    self.viewQuality() == 'h');
-            writer.landmarks();
-            GameFrame.BallState ball = frame.ball();
-            writer.ball(ball.x(), ball.y(), ball.vx(), ball.vy());
-            for (PlayerState other : frame.players()) {
-                if (other == self || other.state() == 0) {
-                    continue;
-                }
-                String team = other.side() == Side.LEFT ? frame.leftTeam() : frame.rightTeam();
-                writer.player(other.x(), other.y(), other.vx(), other.vy(), team, other.unum(),
-                        (other.state() & PlayerState.GOALIE) != 0, other.body(),
-                        VisionNumbers.normalize(other.body() + other.neck()));
-            }
-            writer.lines();
-            writer.end();
-            line(player, text);
-        }
-
-        void line(Player player, CharSequence message) throws IOException {
-            int length = message.length();
-            if (bytes.length < length * 3) {
-                bytes = new byte[Math.max(length * 3, bytes.length * 2)];
-            }
-            int n = 0;
-            boolean ascii = true;
-            for (int i = 0; i < length; i++) {
-                char c = message.charAt(i);
-                if (c >= 0x80) {
-                    ascii = false;
-                    break;
-                }
-                bytes[n++] = (byte) c;
-            }
-            if (!ascii) {
-                byte[] encoded = message.toString().getBytes(StandardCharsets.UTF_8);
-                player.feed.line(encoded, 0, encoded.length);
-                return;
-            }
-            player.feed.line(bytes, 0, n);
         }
 
         Result finish() throws IOException {
             // what was sent after the last show; entries more than a step past it belong to no show
             int beyond = 0;
             CommandLogReader.Entry firstBeyond = null;
-            CommandLogReader.Entry lastEntry = null;
+            List<Sent> after = new ArrayList<>();
             while (!ahead.isEmpty() || readOne()) {
                 CommandLogReader.Entry entry = ahead.pollFirst();
-                lastEntry = entry;
                 if (frames > 0 && entry.time() > lastTime + 1) {
                     beyond++;
                     firstBeyond = firstBeyond == null ? entry : firstBeyond;
                 } else {
-                    deliver(entry);
+                    route(entry, after);
                 }
             }
             if (frames == 0) {
                 throw new LogException(gameLog, 0, "no show in the game log: nothing to rebuild", null);
             }
+            Step last = new Step(null, 0, after, List.of(), false, List.of());
+            for (Worker worker : workers) {
+                worker.submit(last);
+            }
+            stopWorkers();
             if (firstBeyond != null) {
                 warnings.add(commands.file() + ":" + firstBeyond.line() + ": the command log goes on to cycle "
-                        + lastEntry.time() + " (" + beyond + " lines) after the game log's last show at cycle "
+                        + lastCommandTime + " (" + beyond + " lines) after the game log's last show at cycle "
                         + lastTime + ": a cut game log, or the command log of another game; those lines were left out");
             } else if (lastCommandTime + 1 < lastTime) {
                 warnings.add(commands.file() + ": the command log ends at cycle " + lastCommandTime
-                        + ", the game log goes on to cycle "
-                        + lastTime + ": later scenes have no actions and are dropped");
+                        + ", the game log goes on to cycle " + lastTime + ": later scenes have no actions and are dropped");
             }
-            judgeAgreement(true);
+            long agreed = 0;
+            long disagreed = 0;
             List<PlayerResult> results = new ArrayList<>();
             for (Player player : players.values()) {
-                if (player != null) {
+                if (player != null && player.feed != null) {
+                    agreed += player.agreed;
+                    disagreed += player.disagreed;
                     results.add(new PlayerResult(player.observer, player.feed.finish(0)));
                 }
             }
+            long compared = agreed + disagreed;
+            if (compared >= AGREEMENT_SAMPLE && disagreed > DISAGREEMENT_REFUSED * compared) {
+                throw new LogException(commands.file(), 0, String.format(Locale.ROOT,
+                        "the commands of %.0f %% of %d player steps disagree with what %s says was executed:"
+                                + " the command log of another game?", 100.0 * disagreed / compared, compared,
+                        gameLog.getFileName()), null);
+            }
             return new Result(frames, results, warnings);
+        }
+
+        /** Ends the workers' threads (once), rethrowing the first failure. */
+        void stopWorkers() throws IOException {
+            for (Worker worker : workers) {
+                if (worker.thread != null && worker.thread.isAlive()) {
+                    try {
+                        worker.queue.put(END);
+                        worker.thread.join();
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                        throw new java.io.InterruptedIOException("interrupted");
+                    }
+                }
+            }
+            for (Worker worker : workers) {
+                worker.rethrow();
+            }
         }
 
         int version(String init) {

@@ -13,21 +13,43 @@ public interface Fading {
     /** Whether the detail is shown at {@code distance} (the seen, quantised distance). */
     boolean shown(double distance, double farLength, double tooFarLength);
 
+    /** The fading of one observer's sees: dice of its own, so observers can be rebuilt apart. */
+    Fading forObserver(String name);
+
     /** The simulator's rule: shown below the halfway point between far and too far. */
-    Fading HALFWAY = (distance, far, tooFar) -> distance < (far + tooFar) / 2;
+    Fading HALFWAY = new Fading() {
+        @Override
+        public boolean shown(double distance, double far, double tooFar) {
+            return distance < (far + tooFar) / 2;
+        }
+
+        @Override
+        public Fading forObserver(String name) {
+            return this;
+        }
+    };
 
     /** The server's rule, with dice drawn from a generator seeded with {@code seed}. */
     static Fading dice(long seed) {
-        SplittableRandom random = new SplittableRandom(seed);
-        return (distance, far, tooFar) -> {
-            double hidden = (distance - far) / (tooFar - far);
-            if (hidden >= 1) {
-                return false;
+        return new Fading() {
+            private final SplittableRandom random = new SplittableRandom(seed);
+
+            @Override
+            public boolean shown(double distance, double far, double tooFar) {
+                double hidden = (distance - far) / (tooFar - far);
+                if (hidden >= 1) {
+                    return false;
+                }
+                if (!(hidden > 0)) {
+                    return true; // below far; also far == too far, as version 18 player types have for teams
+                }
+                return random.nextDouble() >= hidden;
             }
-            if (!(hidden > 0)) {
-                return true; // below far; also far == too far, as version 18 player types have for teams
+
+            @Override
+            public Fading forObserver(String name) {
+                return dice(seed * 1_000_003L + name.hashCode());
             }
-            return random.nextDouble() >= hidden;
         };
     }
 

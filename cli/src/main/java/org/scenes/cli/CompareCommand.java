@@ -1,0 +1,59 @@
+package org.scenes.cli;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.scenes.convert.SceneComparison;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code scenes compare A B}: how close two scene files of one player are. */
+@Command(name = "compare", mixinStandardHelpOptions = true,
+        description = {"Compare two scene files of one player (e.g. rebuilt from a game log and converted from"
+                + " the player's own log): scenes of the same cycle, the share of objects present in both,"
+                + " distance and direction errors, and whether the paired actions agree."})
+final class CompareCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "A", description = "A scene file (.json or .json.gz).")
+    Path first;
+
+    @Parameters(index = "1", paramLabel = "B", description = "The scene file to compare it with.")
+    Path second;
+
+    @Option(names = "--json", description = "Print the figures as JSON.")
+    boolean json;
+
+    @Override
+    public Integer call() throws Exception {
+        SceneComparison.Result r = new SceneComparison().compare(first, second);
+        PrintWriter out = spec.commandLine().getOut();
+        if (json) {
+            out.println(new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(r));
+            out.flush();
+            return ExitCodes.OK;
+        }
+        out.printf(Locale.ROOT, "%-26s %s | %s%n", "Players", r.observerA().label(), r.observerB().label());
+        out.printf(Locale.ROOT, "%-26s %d | %d, %d of the same cycle%n", "Scenes", r.scenesA(), r.scenesB(),
+                r.paired());
+        out.printf(Locale.ROOT, "%-26s %.2f %% (%d of %d | %d)%n", "Objects in both", 100 * r.matchedShare(),
+                r.matched(), r.objectsA(), r.objectsB());
+        out.printf(Locale.ROOT, "%-26s %.2f %% within one step; mean %.3f m, p99 %.2f m, max %.2f m%n",
+                "Distance error", 100 * r.distanceWithinStepShare(), r.distanceErrorMean(), r.distanceErrorP99(),
+                r.distanceErrorMax());
+        out.printf(Locale.ROOT, "%-26s %.2f %% within 1 degree; mean %.3f, p99 %.1f, max %.1f degrees%n",
+                "Direction error", 100 * r.directionWithinStepShare(), r.directionErrorMean(), r.directionErrorP99(),
+                r.directionErrorMax());
+        out.printf(Locale.ROOT, "%-26s %.2f %% same type, %.2f %% same command%n", "Actions agree",
+                100 * r.actionTypeShare(), 100 * r.actionShare());
+        out.flush();
+        return ExitCodes.OK;
+    }
+}
