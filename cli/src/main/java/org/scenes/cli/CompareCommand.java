@@ -3,9 +3,13 @@ package org.scenes.cli;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.stream.Stream;
 import org.scenes.convert.SceneComparison;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -22,10 +26,11 @@ final class CompareCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "A", description = "A scene file (.json or .json.gz).")
+    @Parameters(index = "0", paramLabel = "A", description = "A scene file (.json or .json.gz), or a directory of them.")
     Path first;
 
-    @Parameters(index = "1", paramLabel = "B", description = "The scene file to compare it with.")
+    @Parameters(index = "1", paramLabel = "B", description = {"The scene file to compare it with, or a directory:"
+            + " its files of the same names (every player of a game); the figures are summed."})
     Path second;
 
     @Option(names = "--json", description = "Print the figures as JSON.")
@@ -33,7 +38,31 @@ final class CompareCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        SceneComparison.Result r = new SceneComparison().compare(first, second);
+        SceneComparison.Result r;
+        if (Files.isDirectory(first) != Files.isDirectory(second)) {
+            throw new UsageException("compare two scene files or two directories, not " + first + " and " + second);
+        }
+        if (Files.isDirectory(first)) {
+            List<Path> left = new ArrayList<>();
+            List<Path> right = new ArrayList<>();
+            try (Stream<Path> files = Files.list(first)) {
+                for (Path file : files.filter(f -> f.getFileName().toString().matches(".*\\.json(\\.gz)?"))
+                        .sorted().toList()) {
+                    Path other = second.resolve(file.getFileName().toString());
+                    if (Files.isRegularFile(other)) {
+                        left.add(file);
+                        right.add(other);
+                    }
+                }
+            }
+            if (left.isEmpty()) {
+                throw new UsageException("no scene file of " + first + " has a namesake in " + second);
+            }
+            r = new SceneComparison().compare(left, right);
+            spec.commandLine().getOut().printf(Locale.ROOT, "%-26s %d of the same name%n", "Files", left.size());
+        } else {
+            r = new SceneComparison().compare(first, second);
+        }
         PrintWriter out = spec.commandLine().getOut();
         if (json) {
             out.println(new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(r));

@@ -81,36 +81,63 @@ public final class SceneComparison {
     }
 
     public Result compare(Path a, Path b) {
-        try (SceneFileReader first = SceneFileReader.open(a); SceneFileReader second = SceneFileReader.open(b)) {
-            Tally tally = new Tally();
-            Cycles left = new Cycles(first);
-            Cycles right = new Cycles(second);
-            List<Scene> x = left.next();
-            List<Scene> y = right.next();
-            while (x != null && y != null) {
-                int cx = x.get(0).cycle();
-                int cy = y.get(0).cycle();
-                if (cx < cy) {
-                    x = left.next();
-                } else if (cy < cx) {
-                    y = right.next();
-                } else {
-                    int n = Math.min(x.size(), y.size());
-                    for (int i = 1; i <= n; i++) {
-                        tally.pair(x.get(x.size() - i), y.get(y.size() - i));
-                    }
-                    x = left.next();
-                    y = right.next();
+        return compare(List.of(a), List.of(b));
+    }
+
+    /**
+     * Compares {@code a.get(i)} with {@code b.get(i)} for each i (e.g. every player of a game) and
+     * sums the figures; the observers are those of the first pair.
+     */
+    public Result compare(List<Path> a, List<Path> b) {
+        if (a.size() != b.size() || a.isEmpty()) {
+            throw new IllegalArgumentException("compare pairs of files: " + a.size() + " against " + b.size());
+        }
+        Tally tally = new Tally();
+        Observer observerA = null;
+        Observer observerB = null;
+        long scenesA = 0;
+        long scenesB = 0;
+        for (int i = 0; i < a.size(); i++) {
+            try (SceneFileReader first = SceneFileReader.open(a.get(i));
+                 SceneFileReader second = SceneFileReader.open(b.get(i))) {
+                Cycles left = new Cycles(first);
+                Cycles right = new Cycles(second);
+                pairCycles(tally, left, right);
+                if (observerA == null) {
+                    observerA = first.header().source().observer();
+                    observerB = second.header().source().observer();
                 }
+                scenesA += left.count;
+                scenesB += right.count;
             }
-            while (x != null) {
+        }
+        return tally.result(observerA, observerB, scenesA, scenesB);
+    }
+
+    private static void pairCycles(Tally tally, Cycles left, Cycles right) {
+        List<Scene> x = left.next();
+        List<Scene> y = right.next();
+        while (x != null && y != null) {
+            int cx = x.get(0).cycle();
+            int cy = y.get(0).cycle();
+            if (cx < cy) {
                 x = left.next();
-            }
-            while (y != null) {
+            } else if (cy < cx) {
+                y = right.next();
+            } else {
+                int n = Math.min(x.size(), y.size());
+                for (int i = 1; i <= n; i++) {
+                    tally.pair(x.get(x.size() - i), y.get(y.size() - i));
+                }
+                x = left.next();
                 y = right.next();
             }
-            return tally.result(first.header().source().observer(), second.header().source().observer(), left.count,
-                    right.count);
+        }
+        while (x != null) {
+            x = left.next();
+        }
+        while (y != null) {
+            y = right.next();
         }
     }
 
