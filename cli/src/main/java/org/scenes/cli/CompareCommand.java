@@ -59,7 +59,9 @@ final class CompareCommand implements Callable<Integer> {
                 throw new UsageException("no scene file of " + first + " has a namesake in " + second);
             }
             r = new SceneComparison().compare(left, right);
-            spec.commandLine().getOut().printf(Locale.ROOT, "%-26s %d of the same name%n", "Files", left.size());
+            if (!json) {
+                spec.commandLine().getOut().printf(Locale.ROOT, "%-26s %d of the same name%n", "Files", left.size());
+            }
         } else {
             r = new SceneComparison().compare(first, second);
         }
@@ -72,15 +74,15 @@ final class CompareCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "%-26s %s | %s%n", "Players", r.observerA().label(), r.observerB().label());
         out.printf(Locale.ROOT, "%-26s %d | %d, %d of the same cycle%n", "Scenes", r.scenesA(), r.scenesB(),
                 r.paired());
-        out.printf(Locale.ROOT, "%-26s %.2f %% (%d of %d | %d)%n", "Objects in both", 100 * r.matchedShare(),
+        out.printf(Locale.ROOT, "%-26s %.3f %% (%d of %d | %d)%n", "Objects in both", 100 * r.matchedShare(),
                 r.matched(), r.objectsA(), r.objectsB());
-        out.printf(Locale.ROOT, "%-26s %.2f %% within one step; mean %.3f m, p99 %.2f m, max %.2f m%n",
+        out.printf(Locale.ROOT, "%-26s %.3f %% within one step; mean %.4f m, p99 under %.2f m, max %.2f m%n",
                 "Distance error", 100 * r.distanceWithinStepShare(), r.distanceErrorMean(), r.distanceErrorP99(),
                 r.distanceErrorMax());
-        out.printf(Locale.ROOT, "%-26s %.2f %% within 1 degree; mean %.3f, p99 %.1f, max %.1f degrees%n",
+        out.printf(Locale.ROOT, "%-26s %.3f %% within 1 degree; mean %.4f, p99 under %.1f, max %.1f degrees%n",
                 "Direction error", 100 * r.directionWithinStepShare(), r.directionErrorMean(), r.directionErrorP99(),
                 r.directionErrorMax());
-        out.printf(Locale.ROOT, "%-26s %.2f %% same type, %.2f %% same command%n", "Actions agree",
+        out.printf(Locale.ROOT, "%-26s %.3f %% same type, %.3f %% same command%n", "Actions agree",
                 100 * r.actionTypeShare(), 100 * r.actionShare());
         out.flush();
         return ExitCodes.OK;
