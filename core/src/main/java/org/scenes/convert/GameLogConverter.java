@@ -505,6 +505,9 @@ public final class GameLogConverter {
             } else {
                 step += (time - lastTime) + stoppage;
             }
+            // what was sent before this show: the players' inits (versions) come before their first show
+            List<Sent> before = new ArrayList<>();
+            collect(before, time, stoppage, true);
             List<Player> starting = new ArrayList<>(0);
             for (PlayerState state : frame.players()) {
                 if (state.state() != 0) {
@@ -515,8 +518,6 @@ public final class GameLogConverter {
                     }
                 }
             }
-            List<Sent> before = new ArrayList<>();
-            collect(before, time, stoppage, true);
             List<Sent> at = new ArrayList<>();
             collect(at, time, stoppage, false);
             Step work = new Step(frame, step, before, at, !mode.equals("time_over"), starting);
@@ -612,9 +613,12 @@ public final class GameLogConverter {
             Observer observer = new Observer(team, state.side(), state.unum());
             Player player = null;
             if (selected.test(observer)) {
-                int version = versions.getOrDefault(key, 0);
+                int version = versions.getOrDefault(key, initAhead(key, frame.time()));
                 // clients of version 18 and later see synchronously from their init on
-                boolean synch = version >= 18 || synchSee.getOrDefault(key, false);
+                double factor = state.viewWidth() / visibleAngle;
+                boolean synch = version >= 18 || synchSee.getOrDefault(key, false)
+                        // cones only synchronous vision has (60 and 120 degrees): a log without the init
+                        || Math.abs(factor - 2.0 / 3) < 1e-6 || Math.abs(factor - 4.0 / 3) < 1e-6;
                 player = new Player(observer, key, output.open(observer), workers.get(nextWorker++ % threads),
                         version, synch, fading.forObserver(key));
                 if (state.unum() >= 0 && state.unum() < 64) {
@@ -623,6 +627,25 @@ public final class GameLogConverter {
             }
             players.put(key, player);
             return player;
+        }
+
+        /** The version of the player's init sent by the end of {@code time} (ahead of its show), or 0. */
+        int initAhead(String key, int time) throws IOException {
+            while (!commandsEnded && (ahead.isEmpty() || ahead.peekLast().time() <= time)) {
+                if (!readOne()) {
+                    break;
+                }
+            }
+            for (CommandLogReader.Entry entry : ahead) {
+                if (entry.time() > time) {
+                    break;
+                }
+                if (!entry.referee() && entry.text().startsWith("(init ")
+                        && key.equals(entry.team() + "_" + entry.unum())) {
+                    return version(entry.text());
+                }
+            }
+            return 0;
         }
 
         Result finish() throws IOException {

@@ -70,11 +70,15 @@ class GameLogConverterTest {
     }
 
     private Path commandLog(String left, int firstCycle) throws IOException {
+        return commandLog(left, firstCycle, 9);
+    }
+
+    private Path commandLog(String left, int firstCycle, int version) throws IOException {
         Path file = dir.resolve("game.rcl");
         try (CommandLogWriter writer = CommandLogWriter.create(file)) {
             for (String team : List.of(left, RIGHT)) {
                 for (int unum = 1; unum <= 2; unum++) {
-                    writer.received(0, 0, team, unum, "(init " + team + " (version 9))");
+                    writer.received(0, 0, team, unum, "(init " + team + " (version " + version + "))");
                 }
             }
             writer.referee(0, 0, "kick_off_l");
@@ -125,6 +129,20 @@ class GameLogConverterTest {
         assertEquals(2, players.size());
         assertTrue(players.stream().allMatch(p -> p.team().equals(RIGHT)));
         assertEquals(List.of(1, 0), players.stream().map(SeenObject::uniformNumber).toList());
+    }
+
+    @Test
+    void clientsOfVersion18SeeSynchronouslyAndArePairedPerCycle() throws IOException {
+        List<Scene> scenes = new ArrayList<>();
+        GameLogConverter.Result result = new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.HALFWAY,
+                GameLogConverter.only(RIGHT, 2), 1).convert(gameLog(), commandLog(LEFT, 0, 18),
+                observer -> scenes::add);
+        ConversionReport report = result.players().get(0).report();
+        assertEquals(1, report.perCycleLogs());
+        // a see every other step (synchronous, normal width); a dash every other cycle
+        assertEquals(FRAMES / 2, report.sees(), 1);
+        assertEquals(FRAMES / 2, scenes.size(), 1);
+        assertTrue(scenes.stream().anyMatch(s -> s.seeAge() == 1), "some scenes act on the see of the cycle before");
     }
 
     @Test
