@@ -38,7 +38,9 @@ import picocli.CommandLine.Spec;
 @Command(name = "convert", mixinStandardHelpOptions = true,
         description = {"Convert player logs (.lsf, the scenes proxy's .log, timestamped captures; gzip or plain)"
                 + " into scenes: each see with the actions sent after it (or, under synchronous vision, each cycle"
-                + " with the latest see). Rules: docs/conversion.md."})
+                + " with the latest see). Rules: docs/conversion.md.",
+                "Or the server's logs of a game (GAME.rcg [GAME.rcl], told apart by content): scenes for every"
+                        + " player, each see rebuilt with the server's vision model, paired with the player's commands."})
 final class ConvertCommand implements Callable<Integer> {
     /** Malformed-line warnings printed; the rest are only counted. */
     private static final int WARNINGS_SHOWN = 50;
@@ -50,7 +52,7 @@ final class ConvertCommand implements Callable<Integer> {
     @ParentCommand
     ScenesCommand top;
 
-    @Parameters(paramLabel = "LOG", arity = "1..*", description = "Player logs to convert.")
+    @Parameters(paramLabel = "LOG", arity = "1..*", description = "Player logs to convert, or a game's .rcg and .rcl.")
     List<Path> logs;
 
     @ArgGroup(exclusive = true, multiplicity = "1")
@@ -90,6 +92,30 @@ final class ConvertCommand implements Callable<Integer> {
         }
     }
 
+    @Option(names = "--team", paramLabel = "NAME", description = "Game logs: only this team's players.")
+    String team;
+
+    @Option(names = "--unum", paramLabel = "N", description = "Game logs: only players with this number.")
+    int unum;
+
+    @Option(names = "--fading", paramLabel = "dice|halfway", defaultValue = "dice",
+            description = {"Game logs: how a seen player's team and number (and changes) fade with distance: dice"
+                    + " (the server's probabilities; default) or halfway (shown below the halfway point, as the"
+                    + " simulator does)."})
+    String fading;
+
+    @Option(names = "--fading-seed", paramLabel = "N", defaultValue = "1", description = "Game logs: seed of the"
+            + " fading dice. Default: 1.")
+    long fadingSeed;
+
+    @Option(names = "--threads", paramLabel = "N", description = "Game logs: threads rebuilding the players."
+            + " Default: the number of cores.")
+    int threads = Runtime.getRuntime().availableProcessors();
+
+    @Option(names = "--commands-first", description = {"Game logs: within a step, a player's commands came"
+            + " before its see (as in the simulator's own games), not after it (default)."})
+    boolean commandsFirst;
+
     private int warningsShown;
 
     @Override
@@ -101,6 +127,10 @@ final class ConvertCommand implements Callable<Integer> {
             OutputPaths.checkDirectory("--out-dir", output.directory);
         }
         PrintWriter err = spec.commandLine().getErr();
+        GameLogConversion game = GameLogConversion.of(logs);
+        if (game != null) {
+            return game.run(this, grid, spec.commandLine().getOut(), err);
+        }
         SceneConverter converter = new SceneConverter(grid, pairing, strict, line -> warn(err, line));
         ConversionReport total = new ConversionReport();
         List<Path> written = new java.util.concurrent.CopyOnWriteArrayList<>();

@@ -16,7 +16,8 @@ import picocli.CommandLine.Spec;
                 ShowCommand.class, StatsCommand.class, ExportCommand.class, CondenseCommand.class,
                 ValidateCommand.class, TuneCommand.class, ExperimentCommand.class, BenchCommand.class,
                 SimulateCommand.class, PlayCommand.class, TeamCommand.class, EvaluateCommand.class,
-                MatchCommand.class, ReplayCommand.class, DemoCommand.class, ProxyCommand.class, ServerCommand.class})
+                MatchCommand.class, ReplayCommand.class, DemoCommand.class, ProxyCommand.class, ServerCommand.class,
+                CompareCommand.class})
 final class ScenesCommand implements Runnable {
     @Spec
     CommandLine.Model.CommandSpec spec;

@@ -115,6 +115,41 @@ public final class SceneConverter {
     }
 
     /**
+     * A conversion fed one log line at a time by the caller, for logs made elsewhere (a player's
+     * messages rebuilt from a server game log): the same rules as {@link #convert}.
+     */
+    public Feed feed(Path name, SceneSink sink) {
+        return new Feed(new Run(name, sink));
+    }
+
+    /** One player's log, line by line: see {@link #feed}. */
+    public static final class Feed {
+        private final Run run;
+        private long line;
+
+        private Feed(Run run) {
+            this.run = run;
+        }
+
+        /** The next line of the log: one or several messages. */
+        public void line(byte[] bytes, int offset, int length) throws IOException {
+            line++;
+            try {
+                run.message(line, null, bytes, offset, length);
+            } catch (UncheckedIOException e) {
+                throw e.getCause();
+            }
+        }
+
+        /** Ends the log: closes the open scene; the report of the whole log. */
+        public ConversionReport finish(long bytes) throws IOException {
+            run.finish();
+            run.report.log(line, bytes);
+            return run.report;
+        }
+    }
+
+    /**
      * The scene objects of one {@code see} for an observer: names, numbers and marks as parsed,
      * the {@link Relation} to the observer, and each object's cell in {@code grid}.
      */
@@ -192,33 +227,34 @@ public final class SceneConverter {
         }
 
         void message(LogReader reader) throws IOException {
-            if (reader.problem() != null) {
-                malformed(reader.line(), reader.problem());
+            message(reader.line(), reader.problem(), reader.buffer(), reader.offset(), reader.length());
+        }
+
+        void message(long line, String problem, byte[] bytes, int offset, int length) throws IOException {
+            if (problem != null) {
+                malformed(line, problem);
                 return;
             }
-            if (isRepeat(reader)) {
+            if (isRepeat(bytes, offset, length)) {
                 // byte-for-byte the see that opened the scene: parsed once already
                 report.message();
                 report.see();
                 report.repeatedSee();
                 return;
             }
-            byte[] bytes = reader.buffer();
-            int offset = reader.offset();
-            int length = reader.length();
             lineBytes = bytes;
             lineOffset = offset;
             lineLength = length;
             String coach = CoachLog.evidence(bytes, offset, length);
             if (coach != null) {
-                throw new LogException(file, reader.line(), "this is an online coach's log (" + coach
+                throw new LogException(file, line, "this is an online coach's log (" + coach
                         + "), not a player's: convert the logs of the players", null);
             }
             try {
                 // a datagram (log line) may hold several messages, e.g. librcsc's (turn 0)(turn_neck 0)(done)
                 parser.parseAll(bytes, offset, length, this);
             } catch (ProtocolException e) {
-                malformed(reader.line(), e.getMessage());
+                malformed(line, e.getMessage());
             } catch (UncheckedIOException e) {
                 throw e.getCause();
             }
@@ -270,11 +306,9 @@ public final class SceneConverter {
             }
         }
 
-        boolean isRepeat(LogReader reader) {
-            int length = reader.length();
-            int offset = reader.offset();
+        boolean isRepeat(byte[] bytes, int offset, int length) {
             return pending != null && length == pendingLength
-                    && Arrays.equals(pendingBytes, 0, length, reader.buffer(), offset, offset + length);
+                    && Arrays.equals(pendingBytes, 0, length, bytes, offset, offset + length);
         }
 
         /** Per see: a different see closes the open scene and opens the next. */

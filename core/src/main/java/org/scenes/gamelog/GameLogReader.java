@@ -45,15 +45,17 @@ public final class GameLogReader {
 
     private final Path file;
     private final Consumer<GameFrame> frames;
+    private final Consumer<String> parameters;
     private String playMode = "";
     private String leftTeam = "";
     private String rightTeam = "";
     private int scoreLeft;
     private int scoreRight;
 
-    private GameLogReader(Path file, Consumer<GameFrame> frames) {
+    private GameLogReader(Path file, Consumer<GameFrame> frames, Consumer<String> parameters) {
         this.file = file;
         this.frames = frames;
+        this.parameters = parameters;
     }
 
     /** Reads every frame of the log. */
@@ -65,7 +67,18 @@ public final class GameLogReader {
 
     /** Hands each frame to {@code action} as it is read. */
     public static void forEach(Path file, Consumer<GameFrame> action) throws IOException {
-        GameLogReader reader = new GameLogReader(file, action);
+        forEach(file, action, line -> { });
+    }
+
+    /**
+     * Hands each frame to {@code action} as it is read, and each {@code server_param},
+     * {@code player_param} and {@code player_type} line of a text log to {@code parameters} (the
+     * JSON form's are skipped). An {@link IllegalArgumentException} from either becomes a
+     * {@link GameLogException} naming the line.
+     */
+    public static void forEach(Path file, Consumer<GameFrame> action, Consumer<String> parameters)
+            throws IOException {
+        GameLogReader reader = new GameLogReader(file, action, parameters);
         try (PushbackInputStream in = new PushbackInputStream(Inputs.open(file), 1)) {
             int first = in.read();
             while (first == ' ' || first == '\t' || first == '\r' || first == '\n') {
@@ -109,8 +122,11 @@ public final class GameLogReader {
     }
 
     private void textLine(String line) {
-        if (line.startsWith("(server_param") || line.startsWith("(player_param") || line.startsWith("(player_type")
-                || line.startsWith("(msg") || line.startsWith("(draw") || line.startsWith("(team_graphic")) {
+        if (line.startsWith("(server_param") || line.startsWith("(player_param") || line.startsWith("(player_type")) {
+            parameters.accept(line);
+            return;
+        }
+        if (line.startsWith("(msg") || line.startsWith("(draw") || line.startsWith("(team_graphic")) {
             return;
         }
         List<Object> list = Sexp.parse(line);

@@ -4,9 +4,11 @@ package org.scenes.scene;
 public enum ObjectKind {
     BALL, GOAL, FLAG, LINE, PLAYER;
 
+    private final String key = name().toLowerCase(java.util.Locale.ROOT);
+
     /** Lower-case name used in scene files. */
     public String key() {
-        return name().toLowerCase(java.util.Locale.ROOT);
+        return key;
     }
 
     public static ObjectKind fromKey(String key) {

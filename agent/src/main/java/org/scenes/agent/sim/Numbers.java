@@ -1,73 +1,29 @@
 package org.scenes.agent.sim;
 
-/** Quantisation and number text as the server writes them. */
-final class Numbers {
-    private static final double[] SCALE = {1, 10, 100, 1e3, 1e4, 1e5, 1e6};
+import org.scenes.vision.VisionNumbers;
 
+/** Quantisation and number text as the server writes them (shared with core's vision: {@link VisionNumbers}). */
+final class Numbers {
     private Numbers() {
     }
 
-    /** The server's {@code Q(v, q) = rint(v / q) * q}. */
     static double quantize(double value, double step) {
-        return Math.rint(value / step) * step;
+        return VisionNumbers.quantize(value, step);
     }
 
-    /**
-     * A seen distance: quantised in the log domain with {@code step}, then to 0.1, so near objects
-     * are exact to a decimetre and far ones coarser.
-     */
     static double seenDistance(double distance, double step) {
-        return quantize(Math.exp(quantize(Math.log(Math.max(distance, 1e-6)), step)), 0.1);
+        return VisionNumbers.seenDistance(distance, step);
     }
 
-    /** An angle in degrees normalised to (-180, 180]. */
     static double normalize(double degrees) {
-        double a = degrees % 360;
-        if (a > 180) {
-            a -= 360;
-        } else if (a <= -180) {
-            a += 360;
-        }
-        return a;
+        return VisionNumbers.normalize(degrees);
     }
 
-    /**
-     * A distance or direction change: like {@link #format}, but a negative value that rounds to
-     * zero, and negative zero itself, print as {@code -0}, as the server's C++ output does.
-     */
     static String formatChange(double value, int decimals) {
-        if (Math.round(value * SCALE[decimals]) == 0 && (value < 0 || 1 / value < 0)) {
-            return "-0";
-        }
-        return format(value, decimals);
+        return VisionNumbers.formatChange(value, decimals);
     }
 
-    /** The value rounded to at most {@code decimals} places, without trailing zeros or {@code -0}. */
     static String format(double value, int decimals) {
-        long scaled = Math.round(value * SCALE[decimals]);
-        if (scaled == 0) {
-            return "0";
-        }
-        StringBuilder text = new StringBuilder(16);
-        if (scaled < 0) {
-            text.append('-');
-            scaled = -scaled;
-        }
-        long whole = scaled / (long) SCALE[decimals];
-        long fraction = scaled % (long) SCALE[decimals];
-        text.append(whole);
-        if (fraction != 0) {
-            String digits = Long.toString(fraction);
-            text.append('.');
-            for (int i = digits.length(); i < decimals; i++) {
-                text.append('0');
-            }
-            int last = digits.length();
-            while (digits.charAt(last - 1) == '0') {
-                last--;
-            }
-            text.append(digits, 0, last);
-        }
-        return text.toString();
+        return VisionNumbers.format(value, decimals);
     }
 }

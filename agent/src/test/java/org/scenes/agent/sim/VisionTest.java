@@ -1,5 +1,6 @@
 package org.scenes.agent.sim;
 
+import org.scenes.vision.Landmarks;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;

@@ -1,23 +1,30 @@
-package org.scenes.agent.sim;
+package org.scenes.vision;
 
 import java.util.ArrayList;
 import java.util.List;
 
-/** The 53 flags and 2 goals of the pitch, and its 4 lines (x right, y down, metres). */
-final class Landmarks {
+/**
+ * The 53 flags and 2 goals of the pitch, and its 4 lines (x right, y down, metres), in the order
+ * the server describes them in a {@code see}.
+ */
+public final class Landmarks {
     /** A fixed object; {@code name} is the v7+ short name, e.g. {@code f p r b}. */
-    record Landmark(String name, double x, double y) {
-        boolean goal() {
+    public record Landmark(String name, double x, double y) {
+        public boolean goal() {
             return name.charAt(0) == 'g';
         }
     }
 
     /** A side line: vertical lines have a constant x, horizontal ones a constant y. */
-    record Line(String name, boolean vertical, double at) {
+    public record Line(String name, boolean vertical, double at) {
     }
 
-    static final List<Landmark> ALL = build();
-    static final List<Line> LINES = List.of(new Line("l l", true, -52.5), new Line("l r", true, 52.5),
+    /** Half the pitch's length and width. */
+    public static final double PITCH_HALF_LENGTH = 52.5;
+    public static final double PITCH_HALF_WIDTH = 34;
+
+    public static final List<Landmark> ALL = build();
+    public static final List<Line> LINES = List.of(new Line("l l", true, -52.5), new Line("l r", true, 52.5),
             new Line("l t", false, -34), new Line("l b", false, 34));
 
     private Landmarks() {

@@ -1,0 +1,90 @@
+package org.scenes.cli;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.stream.Stream;
+import org.scenes.convert.SceneComparison;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code scenes compare A B}: how close two scene files of one player are. */
+@Command(name = "compare", mixinStandardHelpOptions = true,
+        description = {"Compare two scene files of one player (e.g. rebuilt from a game log and converted from"
+                + " the player's own log): scenes of the same cycle, the share of objects present in both,"
+                + " distance and direction errors, and whether the paired actions agree."})
+final class CompareCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "A", description = "A scene file (.json or .json.gz), or a directory of them.")
+    Path first;
+
+    @Parameters(index = "1", paramLabel = "B", description = {"The scene file to compare it with, or a directory:"
+            + " its files of the same names (every player of a game); the figures are summed."})
+    Path second;
+
+    @Option(names = "--json", description = "Print the figures as JSON.")
+    boolean json;
+
+    @Override
+    public Integer call() throws Exception {
+        SceneComparison.Result r;
+        if (Files.isDirectory(first) != Files.isDirectory(second)) {
+            throw new UsageException("compare two scene files or two directories, not " + first + " and " + second);
+        }
+        if (Files.isDirectory(first)) {
+            List<Path> left = new ArrayList<>();
+            List<Path> right = new ArrayList<>();
+            try (Stream<Path> files = Files.list(first)) {
+                for (Path file : files.filter(f -> f.getFileName().toString().matches(".*\\.json(\\.gz)?"))
+                        .sorted().toList()) {
+                    Path other = second.resolve(file.getFileName().toString());
+                    if (Files.isRegularFile(other)) {
+                        left.add(file);
+                        right.add(other);
+                    }
+                }
+            }
+            if (left.isEmpty()) {
+                throw new UsageException("no scene file of " + first + " has a namesake in " + second);
+            }
+            r = new SceneComparison().compare(left, right);
+            if (!json) {
+                spec.commandLine().getOut().printf(Locale.ROOT, "%-26s %d of the same name%n", "Files", left.size());
+            }
+        } else {
+            r = new SceneComparison().compare(first, second);
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        if (json) {
+            out.println(new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(r));
+            out.flush();
+            return ExitCodes.OK;
+        }
+        out.printf(Locale.ROOT, "%-26s %s | %s%n", "Players", r.observerA().label(), r.observerB().label());
+        out.printf(Locale.ROOT, "%-26s %d | %d, %d of the same cycle%n", "Scenes", r.scenesA(), r.scenesB(),
+                r.paired());
+        out.printf(Locale.ROOT, "%-26s %.3f %% (%d of %d | %d)%n", "Objects in both", 100 * r.matchedShare(),
+                r.matched(), r.objectsA(), r.objectsB());
+        out.printf(Locale.ROOT, "%-26s %.3f %% within one step; mean %.4f m, p99 under %.2f m, max %.2f m%n",
+                "Distance error", 100 * r.distanceWithinStepShare(), r.distanceErrorMean(), r.distanceErrorP99(),
+                r.distanceErrorMax());
+        out.printf(Locale.ROOT, "%-26s %.3f %% within 1 degree; mean %.4f, p99 under %.1f, max %.1f degrees%n",
+                "Direction error", 100 * r.directionWithinStepShare(), r.directionErrorMean(), r.directionErrorP99(),
+                r.directionErrorMax());
+        out.printf(Locale.ROOT, "%-26s %.3f %% same type, %.3f %% same command%n", "Actions agree",
+                100 * r.actionTypeShare(), 100 * r.actionShare());
+        out.flush();
+        return ExitCodes.OK;
+    }
+}

@@ -1,0 +1,104 @@
+package org.scenes.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scenes.gamelog.CommandLogWriter;
+import org.scenes.gamelog.GameFrame;
+import org.scenes.gamelog.GameLogWriter;
+import org.scenes.gamelog.PlayerState;
+import org.scenes.scene.Side;
+import picocli.CommandLine;
+
+/** {@code scenes convert GAME.rcg [GAME.rcl]} and {@code scenes compare} from the command line. */
+class GameLogConvertCommandTest {
+    @TempDir
+    Path dir;
+
+    private String out;
+    private String err;
+
+    private int run(Object... args) {
+        CommandLine commandLine = ScenesCommand.commandLine();
+        StringWriter errors = new StringWriter();
+        StringWriter output = new StringWriter();
+        commandLine.setErr(new PrintWriter(errors));
+        commandLine.setOut(new PrintWriter(output));
+        String[] text = new String[args.length];
+        for (int i = 0; i < args.length; i++) {
+            text[i] = args[i].toString();
+        }
+        int code = commandLine.execute(text);
+        out = output.toString();
+        err = errors.toString();
+        return code;
+    }
+
+    /** A 200-cycle game of one player a side, both dashing every other cycle. */
+    private Path game() throws IOException {
+        Path rcg = dir.resolve("g.rcg");
+        try (GameLogWriter writer = GameLogWriter.create(rcg, List.of())) {
+            for (int time = 0; time < 200; time++) {
+                List<PlayerState> players = new ArrayList<>();
+                for (Side side : Side.values()) {
+                    players.add(new PlayerState(side, 1, 0, PlayerState.STANDING, side == Side.LEFT ? -5 : 5, 0, 0, 0,
+                            side == Side.LEFT ? 0 : 180, 0, 'h', 90, 8000, 1, 1, Double.NaN,
+                            new PlayerState.Counts(0, (time + 1) / 2, 0, 0, 0, 0, 0, 0, 0, 0, 0)));
+                }
+                writer.write(new GameFrame(time, "play_on", "My_Team", "Other", 0, 0,
+                        new GameFrame.BallState(0, 0, 0, 0), players));
+            }
+            writer.commit();
+        }
+        try (CommandLogWriter writer = CommandLogWriter.create(dir.resolve("g.rcl"))) {
+            for (int time = 0; time < 200; time += 2) {
+                writer.received(time, 0, "My_Team", 1, "(dash 40)");
+                writer.received(time, 0, "Other", 1, "(dash 40)");
+            }
+            writer.commit();
+        }
+        return rcg;
+    }
+
+    @Test
+    void convertsEveryPlayerFindingTheCommandLogBeside() throws IOException {
+        Path rcg = game();
+        assertEquals(0, run("convert", rcg, "--out-dir", dir.resolve("s")), err);
+        assertTrue(Files.isRegularFile(dir.resolve("s/My_Team_1.json.gz")));
+        assertTrue(Files.isRegularFile(dir.resolve("s/Other_1.json.gz")));
+        assertTrue(out.contains("My_Team_1"), out);
+        assertEquals(0, run("compare", dir.resolve("s"), dir.resolve("s")), err);
+        assertTrue(out.contains("100.000 % same type"), out);
+    }
+
+    @Test
+    void oneFileTakesOnePlayer() throws IOException {
+        Path rcg = game();
+        Path rcl = dir.resolve("g.rcl");
+        assertEquals(2, run("convert", rcg, rcl, "-o", dir.resolve("all.json")));
+        assertTrue(err.contains("-o takes the scenes of one player"), err);
+        assertTrue(Files.notExists(dir.resolve("all.json")));
+        assertEquals(0, run("convert", rcg, rcl, "-o", dir.resolve("one.json"), "--team", "Other"), err);
+        assertTrue(Files.isRegularFile(dir.resolve("one.json")));
+    }
+
+    @Test
+    void aCommandLogAloneOrMissingIsAUsageError() throws IOException {
+        Path rcg = game();
+        Path rcl = dir.resolve("g.rcl");
+        assertEquals(2, run("convert", rcl, "--out-dir", dir.resolve("s")));
+        assertTrue(err.contains("is a command log"), err);
+        Files.delete(rcl);
+        assertEquals(2, run("convert", rcg, "--out-dir", dir.resolve("s")));
+        assertTrue(err.contains("no command log beside"), err);
+    }
+}
