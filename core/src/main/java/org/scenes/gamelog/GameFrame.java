@@ -10,7 +10,8 @@ import java.util.List;
  *                 {@code kick_off_l}, {@code goal_r_2} ...
  * @param leftTeam left team's name, empty when no left team connected
  * @param rightTeam right team's name, empty when none
- * @param players every player in the game, left team first, by uniform number
+ * @param players every player in the game, left team first, by uniform number (disabled slots of
+ *                a game log, state 0, are not players)
  */
 public record GameFrame(int time, String playMode, String leftTeam, String rightTeam, int scoreLeft,
                         int scoreRight, BallState ball, List<PlayerState> players) {

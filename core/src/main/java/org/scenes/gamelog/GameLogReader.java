@@ -178,7 +178,11 @@ public final class GameLogReader {
             if (kind.equals("b")) {
                 ball = new GameFrame.BallState(number(item, 1), number(item, 2), number(item, 3), number(item, 4));
             } else {
-                players.add(player(item, kind, intAt(id, 1)));
+                PlayerState player = player(item, kind, intAt(id, 1));
+                // the server writes all 22 slots; a disabled one (state 0) holds no one in the game
+                if (player.state() != 0) {
+                    players.add(player);
+                }
             }
         }
         if (ball == null) {
@@ -302,6 +306,9 @@ public final class GameLogReader {
             for (Object each : (List<Object>) show.get("players")) {
                 Map<String, Object> p = (Map<String, Object>) each;
                 double capacity = p.containsKey("capacity") ? num(p, "capacity") : Double.NaN;
+                if ((int) num(p, "state") == 0) {
+                    continue; // a disabled slot, as in the text form
+                }
                 players.add(new PlayerState(Side.fromLetter(((String) p.get("side")).charAt(0)), (int) num(p, "unum"),
                         (int) num(p, "type"), (int) num(p, "state"), num(p, "x"), num(p, "y"), num(p, "vx"),
                         num(p, "vy"), num(p, "body"), num(p, "neck"), ((String) p.get("vq")).charAt(0), num(p, "vw"),

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.regex.Pattern;
 import org.scenes.files.AtomicTextOutput;
+import org.scenes.scene.Side;
 
 /**
  * Writes a server game log ({@code .rcg}) in the text format rcssserver 19 writes by default,
@@ -25,6 +26,8 @@ public final class GameLogWriter implements AutoCloseable {
     /** The server's precision of positions and velocities, and of angles. */
     private static final double POSITION_STEP = 0.0001;
     private static final double ANGLE_STEP = 0.001;
+    /** Player slots per side in a show, as the server writes them. */
+    private static final int SLOTS = 11;
     private static final Pattern GOAL = Pattern.compile("goal_([lr])_\\d+");
 
     private final AtomicTextOutput output;
@@ -121,7 +124,19 @@ public final class GameLogWriter implements AutoCloseable {
         position(ball.vx());
         position(ball.vy());
         line.append(')');
+        // Like the server, all 11 slots of each side, players in them or not (readers such as
+        // rcssmonitor's expect them); an empty slot is disabled: state 0.
+        PlayerState[] slots = new PlayerState[2 * SLOTS];
         for (PlayerState p : frame.players()) {
+            int slot = (p.side() == Side.LEFT ? 0 : SLOTS) + p.unum() - 1;
+            if (p.unum() < 1 || p.unum() > SLOTS || slots[slot] != null) {
+                throw new IllegalArgumentException("player " + p.side().letter() + " " + p.unum()
+                        + " does not fit a game log's slots (uniform numbers 1 to 11, once each)");
+            }
+            slots[slot] = p;
+        }
+        for (int slot = 0; slot < slots.length; slot++) {
+            PlayerState p = slots[slot] != null ? slots[slot] : disabled(slot < SLOTS ? Side.LEFT : Side.RIGHT, slot % SLOTS + 1);
             line.append(" ((").append(p.side().letter()).append(' ').append(p.unum()).append(") ").append(p.type())
                     .append(' ');
             // The server prints the flags as C++ hex with showbase: 0x1, 0x9, and a plain 0.
@@ -147,6 +162,11 @@ public final class GameLogWriter implements AutoCloseable {
                     .append(' ').append(c.pointto()).append(' ').append(c.attentionto()).append(" 0))");
         }
         return line.append(")\n").toString();
+    }
+
+    private static PlayerState disabled(Side side, int unum) {
+        return new PlayerState(side, unum, 0, 0, 0, 0, 0, 0, 0, 0, 'h', 90, 0, 0, 0, Double.NaN,
+                new PlayerState.Counts(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0));
     }
 
     private void position(double value) {

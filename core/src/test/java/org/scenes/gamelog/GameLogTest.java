@@ -110,6 +110,22 @@ class GameLogTest {
     }
 
     @Test
+    void everyShowHoldsAllTwentyTwoSlotsAndEmptyOnesAreDisabled() throws IOException {
+        Path file = writeGame(dir.resolve("slots.rcg"));
+        String show = Files.readAllLines(file).stream().filter(l -> l.startsWith("(show 1 ")).findFirst().orElseThrow();
+        for (char side : new char[] {'l', 'r'}) {
+            for (int unum = 1; unum <= 11; unum++) {
+                assertTrue(show.contains(" ((" + side + " " + unum + ") "), side + " " + unum + ": " + show);
+            }
+        }
+        // the game has 3 a side: the other slots are written with state 0, in order after them
+        assertTrue(show.contains(" ((l 4) 0 0 0 0 0 0 0 0 (v h 90)"), show);
+        assertTrue(show.indexOf("((l 11)") < show.indexOf("((r 1)"), show);
+        // and reading leaves them out
+        assertEquals(6, GameLogReader.readAll(file).get(1).players().size());
+    }
+
+    @Test
     void numbersAsACppStreamPrintsThem() {
         assertEquals("0.0001", LogNumbers.format(LogNumbers.quantize(0.00012, 0.0001)));
         assertEquals("-0", LogNumbers.format(LogNumbers.quantize(-0.00001, 0.0001)));
@@ -163,7 +179,9 @@ class GameLogTest {
                 "(team 0 Alpha null 0 0)",
                 "(msg 0 1 \"(referee kick_off_l)\")",
                 "(show 0 ((b) 0 0 0 0) ((l 1) 0 0x9 -50 0 0 0 0 0 (v h 90) (s 8000 1 1) (f l 2) (c 0 0 0 0 1 0 0 0 0 0 0))"
-                        + " ((l 2) 0 0 -10 -37 0 0 0 0 -3 4 (v l 180) (s 8000 1 1) (c 0 0 0 0 0 0 0 0 0 0 0)))",
+                        + " ((l 2) 0 0x1 -10 -37 0 0 0 0 -3 4 (v l 180) (s 8000 1 1) (c 0 0 0 0 0 0 0 0 0 0 0))"
+                        // a disabled slot (state 0): no one in the game, so not a player of the frame
+                        + " ((l 3) 0 0 0 0 0 0 0 0 (v h 90) (s 8000 1 1) (c 0 0 0 0 0 0 0 0 0 0 0)))",
                 "(show 1 (pm 3) (tm Alpha Beta 1 2) ((b) 1.5 -2 0.1 0)"
                         + " ((r 7) 3 0x1 10 5 0.5 -0.5 90 -45 (v h 60) (s 7000.5 0.9 0.8 130000) (c 1 2 3 0 1 0 0 0 0 0 0)))",
                 ""));
@@ -173,7 +191,8 @@ class GameLogTest {
         assertEquals("kick_off_l", first.playMode());
         assertEquals("", first.rightTeam());
         assertEquals(PlayerState.STANDING | PlayerState.GOALIE, first.players().get(0).state());
-        assertEquals(0, first.players().get(1).state());
+        assertEquals(2, first.players().size());
+        assertEquals(PlayerState.STANDING, first.players().get(1).state());
         assertEquals('l', first.players().get(1).viewQuality());
         GameFrame second = frames.get(1);
         assertEquals("play_on", second.playMode());

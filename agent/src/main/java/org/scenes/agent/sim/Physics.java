@@ -58,15 +58,16 @@ final class Physics {
 
     /**
      * Kicks the ball when it is within the kickable distance; returns whether the ball was
-     * touched. Like the server, the counter counts every executed kick command, touch or not.
+     * touched. Like the server, the counter counts only kicks that reach the ball (rcssserver
+     * returns before counting when the ball is not kickable).
      */
     boolean kick(Player player, double power, double direction) {
-        player.kicks++;
         Ball ball = world.ball;
         double distance = player.distanceTo(ball);
         if (distance > p.kickableDistance()) {
             return false;
         }
+        player.kicks++;
         power = clamp(power, p.minPower(), p.maxPower());
         direction = clamp(direction, p.minMoment(), p.maxMoment());
         double ballAngle = Math.toDegrees(Math.atan2(ball.y - player.y, ball.x - player.x));
