@@ -5,16 +5,24 @@ import org.scenes.agent.Brain;
 import org.scenes.agent.BrainFactory;
 
 /**
- * Gives a brain the think loop of the Krislet client: it is handed the latest {@code see} only
- * every {@code steps}-th {@code sense_body} (one per step) and so answers at most once per
- * {@code steps} steps, where on its own it answers every see (two steps of three). The policy
- * (which action for which scene) is the brain's; only the tempo is the teacher's.
+ * Gives a brain the think loop of the Krislet client: it decides at most once per {@code steps}
+ * steps (counted by {@code sense_body}, one per step), where on its own it answers every see (two
+ * steps of three). As the teacher does, it decides on a see taken after its last decision: when the
+ * latest see is older, it waits for the step's see (or, should none come, decides at the next
+ * {@code sense_body} on what it has). The policy (which action for which scene) is the brain's;
+ * only the tempo is the teacher's.
  */
 public final class PacedBrain implements Brain {
     private final Brain inner;
     private final int steps;
     private String latestSee;
     private int stepsSinceDecision;
+    /** Steps begun, the step of the last decision and the step in which the latest see came. */
+    private int step;
+    private int decisionStep = -1;
+    private int seeStep = -1;
+    /** A decision is due and waits for a see taken after the last one. */
+    private boolean waiting;
 
     private PacedBrain(Brain inner, int steps) {
         this.inner = inner;
@@ -34,12 +42,31 @@ public final class PacedBrain implements Brain {
     public void receive(String message, Consumer<String> send) {
         if (message.startsWith("(see ")) {
             latestSee = message;
+            seeStep = step;
+            if (waiting) {
+                decide(send);
+            }
             return;
         }
         inner.receive(message, send);
-        if (message.startsWith("(sense_body") && ++stepsSinceDecision >= steps && latestSee != null) {
-            stepsSinceDecision = 0;
-            inner.receive(latestSee, send);
+        if (message.startsWith("(sense_body")) {
+            step++;
+            if (waiting) {
+                decide(send); // no see came during the step: decide on what it has
+            } else if (++stepsSinceDecision >= steps && latestSee != null) {
+                if (seeStep > decisionStep) {
+                    decide(send);
+                } else {
+                    waiting = true;
+                }
+            }
         }
+    }
+
+    private void decide(Consumer<String> send) {
+        waiting = false;
+        stepsSinceDecision = 0;
+        decisionStep = step;
+        inner.receive(latestSee, send);
     }
 }
