@@ -20,11 +20,7 @@ import org.scenes.convert.Pairing;
 import org.scenes.convert.SceneConverter;
 import org.scenes.files.AtomicOutput;
 import org.scenes.scene.Grid;
-import org.scenes.scene.Observer;
 import org.scenes.scene.Scene;
-import org.scenes.scene.SceneFileHeader;
-import org.scenes.scene.SceneFileWriter;
-import org.scenes.scene.SceneSource;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -33,6 +29,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
+import org.scenes.scene.LazySceneFileWriter;
 
 /** {@code scenes convert}: player logs to scene files, with a summary of what was kept and dropped. */
 @Command(name = "convert", mixinStandardHelpOptions = true,
@@ -147,7 +144,7 @@ final class ConvertCommand implements Callable<Integer> {
         Runtime.getRuntime().addShutdownHook(interrupted);
         try (Progress progress = Progress.start(logs)) {
             if (output.file != null) {
-                try (LazyWriter writer = new LazyWriter(output.file, grid, sourceName(logs))) {
+                try (LazySceneFileWriter writer = new LazySceneFileWriter(output.file, grid, sourceName(logs))) {
                     for (Path log : logs) {
                         ConversionReport report = converter.convert(log, writer::write, progress::step);
                         total.add(report);
@@ -165,7 +162,7 @@ final class ConvertCommand implements Callable<Integer> {
                 for (int i = 0; i < logs.size(); i++) {
                     Path log = logs.get(i);
                     Path target = output.directory.resolve(names.get(i) + ".json.gz");
-                    try (LazyWriter writer = new LazyWriter(target, grid, log.getFileName().toString())) {
+                    try (LazySceneFileWriter writer = new LazySceneFileWriter(target, grid, log.getFileName().toString())) {
                         ConversionReport report = converter.convert(log, writer::write, progress::step);
                         total.add(report);
                         if (noScenes(err, log, report)) {
@@ -354,47 +351,5 @@ final class ConvertCommand implements Callable<Integer> {
         return counts.entrySet().stream()
                 .map(e -> e.getKey().name().toLowerCase(Locale.ROOT) + " " + e.getValue())
                 .collect(Collectors.joining(", "));
-    }
-
-    /**
-     * Opens the scene file at the first scene, so the header names the observer the log's init
-     * exchange revealed; a log without scenes still gets a (valid, empty) file.
-     */
-    private static final class LazyWriter implements AutoCloseable {
-        private final Path target;
-        private final Grid grid;
-        private final String source;
-        private SceneFileWriter writer;
-
-        LazyWriter(Path target, Grid grid, String source) {
-            this.target = target;
-            this.grid = grid;
-            this.source = source;
-        }
-
-        void write(Scene scene) throws IOException {
-            if (writer == null) {
-                open(scene.observer());
-            }
-            writer.write(scene);
-        }
-
-        private void open(Observer observer) throws IOException {
-            writer = SceneFileWriter.create(target, SceneFileHeader.of(grid, new SceneSource(source, observer)));
-        }
-
-        void commit() throws IOException {
-            if (writer == null) {
-                open(Observer.UNKNOWN);
-            }
-            writer.commit();
-        }
-
-        @Override
-        public void close() throws IOException {
-            if (writer != null) {
-                writer.close();
-            }
-        }
     }
 }

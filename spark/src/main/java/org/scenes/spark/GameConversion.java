@@ -13,11 +13,7 @@ import org.scenes.convert.DropReason;
 import org.scenes.convert.Pairing;
 import org.scenes.convert.SceneConverter;
 import org.scenes.scene.Grid;
-import org.scenes.scene.Observer;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SceneFileHeader;
-import org.scenes.scene.SceneFileWriter;
-import org.scenes.scene.SceneSource;
+import org.scenes.scene.LazySceneFileWriter;
 
 /**
  * One game's conversion, the unit of a {@code convert} job: each of the game's player logs goes
@@ -76,7 +72,7 @@ final class GameConversion {
                 String target = outDir.replaceFirst("/+$", "") + "/" + game.name() + "/" + names.get(i) + ".json.gz";
                 ConversionReport report;
                 String error = null;
-                try (LazyWriter writer = new LazyWriter(sceneFile, grid, fileName)) {
+                try (LazySceneFileWriter writer = new LazySceneFileWriter(sceneFile, grid, fileName)) {
                     report = converter.convert(local, writer::write, bytes -> { });
                     error = noScenes(log, report);
                     if (error == null) {
@@ -148,44 +144,5 @@ final class GameConversion {
             names.add(name);
         }
         return names;
-    }
-
-    /** Opens the scene file at the first scene, so its header names the observer (as {@code scenes convert}). */
-    private static final class LazyWriter implements AutoCloseable {
-        private final Path target;
-        private final Grid grid;
-        private final String source;
-        private SceneFileWriter writer;
-
-        LazyWriter(Path target, Grid grid, String source) {
-            this.target = target;
-            this.grid = grid;
-            this.source = source;
-        }
-
-        void write(Scene scene) throws IOException {
-            if (writer == null) {
-                open(scene.observer());
-            }
-            writer.write(scene);
-        }
-
-        private void open(Observer observer) throws IOException {
-            writer = SceneFileWriter.create(target, SceneFileHeader.of(grid, new SceneSource(source, observer)));
-        }
-
-        void commit() throws IOException {
-            if (writer == null) {
-                open(Observer.UNKNOWN);
-            }
-            writer.commit();
-        }
-
-        @Override
-        public void close() throws IOException {
-            if (writer != null) {
-                writer.close();
-            }
-        }
     }
 }
