@@ -142,39 +142,47 @@ final class ConvertCommand implements Callable<Integer> {
             err.flush();
         }, "scenes-convert-interrupted");
         Runtime.getRuntime().addShutdownHook(interrupted);
-        try (Progress progress = Progress.start(logs)) {
-            if (output.file != null) {
-                try (LazySceneFileWriter writer = new LazySceneFileWriter(output.file, grid, sourceName(logs))) {
-                    for (Path log : logs) {
-                        ConversionReport report = converter.convert(log, writer::write, progress::step);
-                        total.add(report);
-                        failed += noScenes(err, log, report) ? 1 : 0;
-                        progress.logDone(log);
-                    }
-                    if (failed == 0) {
-                        writer.commit();
-                        written.add(output.file);
-                    }
-                }
-            } else {
-                Files.createDirectories(output.directory);
-                List<String> names = outputNames(logs);
-                for (int i = 0; i < logs.size(); i++) {
-                    Path log = logs.get(i);
-                    Path target = output.directory.resolve(names.get(i) + ".json.gz");
-                    try (LazySceneFileWriter writer = new LazySceneFileWriter(target, grid, log.getFileName().toString())) {
-                        ConversionReport report = converter.convert(log, writer::write, progress::step);
-                        total.add(report);
-                        if (noScenes(err, log, report)) {
-                            failed++;
-                        } else {
+        try {
+            try (Progress progress = Progress.start(logs)) {
+                if (output.file != null) {
+                    try (LazySceneFileWriter writer = new LazySceneFileWriter(output.file, grid, sourceName(logs))) {
+                        for (Path log : logs) {
+                            ConversionReport report = converter.convert(log, writer::write, progress::step);
+                            total.add(report);
+                            failed += noScenes(err, log, report) ? 1 : 0;
+                            progress.logDone(log);
+                        }
+                        if (failed == 0) {
                             writer.commit();
-                            written.add(target);
+                            written.add(output.file);
                         }
                     }
-                    progress.logDone(log);
+                } else {
+                    Files.createDirectories(output.directory);
+                    List<String> names = outputNames(logs);
+                    for (int i = 0; i < logs.size(); i++) {
+                        Path log = logs.get(i);
+                        Path target = output.directory.resolve(names.get(i) + ".json.gz");
+                        try (LazySceneFileWriter writer = new LazySceneFileWriter(target, grid, log.getFileName().toString())) {
+                            ConversionReport report = converter.convert(log, writer::write, progress::step);
+                            total.add(report);
+                            if (noScenes(err, log, report)) {
+                                failed++;
+                            } else {
+                                writer.commit();
+                                written.add(target);
+                            }
+                        }
+                        progress.logDone(log);
+                    }
                 }
             }
+            if (warningsShown < total.malformed()) {
+                err.printf("scenes: warning: %d more malformed lines not shown%n", total.malformed() - warningsShown);
+            }
+            err.flush();
+            // still under the hook: a signal while the summary prints is told what was written
+            printSummary(spec.commandLine().getOut(), total, grid, written, (System.nanoTime() - started) / 1e9);
         } finally {
             try {
                 Runtime.getRuntime().removeShutdownHook(interrupted);
@@ -182,11 +190,6 @@ final class ConvertCommand implements Callable<Integer> {
                 // the JVM is already stopping: the hook reports
             }
         }
-        if (warningsShown < total.malformed()) {
-            err.printf("scenes: warning: %d more malformed lines not shown%n", total.malformed() - warningsShown);
-        }
-        err.flush();
-        printSummary(spec.commandLine().getOut(), total, grid, written, (System.nanoTime() - started) / 1e9);
         if (failed > 0) {
             err.printf("scenes: error: %d of %d logs gave no scenes%s%n", failed, logs.size(),
                     output.file != null ? "; " + output.file + " not written" : "");
