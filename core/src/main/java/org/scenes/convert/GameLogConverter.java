@@ -93,10 +93,10 @@ public final class GameLogConverter {
     }
 
     /**
-     * Within a step, the player's commands come after its see (the default: players answer what
-     * they see, and synchronous sees come at the start of the cycle) or, with {@code true}, before it,
-     * right after {@code sense_body} (as the simulator's in-process teachers act). The command log
-     * does not say.
+     * Within a step, the player's commands come before its see, right after {@code sense_body}
+     * ({@code true}), or (the default) before it only when the player already holds a see taken
+     * after its last command took effect, otherwise after it (players answer what they see; see
+     * {@code Worker.commandsFirst}). The command log does not say.
      */
     public GameLogConverter commandsBeforeSee(boolean before) {
         this.commandsBeforeSee = before;
@@ -159,6 +159,9 @@ public final class GameLogConverter {
         /** The executed command counts at the last show, and whether a body command was sent since. */
         int executed = -1;
         boolean sentBody;
+        /** The steps of the player's last see and last command, to order the two within a step. */
+        long seeStep = -1;
+        long commandStep = -1;
         long agreed;
         long disagreed;
 
@@ -253,6 +256,7 @@ public final class GameLogConverter {
             for (Sent sent : step.before()) {
                 if (sent.player().worker == this) {
                     deliver(sent.player(), sent.message());
+                    sent.player().commandStep = step.index();
                 }
             }
             int time = frame.time();
@@ -263,26 +267,57 @@ public final class GameLogConverter {
                 }
                 checkAgreement(player, state);
                 line(player, "(sense_body " + time + ")");
-                if (commandsBeforeSee) {
-                    for (Sent sent : step.at()) {
-                        if (sent.player() == player) {
-                            deliver(player, sent.message());
-                        }
-                    }
-                }
+                // this show's sees and commands belong to the next step
+                long next = step.index() + 1;
+                List<String> sent = sentBy(player, step);
+                int first = commandsFirst(player, sent.size());
+                deliver(player, sent.subList(0, first), next);
                 if (step.seesDue()) {
                     int sees = seesDue(player, state, step.index());
                     for (int i = 0; i < sees; i++) {
                         see(player, state, frame);
+                        player.seeStep = next;
                     }
+                }
+                deliver(player, sent.subList(first, sent.size()), next);
+            }
+        }
+
+        /**
+         * How many of the player's {@code sent} commands of the coming step went out before its
+         * see. The command log does not say. A player that already holds a see taken after its last
+         * command took effect (a see of a later step than that command's) has what it needs and
+         * answers it at the step's start, as Krislet does; one that does not waits for the step's
+         * see; of several commands in a step, all but the last answered earlier sees. Synchronous
+         * sees come with {@code sense_body}, so commands follow them.
+         */
+        int commandsFirst(Player player, int sent) {
+            if (commandsBeforeSee) {
+                return sent;
+            }
+            if (sent == 0 || player.synchSee) {
+                return 0;
+            }
+            return player.seeStep > player.commandStep ? Math.max(1, sent - 1) : sent - 1;
+        }
+
+        List<String> sentBy(Player player, Step step) {
+            List<String> sent = List.of();
+            for (Sent s : step.at()) {
+                if (s.player() == player) {
+                    if (sent.isEmpty()) {
+                        sent = new ArrayList<>(2);
+                    }
+                    sent.add(s.message());
                 }
             }
-            if (!commandsBeforeSee) {
-                for (Sent sent : step.at()) {
-                    if (sent.player().worker == this) {
-                        deliver(sent.player(), sent.message());
-                    }
-                }
+            return sent;
+        }
+
+        void deliver(Player player, List<String> messages, long index) throws IOException {
+            for (String message : messages) {
+                deliver(player, message);
+                player.commandStep = index;
             }
         }
 
@@ -493,8 +528,9 @@ public final class GameLogConverter {
             teamsKnown = true;
             String mode = frame.playMode();
             int stoppage = frames > 0 && time == lastTime ? lastStoppage + 1 : 0;
-            if (!mode.equals(lastMode)) {
-                // a step the game log skipped (before kick-off, half time): the referee's word tells which
+            if (!mode.equals(lastMode) || (time != lastTime && pausedAt(time))) {
+                // steps the game log skipped (before kick-off, half time): the referee's word tells
+                // how many, also when the mode is the same on both sides (a kick-off not taken by half time)
                 stoppage = Math.max(stoppage, announced(time, mode, stoppage));
             }
             if (frames == 0) {
@@ -532,11 +568,7 @@ public final class GameLogConverter {
 
         /** The stoppage of the referee's announcement of {@code mode} at {@code time}, or -1. */
         int announced(int time, String mode, int from) throws IOException {
-            while (!commandsEnded && (ahead.isEmpty() || ahead.peekLast().time() <= time)) {
-                if (!readOne()) {
-                    break;
-                }
-            }
+            readThrough(time);
             for (CommandLogReader.Entry entry : ahead) {
                 if (entry.time() == time && entry.stoppage() >= from && entry.referee()
                         && GameLogWriter.playMode(entry.text()).equals(mode)) {
@@ -544,6 +576,30 @@ public final class GameLogConverter {
                 }
             }
             return -1;
+        }
+
+        /** Whether the referee announced {@code before_kick_off} at {@code time}: the game log skips what follows. */
+        boolean pausedAt(int time) throws IOException {
+            readThrough(time);
+            for (CommandLogReader.Entry entry : ahead) {
+                if (entry.time() > time) {
+                    break;
+                }
+                if (entry.time() == time && entry.referee()
+                        && GameLogWriter.playMode(entry.text()).equals("before_kick_off")) {
+                    return true;
+                }
+            }
+            return false;
+        }
+
+        /** Reads the command log ahead past {@code time}. */
+        void readThrough(int time) throws IOException {
+            while (!commandsEnded && (ahead.isEmpty() || ahead.peekLast().time() <= time)) {
+                if (!readOne()) {
+                    break;
+                }
+            }
         }
 
         boolean readOne() throws IOException {
@@ -631,11 +687,7 @@ public final class GameLogConverter {
 
         /** The version of the player's init sent by the end of {@code time} (ahead of its show), or 0. */
         int initAhead(String key, int time) throws IOException {
-            while (!commandsEnded && (ahead.isEmpty() || ahead.peekLast().time() <= time)) {
-                if (!readOne()) {
-                    break;
-                }
-            }
+            readThrough(time);
             for (CommandLogReader.Entry entry : ahead) {
                 if (entry.time() > time) {
                     break;

@@ -54,6 +54,10 @@ class GameLogConverterTest {
     }
 
     private static GameFrame frame(int time) {
+        return frame(time, time == 0 ? "kick_off_l" : "play_on");
+    }
+
+    private static GameFrame frame(int time, String mode) {
         List<PlayerState> players = new ArrayList<>();
         int dashes = (time + 1) / 2;
         for (Side side : Side.values()) {
@@ -65,7 +69,7 @@ class GameLogConverterTest {
                         new PlayerState.Counts(0, dashes, 0, 0, 0, 0, 0, 0, 0, 0, 0)));
             }
         }
-        return new GameFrame(time, time == 0 ? "kick_off_l" : "play_on", LEFT, RIGHT, 0, 0,
+        return new GameFrame(time, mode, LEFT, RIGHT, 0, 0,
                 new GameFrame.BallState(0.01 * time, 0, 0.01, 0), players);
     }
 
@@ -143,6 +147,47 @@ class GameLogConverterTest {
         assertEquals(FRAMES / 2, report.sees(), 1);
         assertEquals(FRAMES / 2, scenes.size(), 1);
         assertTrue(scenes.stream().anyMatch(s -> s.seeAge() == 1), "some scenes act on the see of the cycle before");
+    }
+
+    @Test
+    void theStepsBeforeAKickOffCountAlsoWhenThePlayModeIsTheSameOnBothSides() throws IOException {
+        // a kick-off not taken by half time: kick_off_l before and after the 100 steps the game log skips
+        int half = 150;
+        Path game = dir.resolve("game.rcg");
+        try (GameLogWriter writer = GameLogWriter.create(game, List.of("(server_param (send_step 150)"
+                + "(simulator_step 100))"))) {
+            for (int time = 0; time < FRAMES; time++) {
+                if (time == half) {
+                    writer.write(frame(time, "before_kick_off"));
+                }
+                writer.write(frame(time, time <= half ? "kick_off_l" : "play_on"));
+            }
+            writer.commit();
+        }
+        Path commands = dir.resolve("game.rcl");
+        try (CommandLogWriter writer = CommandLogWriter.create(commands)) {
+            writer.received(0, 0, LEFT, 1, "(init " + LEFT + " (version 9))");
+            writer.referee(0, 0, "kick_off_l");
+            for (int time = 0; time < FRAMES; time += 2) {
+                if (time == half) {
+                    writer.referee(time, 0, "half_time");
+                    writer.referee(time, 0, "before_kick_off");
+                    writer.referee(time, 100, "kick_off_l");
+                }
+                writer.received(time, time == half ? 100 : 0, LEFT, 1, "(dash 50)"); // as the shows count
+            }
+            writer.commit();
+        }
+        List<Scene> scenes = new ArrayList<>();
+        new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.HALFWAY, GameLogConverter.only(LEFT, 1), 1)
+                .convert(game, commands, observer -> scenes::add);
+        // a see in the steps of 150 ms multiples: two steps in three; the 100 skipped steps shift
+        // which cycles those are by one
+        List<Integer> before = scenes.stream().map(Scene::cycle).filter(c -> c < half).toList();
+        List<Integer> after = scenes.stream().map(Scene::cycle).filter(c -> c > half).toList();
+        assertTrue(before.size() > half / 4 && after.size() > (FRAMES - half) / 4, before.size() + ", " + after.size());
+        assertTrue(before.stream().allMatch(c -> c % 3 != 1), before.toString());
+        assertTrue(after.stream().allMatch(c -> c % 3 != 0), after.toString());
     }
 
     @Test

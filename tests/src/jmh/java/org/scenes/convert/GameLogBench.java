@@ -86,7 +86,7 @@ public class GameLogBench {
         List<SceneFileWriter> writers = new ArrayList<>();
         try {
             GameLogConverter.Result result = new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.HALFWAY,
-                    GameLogConverter.everyone(), threads).commandsBeforeSee(true).convert(rcg, rcl, observer -> {
+                    GameLogConverter.everyone(), threads).convert(rcg, rcl, observer -> {
                         SceneFileWriter writer = SceneFileWriter.create(out.resolve(observer.team() + "_"
                                 + observer.uniformNumber() + ".json.gz"), SceneFileHeader.of(Grid.DEFAULT,
                                 new SceneSource(rcg.getFileName().toString(), observer)));
