@@ -20,6 +20,15 @@ final class CoachLog {
         {"(ok team_names ", "the server's answer to team_names"},
     };
 
+    /** The marks' bytes, made once: every {@code (see} line of a log is checked. */
+    private static final byte[][] PREFIXES = new byte[MARKS.length][];
+
+    static {
+        for (int i = 0; i < MARKS.length; i++) {
+            PREFIXES[i] = MARKS[i][0].getBytes(StandardCharsets.US_ASCII);
+        }
+    }
+
     private CoachLog() {
     }
 
@@ -38,10 +47,10 @@ final class CoachLog {
         if (second != 's' && second != 'i' && second != 'e' && second != 'l' && second != 't' && second != 'o') {
             return null;
         }
-        for (String[] mark : MARKS) {
-            byte[] prefix = mark[0].getBytes(StandardCharsets.US_ASCII);
+        for (int i = 0; i < MARKS.length; i++) {
+            byte[] prefix = PREFIXES[i];
             if (end - at >= prefix.length && java.util.Arrays.equals(bytes, at, at + prefix.length, prefix, 0, prefix.length)) {
-                return mark[1];
+                return MARKS[i][1];
             }
         }
         return null;

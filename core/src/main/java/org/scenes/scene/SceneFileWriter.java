@@ -3,9 +3,13 @@ package org.scenes.scene;
 import com.fasterxml.jackson.core.JsonEncoding;
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.core.SerializableString;
+import com.fasterxml.jackson.core.io.SerializedString;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import org.scenes.files.AtomicOutput;
 
 /**
@@ -15,11 +19,27 @@ import org.scenes.files.AtomicOutput;
  */
 public final class SceneFileWriter implements AutoCloseable {
     static final JsonFactory JSON = new JsonFactory();
+    /** The fields and kinds of every object, encoded once (writing scenes is much of a conversion's time). */
+    private static final SerializableString KIND = new SerializedString("kind");
+    private static final SerializableString NAME = new SerializedString("name");
+    private static final SerializableString CELL = new SerializedString("cell");
+    private static final SerializableString[] KINDS = new SerializableString[ObjectKind.values().length];
+    /** Distinct object names kept encoded; names beyond it (none in the server's protocol) are encoded each time. */
+    private static final int NAMES_KEPT = 512;
+
+    static {
+        for (ObjectKind kind : ObjectKind.values()) {
+            KINDS[kind.ordinal()] = new SerializedString(kind.key());
+        }
+    }
 
     private final AtomicOutput output;
     private final JsonGenerator json;
     private final SceneFileHeader header;
     private long written;
+    private final Map<String, SerializableString> names = new HashMap<>();
+    private final Map<String, SerializableString> fields = new HashMap<>();
+    private final char[] number = new char[24];
 
     private SceneFileWriter(Path target, SceneFileHeader header) throws IOException {
         this.output = AtomicOutput.create(target);
@@ -106,8 +126,19 @@ public final class SceneFileWriter implements AutoCloseable {
 
     private void writeObject(SeenObject object) throws IOException {
         json.writeStartObject();
-        json.writeStringField("kind", object.kind().key());
-        json.writeStringField("name", object.name());
+        json.writeFieldName(KIND);
+        json.writeString(KINDS[object.kind().ordinal()]);
+        json.writeFieldName(NAME);
+        SerializableString name = names.get(object.name());
+        if (name == null && names.size() < NAMES_KEPT) {
+            name = new SerializedString(object.name());
+            names.put(object.name(), name);
+        }
+        if (name != null) {
+            json.writeString(name);
+        } else {
+            json.writeString(object.name());
+        }
         if (!object.team().isEmpty()) {
             json.writeStringField("team", object.team());
         }
@@ -130,7 +161,8 @@ public final class SceneFileWriter implements AutoCloseable {
         if (object.mark() != SeenObject.NO_MARK) {
             json.writeStringField("mark", String.valueOf(object.mark()));
         }
-        json.writeArrayFieldStart("cell");
+        json.writeFieldName(CELL);
+        json.writeStartArray();
         json.writeNumber(object.cell().column());
         json.writeNumber(object.cell().row());
         json.writeEndArray();
@@ -154,12 +186,38 @@ public final class SceneFileWriter implements AutoCloseable {
             return;
         }
         // whole numbers without ".0"; -0 keeps its sign, which the server's "-0" carries, as "-0.0"
+        json.writeFieldName(fields.computeIfAbsent(field, SerializedString::new));
         if (value == Math.rint(value) && Math.abs(value) < 1e15
                 && Double.doubleToRawLongBits(value) != Double.doubleToRawLongBits(-0.0)) {
-            json.writeNumberField(field, (long) value);
-        } else {
-            json.writeNumberField(field, value);
+            json.writeNumber((long) value);
+            return;
         }
+        // Most values are tenths (distances, changes): their text as Double.toString writes it, cheaper
+        double tenths = Math.rint(value * 10);
+        if (tenths != 0 && Math.abs(tenths) < 1e7 && tenths / 10 == value) {
+            json.writeNumber(number, 0, tenths((long) tenths));
+        } else {
+            json.writeNumber(value);
+        }
+    }
+
+    /** {@code tenths / 10} with one decimal into {@link #number}; returns its length. */
+    private int tenths(long tenths) {
+        int at = number.length;
+        long rest = Math.abs(tenths);
+        number[--at] = (char) ('0' + rest % 10);
+        number[--at] = '.';
+        rest /= 10;
+        do {
+            number[--at] = (char) ('0' + rest % 10);
+            rest /= 10;
+        } while (rest > 0);
+        if (tenths < 0) {
+            number[--at] = '-';
+        }
+        int length = number.length - at;
+        System.arraycopy(number, at, number, 0, length);
+        return length;
     }
 
     public long written() {

@@ -104,17 +104,20 @@ public final class SeeWriter {
         }
         double distance = Math.hypot(dx, dy);
         double direction = VisionNumbers.normalize(Math.toDegrees(Math.atan2(dy, dx)) - head);
-        double seenDistance = VisionNumbers.seenDistance(distance, quantizeStep);
-        String seenDirection = VisionNumbers.format(Math.rint(direction), 0);
-        if (!highQuality) {
-            lowQuality(name, behindName, direction, distance, seenDirection, team);
+        boolean behind = Math.abs(direction) >= halfAngle;
+        if (behind && distance > p.visibleDistance()) {
             return;
         }
-        if (Math.abs(direction) >= halfAngle) {
-            if (distance <= p.visibleDistance()) {
-                text.append(" ((").append(behindName).append(") ").append(VisionNumbers.format(seenDistance, 1))
-                        .append(' ').append(seenDirection).append(')');
-            }
+        double seenDirection = Math.rint(direction);
+        if (!highQuality) {
+            lowQuality(name, behindName, behind, distance, seenDirection, team);
+            return;
+        }
+        double seenDistance = VisionNumbers.seenDistance(distance, quantizeStep);
+        if (behind) {
+            text.append(" ((").append(behindName).append(") ");
+            VisionNumbers.append(text, seenDistance, 1).append(' ');
+            VisionNumbers.append(text, seenDirection, 0).append(')');
             return;
         }
         text.append(" ((");
@@ -136,7 +139,9 @@ public final class SeeWriter {
             text.append('p');
             changes = false;
         }
-        text.append(") ").append(VisionNumbers.format(seenDistance, 1)).append(' ').append(seenDirection);
+        text.append(") ");
+        VisionNumbers.append(text, seenDistance, 1).append(' ');
+        VisionNumbers.append(text, seenDirection, 0);
         if (changes && distance > 0) {
             // Relative velocity split along and across the line of sight; the radial part is
             // quantised relative to the distance and scaled by the seen distance, as the server does.
@@ -148,11 +153,11 @@ public final class SeeWriter {
             double directionChange = Math.toDegrees((rvy * ex - rvx * ey) / distance);
             // An exactly zero direction change stays 0; a tiny negative one quantises to -0.
             directionChange = directionChange == 0 ? 0 : VisionNumbers.quantize(directionChange, 0.1);
-            text.append(' ').append(VisionNumbers.formatChange(distanceChange, 4))
-                    .append(' ').append(VisionNumbers.formatChange(directionChange, 1));
+            VisionNumbers.appendChange(text.append(' '), distanceChange, 4);
+            VisionNumbers.appendChange(text.append(' '), directionChange, 1);
             if (team != null) {
-                text.append(' ').append(VisionNumbers.format(Math.rint(VisionNumbers.normalize(body - head)), 0))
-                        .append(' ').append(VisionNumbers.format(Math.rint(VisionNumbers.normalize(playerHead - head)), 0));
+                VisionNumbers.append(text.append(' '), Math.rint(VisionNumbers.normalize(body - head)), 0);
+                VisionNumbers.append(text.append(' '), Math.rint(VisionNumbers.normalize(playerHead - head)), 0);
             }
         }
         text.append(')');
@@ -162,12 +167,12 @@ public final class SeeWriter {
      * Low view quality: the server sends only the direction of what is in the cone (and of what
      * is behind within visible_distance), without distance or changes; players by team alone.
      */
-    private void lowQuality(String name, String behindName, double direction, double distance, String seenDirection,
+    private void lowQuality(String name, String behindName, boolean behind, double distance, double seenDirection,
                             String team) {
-        if (Math.abs(direction) >= halfAngle) {
-            if (distance <= p.visibleDistance()) {
-                text.append(" ((").append(behindName).append(") ").append(seenDirection).append(')');
-            }
+        if (behind) {
+            // within visible_distance: the caller left out what is farther
+            text.append(" ((").append(behindName).append(") ");
+            VisionNumbers.append(text, seenDirection, 0).append(')');
             return;
         }
         text.append(" ((");
@@ -178,7 +183,8 @@ public final class SeeWriter {
         } else {
             text.append('p');
         }
-        text.append(") ").append(seenDirection).append(')');
+        text.append(") ");
+        VisionNumbers.append(text, seenDirection, 0).append(')');
     }
 
     /**
@@ -226,9 +232,9 @@ public final class SeeWriter {
                 continue;
             }
             double direction = sight > 0 ? sight - 90 : sight + 90;
-            text.append(" ((").append(line.name()).append(") ")
-                    .append(VisionNumbers.format(VisionNumbers.seenDistance(Math.abs(distance), p.quantizeStepL()), 1))
-                    .append(' ').append(VisionNumbers.format(Math.rint(direction), 0)).append(')');
+            text.append(" ((").append(line.name()).append(") ");
+            VisionNumbers.append(text, VisionNumbers.seenDistance(Math.abs(distance), p.quantizeStepL()), 1).append(' ');
+            VisionNumbers.append(text, Math.rint(direction), 0).append(')');
             wanted--;
         }
     }

@@ -36,38 +36,43 @@ public final class VisionNumbers {
      * zero, and negative zero itself, print as {@code -0}, as the server's C++ output does.
      */
     public static String formatChange(double value, int decimals) {
+        return appendChange(new StringBuilder(16), value, decimals).toString();
+    }
+
+    /** {@link #formatChange} onto {@code text}. */
+    public static StringBuilder appendChange(StringBuilder text, double value, int decimals) {
         if (Math.round(value * SCALE[decimals]) == 0 && (value < 0 || 1 / value < 0)) {
-            return "-0";
+            return text.append("-0");
         }
-        return format(value, decimals);
+        return append(text, value, decimals);
     }
 
     /** The value rounded to at most {@code decimals} places, without trailing zeros or {@code -0}. */
     public static String format(double value, int decimals) {
+        return append(new StringBuilder(16), value, decimals).toString();
+    }
+
+    /** {@link #format} onto {@code text}, without a string of its own (sees are written by the million). */
+    public static StringBuilder append(StringBuilder text, double value, int decimals) {
         long scaled = Math.round(value * SCALE[decimals]);
         if (scaled == 0) {
-            return "0";
+            return text.append('0');
         }
-        StringBuilder text = new StringBuilder(16);
         if (scaled < 0) {
             text.append('-');
             scaled = -scaled;
         }
-        long whole = scaled / (long) SCALE[decimals];
-        long fraction = scaled % (long) SCALE[decimals];
-        text.append(whole);
+        long unit = (long) SCALE[decimals];
+        text.append(scaled / unit);
+        long fraction = scaled % unit;
         if (fraction != 0) {
-            String digits = Long.toString(fraction);
             text.append('.');
-            for (int i = digits.length(); i < decimals; i++) {
-                text.append('0');
+            // the fraction's digits from the first place on, trailing zeros left out
+            for (long place = unit / 10; fraction != 0; place /= 10) {
+                text.append((char) ('0' + fraction / place));
+                fraction %= place;
             }
-            int last = digits.length();
-            while (digits.charAt(last - 1) == '0') {
-                last--;
-            }
-            text.append(digits, 0, last);
         }
-        return text.toString();
+        return text;
     }
 }

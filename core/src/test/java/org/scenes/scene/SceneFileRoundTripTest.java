@@ -51,6 +51,33 @@ class SceneFileRoundTripTest {
     }
 
     @Test
+    void numbersAreWrittenAsJavaWritesThemAndReadBackEqual() throws IOException {
+        // tenths take a shortcut of their own: the text must be Double.toString's all the same
+        java.util.Random random = new java.util.Random(7);
+        List<Double> values = new java.util.ArrayList<>(List.of(0.1, -0.1, 0.5, -0.5, 99.9, 123456.7, -999999.9,
+                1234567.8, 0.30000000000000004, 1e-5, 2.05, -12.34, 0.001));
+        for (int i = 0; i < 2000; i++) {
+            values.add(Math.rint(random.nextGaussian() * 1e4) / 10);
+            values.add(random.nextGaussian() * 100);
+        }
+        List<SeenObject> objects = new java.util.ArrayList<>();
+        for (double value : values) {
+            objects.add(new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, value, 1, value, Double.NaN,
+                    Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(3, 1)));
+        }
+        Scene scene = new Scene(1, SceneFixtures.OBSERVER, objects, List.of(Action.turn(1)));
+        Path file = dir.resolve("numbers.json");
+        SceneFileWriter.write(file, new SceneFile(header, List.of(scene)));
+        String text = Files.readString(file);
+        for (double value : values) {
+            String written = value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
+            assertTrue(text.contains("\"dist\":" + written + ",\"dir\":1,\"distChange\":" + written + ","),
+                    value + " written as " + written);
+        }
+        assertEquals(List.of(scene), SceneFileReader.read(file).scenes());
+    }
+
+    @Test
     void negativeZeroKeepsItsSign() throws IOException {
         SeenObject ball = new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, 3, -0.0,
                 -0.0, 0.0, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(3, -0.0));
