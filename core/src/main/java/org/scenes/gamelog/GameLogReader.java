@@ -72,8 +72,8 @@ public final class GameLogReader {
 
     /**
      * Hands each frame to {@code action} as it is read, and each {@code server_param},
-     * {@code player_param} and {@code player_type} line of a text log to {@code parameters} (the
-     * JSON form's are skipped). An {@link IllegalArgumentException} from either becomes a
+     * {@code player_param} and {@code player_type} line of a text log to {@code parameters} (those
+     * of the JSON form as the same text). An {@link IllegalArgumentException} from either becomes a
      * {@link GameLogException} naming the line.
      */
     public static void forEach(Path file, Consumer<GameFrame> action, Consumer<String> parameters)
@@ -289,6 +289,12 @@ public final class GameLogReader {
 
     @SuppressWarnings("unchecked")
     private void jsonElement(Map<String, Object> element) {
+        for (String head : PARAMETER_HEADS) {
+            if (element.get(head) instanceof Map<?, ?> named) {
+                parameters.accept(parameterText(head, (Map<String, Object>) named));
+                return;
+            }
+        }
         if (element.containsKey("playmode")) {
             playMode = (String) ((Map<String, Object>) element.get("playmode")).get("mode");
         } else if (element.containsKey("team")) {
@@ -322,6 +328,31 @@ public final class GameLogReader {
                     scoreRight, new GameFrame.BallState(num(ball, "x"), num(ball, "y"), num(ball, "vx"),
                     num(ball, "vy")), players));
         }
+    }
+
+    private static final List<String> PARAMETER_HEADS = List.of("server_param", "player_param", "player_type");
+
+    /**
+     * A JSON log's {@code {"server_param":{"name":value,...}}} as the text form's
+     * {@code (server_param (name value)...)}: booleans as 1 and 0, as the server's text has them.
+     */
+    private static String parameterText(String head, Map<String, Object> named) {
+        StringBuilder text = new StringBuilder(4096).append('(').append(head);
+        for (Map.Entry<String, Object> entry : named.entrySet()) {
+            Object value = entry.getValue();
+            text.append(" (").append(entry.getKey()).append(' ');
+            if (value instanceof Boolean bool) {
+                text.append(bool ? '1' : '0');
+            } else if (value instanceof Double number) {
+                text.append(java.math.BigDecimal.valueOf(number).stripTrailingZeros().toPlainString());
+            } else if (value instanceof Number number) {
+                text.append(number);
+            } else if (value != null) {
+                text.append('"').append(value.toString().replace('"', '\'')).append('"');
+            }
+            text.append(')');
+        }
+        return text.append(')').toString();
     }
 
     private static double num(Map<String, Object> object, String key) {

@@ -210,7 +210,10 @@ class GameLogTest {
     void readsTheJsonGameLog() throws IOException {
         Path file = dir.resolve("game.rcg.gz");
         String json = "[\n{\"version\":\"19.0.0\"},\n{\"timestamp\":\"2026-12-01T20:00:00+0000\"},\n"
-                + "{\"server_param\":{\"goal_width\":14.02}},\n"
+                + "{\"server_param\":{\"goal_width\":14.02,\"visible_angle\":60,\"synch_see_offset\":0.0001,"
+                + "\"fullstate_l\":false,\"landmark_file\":\"~/.rcssserver-landmark.xml\"}},\n"
+                + "{\"player_param\":{\"player_types\":18}},\n"
+                + "{\"player_type\":{\"id\":3,\"player_speed_max\":1.05,\"unum_far_length\":20}},\n"
                 + "{\"playmode\":{\"time\":0,\"mode\":\"kick_off_l\"}},\n"
                 + "{\"team\":{\"time\":0,\"l\":{\"name\":\"Alpha\",\"score\":0},\"r\":{\"name\":null,\"score\":0}}},\n"
                 + "{\"show\":{\"time\":0,\"stime\":3,\"ball\":{\"x\":1,\"y\":2,\"vx\":0,\"vy\":-0.5},\"players\":["
@@ -221,7 +224,18 @@ class GameLogTest {
         try (OutputStream out = new GZIPOutputStream(Files.newOutputStream(file))) {
             out.write(json.getBytes(StandardCharsets.UTF_8));
         }
-        List<GameFrame> frames = GameLogReader.readAll(file);
+        List<GameFrame> frames = new ArrayList<>();
+        List<String> parameters = new ArrayList<>();
+        GameLogReader.forEach(file, frames::add, parameters::add);
+        // the parameters as the text form writes them, for the same parser
+        assertEquals(List.of("(server_param (goal_width 14.02) (visible_angle 60) (synch_see_offset 0.0001)"
+                + " (fullstate_l 0) (landmark_file \"~/.rcssserver-landmark.xml\"))",
+                "(player_param (player_types 18))", "(player_type (id 3) (player_speed_max 1.05) (unum_far_length 20))"),
+                parameters);
+        org.scenes.protocol.Parameters server = (org.scenes.protocol.Parameters) new org.scenes.protocol.MessageParser()
+                .parse(parameters.get(0));
+        assertEquals(60, server.number("visible_angle"));
+        assertEquals(1e-4, server.number("synch_see_offset"));
         assertEquals(1, frames.size());
         GameFrame frame = frames.get(0);
         assertEquals("kick_off_l", frame.playMode());
