@@ -6,15 +6,20 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.DirectoryIteratorException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.zip.GZIPOutputStream;
 
 /**
@@ -24,6 +29,8 @@ import java.util.zip.GZIPOutputStream;
  * ending in {@code .gz} is gzip-compressed. A command stopped by Ctrl-C or SIGTERM before its
  * commit calls {@link #abandonAll()} from its shutdown hook, so no temporary file is left behind
  * (not a hook of its own here: commands such as the proxy commit their logs in their hooks).
+ * SIGKILL runs no hook: the next output into the same directory removes such leftovers
+ * ({@link #removeStaleTemporaries}).
  */
 public final class AtomicOutput implements AutoCloseable {
     private final Path target;
@@ -34,6 +41,16 @@ public final class AtomicOutput implements AutoCloseable {
 
     /** Temporary files not yet committed or abandoned: what the shutdown hook deletes. */
     private static final Set<Path> OPEN = ConcurrentHashMap.newKeySet();
+    private static final long PID = ProcessHandle.current().pid();
+    /** {@code .<target>.<pid>-<random>.tmp}: this class's temporary files and nobody else's. */
+    private static final Pattern TEMPORARY = Pattern.compile("\\..+\\.([0-9]{1,19})-[0-9a-z]{1,13}\\.tmp");
+    /**
+     * A temporary file untouched this long is stale even if a process of its PID is alive (PIDs
+     * are reused); a live writer touches its file far more often.
+     */
+    static final Duration STALE_AFTER = Duration.ofHours(6);
+    /** Directories already cleaned by this process: once is enough, and output directories may be large. */
+    private static final Set<Path> CLEANED = ConcurrentHashMap.newKeySet();
 
     private AtomicOutput(Path target) throws IOException {
         this.target = target.toAbsolutePath();
@@ -48,8 +65,10 @@ public final class AtomicOutput implements AutoCloseable {
         } catch (IOException e) {
             throw new IOException(target + ": cannot create its directory " + directory + ": " + reason(e), e);
         }
+        removeStaleTemporaries(directory);
         // Not Files.createTempFile: its owner-only permissions would carry over to the target.
-        this.temporary = directory.resolve("." + this.target.getFileName() + "." + Long.toUnsignedString(
+        // The name carries the writer's PID, so a later writer can tell a dead writer's leftover.
+        this.temporary = directory.resolve("." + this.target.getFileName() + "." + PID + "-" + Long.toUnsignedString(
                 java.util.concurrent.ThreadLocalRandom.current().nextLong(), 36) + ".tmp");
         OPEN.add(temporary);
         OutputStream out;
@@ -76,6 +95,34 @@ public final class AtomicOutput implements AutoCloseable {
         };
     }
 
+    /**
+     * Deletes what writers killed by SIGKILL (which runs no code) left in {@code directory}:
+     * temporary files of this class's pattern whose writer is no longer alive, or that nobody has
+     * written to for {@link #STALE_AFTER}. Best effort: a file that cannot be looked at or
+     * deleted stays.
+     */
+    static void removeStaleTemporaries(Path directory) {
+        if (!CLEANED.add(directory)) {
+            return;
+        }
+        long now = System.currentTimeMillis();
+        try (DirectoryStream<Path> entries = Files.newDirectoryStream(directory, ".*.tmp")) {
+            for (Path entry : entries) {
+                Matcher matcher = TEMPORARY.matcher(entry.getFileName().toString());
+                if (!matcher.matches() || OPEN.contains(entry)) {
+                    continue;
+                }
+                long pid = Long.parseLong(matcher.group(1));
+                boolean alive = ProcessHandle.of(pid).map(ProcessHandle::isAlive).orElse(false);
+                if (!alive || now - Files.getLastModifiedTime(entry).toMillis() > STALE_AFTER.toMillis()) {
+                    Files.deleteIfExists(entry);
+                }
+            }
+        } catch (IOException | NumberFormatException | DirectoryIteratorException e) {
+            // leftovers stay; the output itself is unaffected
+        }
+    }
+
     private static String reason(IOException e) {
         if (e instanceof AccessDeniedException) {
             return "permission denied";
@@ -97,7 +144,7 @@ public final class AtomicOutput implements AutoCloseable {
                 Files.deleteIfExists(temporary);
                 OPEN.remove(temporary);
                 String name = temporary.getFileName().toString();
-                // ".<target>.<random>.tmp" back to the target's name
+                // ".<target>.<pid>-<random>.tmp" back to the target's name
                 String target = name.substring(1, name.lastIndexOf('.', name.length() - 5));
                 abandoned.add(temporary.resolveSibling(target));
             } catch (IOException e) {

@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
+import java.util.function.LongSupplier;
 
 /**
  * The forwarding thread: one selector over the client-facing ports and every client's
@@ -28,10 +29,13 @@ final class Forwarder implements Runnable {
     private static final byte[] TIME_OVER = "referee time_over".getBytes(StandardCharsets.US_ASCII);
     private static final byte[] HEAR = "(hear ".getBytes(StandardCharsets.US_ASCII);
     private static final byte[] BYE = "(bye)".getBytes(StandardCharsets.US_ASCII);
+    private static final byte[] INIT = "(init".getBytes(StandardCharsets.US_ASCII);
+    private static final byte[] RECONNECT = "(reconnect".getBytes(StandardCharsets.US_ASCII);
 
     private final Selector selector;
     private final List<Listener> listeners = new ArrayList<>();
     private final LogRing ring;
+    private final LongSupplier clock;
     private final long start;
     private final long idleNanos;
     private final long endGraceNanos;
@@ -49,9 +53,11 @@ final class Forwarder implements Runnable {
     final AtomicLong notForwarded = new AtomicLong();
     final AtomicLong opened = new AtomicLong();
 
-    Forwarder(ProxyConfig config, LogRing ring, long start) throws IOException {
+    Forwarder(ProxyConfig config, LogRing ring, LongSupplier clock) throws IOException {
         this.ring = ring;
-        this.start = start;
+        this.clock = clock;
+        this.start = clock.getAsLong();
+        this.lastCheck = start;
         this.idleNanos = config.idleTimeout().toNanos();
         this.endGraceNanos = config.endGrace().toNanos();
         this.checkEveryNanos = Math.max(1_000_000L, Math.min(250_000_000L, Math.min(idleNanos, endGraceNanos) / 4));
@@ -117,7 +123,7 @@ final class Forwarder implements Runnable {
                     }
                 }
                 selector.selectedKeys().clear();
-                long now = System.nanoTime();
+                long now = clock.getAsLong();
                 if (now - lastCheck >= checkEveryNanos) {
                     lastCheck = now;
                     closeQuietSessions(now);
@@ -162,7 +168,7 @@ final class Forwarder implements Runnable {
             if (from == null) {
                 return;
             }
-            long now = System.nanoTime();
+            long now = clock.getAsLong();
             buffer.flip();
             Session session = listener.sessions.get(from);
             if (session == null) {
@@ -173,8 +179,11 @@ final class Forwarder implements Runnable {
             }
             session.lastFromClient = now;
             session.lastTraffic = now;
-            forward(session.outbox, session.serverTarget, toServer);
             int end = withoutPadding(buffer);
+            // A client only knows the proxy's port, so an init or reconnect it sends is meant for the
+            // server's init port: after a server restart its port for this client is gone.
+            boolean hello = matches(buffer, 0, end, INIT) || matches(buffer, 0, end, RECONNECT);
+            forward(session.outbox, hello ? listener.route.server() : session.serverTarget, toServer);
             ring.publish(RecordType.TO_SERVER, session.id, now - start, buffer, 0, end);
             if (matches(buffer, 0, end, BYE)) {
                 session.ending = true;
@@ -195,7 +204,7 @@ final class Forwarder implements Runnable {
             if (from == null) {
                 return;
             }
-            long now = System.nanoTime();
+            long now = clock.getAsLong();
             buffer.flip();
             session.lastTraffic = now;
             if (!from.equals(session.serverTarget)) {
@@ -277,7 +286,7 @@ final class Forwarder implements Runnable {
         int unsent = session.outbox.pendingCount();
         if (unsent > 0) {
             notForwarded.addAndGet(unsent);
-            ring.publish(RecordType.NOTE, session.id, System.nanoTime() - start,
+            ring.publish(RecordType.NOTE, session.id, clock.getAsLong() - start,
                     (unsent + " datagrams to the server were not sent").getBytes(StandardCharsets.UTF_8));
         }
         session.key.cancel();
@@ -286,7 +295,7 @@ final class Forwarder implements Runnable {
         } catch (IOException ignored) {
             // the session is over either way
         }
-        ring.publish(RecordType.CLOSE, session.id, System.nanoTime() - start, reason.getBytes(StandardCharsets.UTF_8));
+        ring.publish(RecordType.CLOSE, session.id, clock.getAsLong() - start, reason.getBytes(StandardCharsets.UTF_8));
     }
 
     private void closeQuietly() {

@@ -21,16 +21,16 @@ public final class LogProxy implements AutoCloseable {
     private final Thread writing;
     private boolean closed;
 
-    private LogProxy(ProxyConfig config) throws IOException {
+    private LogProxy(ProxyConfig config, ProxyEnvironment environment) throws IOException {
         Files.createDirectories(config.outDirectory());
         if (!Files.isWritable(config.outDirectory())) {
             throw new IOException("output directory is not writable: " + config.outDirectory());
         }
-        long start = System.nanoTime();
         Instant started = Instant.now();
         ring = new LogRing(config.logBufferBytes());
-        forwarder = new Forwarder(config, ring, start);
-        writer = new LogWriter(ring, config.outDirectory(), config.format(), started, config.events());
+        forwarder = new Forwarder(config, ring, environment.nanoTime());
+        writer = new LogWriter(ring, config.outDirectory(), config.format(), started, config.events(),
+                environment.logFiles());
         writing = new Thread(writer, "scenes-proxy-log-writer");
         ring.consumer(writing);
         forwarding = new Thread(forwarder, "scenes-proxy-forwarder");
@@ -40,7 +40,12 @@ public final class LogProxy implements AutoCloseable {
 
     /** Opens the ports and starts forwarding. */
     public static LogProxy start(ProxyConfig config) throws IOException {
-        return new LogProxy(config);
+        return new LogProxy(config, ProxyEnvironment.system());
+    }
+
+    /** The same with another clock or log files (tests of timeouts and disk faults). */
+    public static LogProxy start(ProxyConfig config, ProxyEnvironment environment) throws IOException {
+        return new LogProxy(config, environment);
     }
 
     /** The local port clients of this kind should talk to. */

@@ -32,6 +32,7 @@ final class LogWriter implements Runnable {
     private final LogFormat format;
     private final Consumer<String> events;
     private final Instant started;
+    private final ProxyEnvironment.LogFiles files;
     private final Map<Integer, SessionLog> sessions = new HashMap<>();
     /** One formatted line; big enough for the largest datagram escaped, plus time and direction. */
     private final byte[] line = new byte[MessageEscapes.maxEscapedLength(1 << 16) + 64];
@@ -42,7 +43,9 @@ final class LogWriter implements Runnable {
     private volatile IOException firstError;
     private long lastFlush = System.nanoTime();
 
-    LogWriter(LogRing ring, Path directory, LogFormat format, Instant started, Consumer<String> events) {
+    LogWriter(LogRing ring, Path directory, LogFormat format, Instant started, Consumer<String> events,
+            ProxyEnvironment.LogFiles files) {
+        this.files = files;
         this.started = started;
         this.ring = ring;
         this.directory = directory;
@@ -113,7 +116,7 @@ final class LogWriter implements Runnable {
         sessions.put(session, log);
         try {
             log.temporary = directory.resolve(".session-" + session + "-" + ProcessHandle.current().pid() + ".part");
-            log.out = new BufferedOutputStream(Files.newOutputStream(log.temporary), 1 << 16);
+            log.out = new BufferedOutputStream(files.create(log.temporary), 1 << 16);
             if (format == LogFormat.NATIVE) {
                 log.out.write((ProxyLogLine.HEADER + "\n").getBytes(StandardCharsets.UTF_8));
             }

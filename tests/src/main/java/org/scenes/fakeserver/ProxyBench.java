@@ -37,6 +37,9 @@ import org.scenes.proxylog.ProxyLogLine;
  * Prints p50/p99/max per mode, lost datagrams, and whether the proxy's logs are complete.
  *
  * <pre>gradle :tests:proxyBench -PbenchArgs="--clients 24 --messages 20 --cycles 300"</pre>
+ *
+ * <p>With {@code --load} first, a load run instead ({@link ProxyLoad}): memory and throughput
+ * over a long game at full rate, {@code --load --clients 24 --cycles 6000}.
  */
 public final class ProxyBench {
     private static final long CYCLE_NANOS = 100_000_000L;
@@ -69,7 +72,8 @@ public final class ProxyBench {
         int externalPort = 0;
         int serverPort = 6000;
         Path externalOut = null;
-        for (int i = 0; i < args.length; i += 2) {
+        boolean load = args.length > 0 && args[0].equals("--load");
+        for (int i = load ? 1 : 0; i < args.length; i += 2) {
             if (i + 1 >= args.length) {
                 usage("missing value after " + args[i]);
             }
@@ -93,6 +97,9 @@ public final class ProxyBench {
                 .filter(l -> l.startsWith("(see ") && l.length() > 600).findFirst().orElseThrow();
         // "(see T objects...)" -> "objects...)" so the reply can carry a sequence number as its time.
         String body = see.substring(see.indexOf(' ', 5) + 1);
+        if (load) {
+            System.exit(new ProxyLoad(clients, cycles, Math.max(1, cycles / 12), body).run() ? 0 : 1);
+        }
         ProxyBench bench = new ProxyBench(clients, messages, cycles, warmup, body);
         if (externalPort > 0 && externalOut == null) {
             usage("--external-proxy needs --external-out DIR (the proxy's --out, empty)");
@@ -119,7 +126,7 @@ public final class ProxyBench {
 
     private static void usage(String problem) {
         System.err.println("proxy-bench: " + problem
-                + "\nusage: ProxyBench [--clients N] [--messages N] [--cycles N] [--warmup N]"
+                + "\nusage: ProxyBench [--load] [--clients N] [--messages N] [--cycles N] [--warmup N]"
                 + " [--external-proxy PORT --external-out DIR [--server-port 6000]]"
                 + "\n  --external-proxy: measure a proxy running in another process, started as"
                 + "\n  scenes proxy --server 127.0.0.1:6000 --listen PORT --out DIR --idle-timeout 10;"

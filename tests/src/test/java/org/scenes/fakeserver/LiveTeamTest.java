@@ -240,6 +240,48 @@ class LiveTeamTest {
     }
 
     @Test
+    void aServerThatSendsOnlyGarbageEndsThePlayerWithAClearReason() throws Exception {
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Puzzled"), 1,
+                    DASHER, 1, notices::add);
+            Future<List<PlayerReport>> reports = start(runner);
+            awaitClients(server, 1);
+            FakeSoccerServer.Client client = server.clients().get(0);
+            // garbage every 20 ms, never silent: without a parseable message the player must still end
+            for (int i = 0; i < 500 && !reports.isDone(); i++) {
+                send(client, "(see " + i + " ((b) 10 0)");
+                Thread.sleep(20);
+            }
+            PlayerReport report = reports.get(10, TimeUnit.SECONDS).get(0);
+            assertEquals(Outcome.SERVER_LOST, report.outcome(), report.toString());
+            assertTrue(report.reason().contains("no message from the server could be parsed for 0.7 s"), report.reason());
+            assertTrue(report.malformed().get("see") > 10, report.malformed().toString());
+            assertEquals(1, TeamRunner.exitCode(List.of(report)));
+        }
+    }
+
+    @Test
+    void aFloodFromAnotherPortDoesNotHideThatTheServerIsGone() throws Exception {
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of());
+                DatagramChannel flood = DatagramChannel.open()) {
+            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Flooded"), 1,
+                    DASHER, 1, notices::add);
+            Future<List<PlayerReport>> reports = start(runner);
+            awaitClients(server, 1);
+            InetSocketAddress player = server.clients().get(0).address;
+            flood.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
+            java.nio.ByteBuffer junk = java.nio.ByteBuffer.wrap("(see 1 ((b) 10 0))\0".getBytes(StandardCharsets.UTF_8));
+            // bounded: at most 5 million datagrams, or until the player gives up
+            for (int i = 0; i < 5_000_000 && !reports.isDone(); i++) {
+                flood.send(junk.rewind(), player);
+            }
+            PlayerReport report = reports.get(10, TimeUnit.SECONDS).get(0);
+            assertEquals(Outcome.SERVER_LOST, report.outcome(), report.toString());
+            assertTrue(report.reason().contains("the server is gone"), report.reason());
+        }
+    }
+
+    @Test
     void stopSaysByeAndEndsCleanly() throws Exception {
         try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
             TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Polite")

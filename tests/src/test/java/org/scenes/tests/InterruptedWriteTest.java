@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.BufferedWriter;
 import java.io.File;
 import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -15,6 +17,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Predicate;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -25,8 +28,8 @@ import org.scenes.scene.SceneFileReader;
 /**
  * A child JVM running {@code scenes convert} or {@code scenes simulate} is stopped at random
  * points, with SIGTERM (Ctrl-C's effect) or SIGKILL: afterwards each output is the old file or
- * the complete new one, never a broken one, and after SIGTERM no temporary file is left (SIGKILL
- * runs no code, so its temporary file stays: the target is still whole).
+ * the complete new one, never a broken one, and no temporary file is left: none after SIGTERM,
+ * and after SIGKILL (which runs no code) none once the next writer has run.
  */
 class InterruptedWriteTest {
     private static final int SEES = 150_000;
@@ -62,6 +65,121 @@ class InterruptedWriteTest {
         command.addAll(Arrays.asList(args));
         return new ProcessBuilder(command).directory(workDir.toFile()).redirectErrorStream(true)
                 .redirectOutput(workDir.resolve("child.out").toFile()).start();
+    }
+
+    private static int run(Path workDir, String... args) throws Exception {
+        Process process = start(workDir, args);
+        assertTrue(process.waitFor(600, TimeUnit.SECONDS), "the child finishes: " + Arrays.toString(args));
+        return process.exitValue();
+    }
+
+    /** One report writer: its arguments for a short (old) and a long (new) run, and when its output is whole. */
+    private record Writer(String name, String target, List<String> oldRun, List<String> newRun,
+            Predicate<String> complete) {
+    }
+
+    /**
+     * The report writers (validate's chart, tune's configuration, experiment's result table,
+     * evaluate's HTML report), stopped by SIGTERM or SIGKILL at random points: afterwards the old
+     * file or the new one, never a broken one; no temporary file after SIGTERM, nor after SIGKILL
+     * once the same command wrote again.
+     */
+    @Test
+    void reportWritersStoppedAnywhereLeaveTheOldOrTheNewFile() throws Exception {
+        Path scenes = Files.createDirectories(dir.resolve("report-scenes"));
+        Path small = scenes.resolve("small.json.gz");
+        Path[] parts = new Path[3];
+        StringWriter out = new StringWriter();
+        assertEquals(0, org.scenes.cli.Main.run(new PrintWriter(out), new PrintWriter(out), "convert",
+                smallLog.toString(), "-o", small.toString()), out.toString());
+        Path part = lsf("part.lsf", 6000);
+        for (int i = 0; i < parts.length; i++) {
+            parts[i] = scenes.resolve("part" + i + ".json.gz");
+            assertEquals(0, org.scenes.cli.Main.run(new PrintWriter(out), new PrintWriter(out), "convert",
+                    part.toString(), "-o", parts[i].toString()), out.toString());
+        }
+        String sweep = "title 'Interrupted'\ndata %s\nmetrics 'ball-goal'\nk 1, 5\nselectors 'first-valid'\n";
+        Path oldSweep = Files.writeString(scenes.resolve("old.groovy"), sweep.formatted(quoted(small) + ", " + quoted(small)));
+        Path newSweep = Files.writeString(scenes.resolve("new.groovy"), sweep.formatted(
+                quoted(parts[0]) + ", " + quoted(parts[1]) + ", " + quoted(parts[2])));
+        List<Writer> writers = List.of(
+                new Writer("experiment", "results/sweep.csv",
+                        List.of("experiment", oldSweep.toString(), "--out-dir", "results", "--name", "sweep"),
+                        List.of("experiment", newSweep.toString(), "--out-dir", "results", "--name", "sweep"),
+                        text -> text.endsWith("\n") && text.split("\n").length == 3),
+                new Writer("evaluate --report", "report/index.html",
+                        List.of("evaluate", "--players", "2", "--opponent", "krislet:2", "--cycles", "200", "--seeds", "1",
+                                "--report", "report"),
+                        List.of("evaluate", "--players", "2", "--opponent", "krislet:2", "--cycles", "800", "--seeds", "1",
+                                "--report", "report"),
+                        text -> text.strip().endsWith("</html>")),
+                new Writer("validate --chart", "chart.svg",
+                        List.of("validate", "--train", small.toString(), "--test", small.toString(), "--metric",
+                                "ball-goal", "--chart", "chart.svg"),
+                        List.of("validate", "--train", parts[0].toString(), "--test", parts[1].toString(), "--metric",
+                                "ball-goal", "--metric", "cell", "--chart", "chart.svg"),
+                        text -> text.strip().endsWith("</svg>")),
+                new Writer("tune -o", "tuned.json",
+                        List.of("tune", "--train", small.toString(), small.toString(), "-o", "tuned.json",
+                                "--quiet", "--sweeps", "1"),
+                        List.of("tune", "--train", parts[0].toString(), parts[1].toString(),
+                                "-o", "tuned.json", "--quiet", "--sweeps", "1"),
+                        InterruptedWriteTest::isJson));
+        Random random = new Random(1618);
+        int replaced = 0;
+        int trials = 0;
+        for (Writer writer : writers) {
+            Path reference = Files.createDirectories(dir.resolve("reference-" + writer.target()));
+            long started = System.nanoTime();
+            assertEquals(0, run(reference, writer.newRun().toArray(String[]::new)),
+                    writer.name() + ": " + Files.readString(reference.resolve("child.out")));
+            long runMillis = (System.nanoTime() - started) / 1_000_000;
+            assertTrue(writer.complete().test(Files.readString(reference.resolve(writer.target()))), writer.name());
+            // two stops each (the child JVMs make this test long on a loaded machine): SIGTERM, then SIGKILL
+            for (int trial = 0; trial < 2; trial++, trials++) {
+                boolean kill = trial == 1;
+                Path work = Files.createDirectories(dir.resolve("report-" + writer.target() + "-" + trial));
+                Path target = work.resolve(writer.target());
+                assertEquals(0, run(work, writer.oldRun().toArray(String[]::new)), Files.readString(work.resolve("child.out")));
+                byte[] before = Files.readAllBytes(target);
+                Process child = start(work, writer.newRun().toArray(String[]::new));
+                Thread.sleep(runMillis / 4 + (long) (random.nextDouble() * runMillis));
+                if (kill) {
+                    child.destroyForcibly();
+                } else {
+                    child.destroy();
+                }
+                assertTrue(child.waitFor(120, TimeUnit.SECONDS), "the child stops");
+                String output = Files.readString(work.resolve("child.out"));
+                byte[] after = Files.readAllBytes(target);
+                if (!Arrays.equals(before, after)) {
+                    assertTrue(writer.complete().test(new String(after, StandardCharsets.UTF_8)),
+                            writer.name() + ": a new file is whole: " + output);
+                    replaced++;
+                }
+                if (kill) {
+                    assertEquals(0, run(work, writer.oldRun().toArray(String[]::new)), "rerun");
+                }
+                assertEquals(List.of(), temporaries(work), writer.name() + (kill ? " after SIGKILL and a rerun" : " after SIGTERM"));
+            }
+        }
+        System.out.println("InterruptedWriteTest: " + replaced + " of " + trials + " report writers finished before the signal");
+    }
+
+    private static String quoted(Path path) {
+        return "'" + path.toString().replace("\\", "/") + "'";
+    }
+
+    private static boolean isJson(String text) {
+        try (com.fasterxml.jackson.core.JsonParser parser = new com.fasterxml.jackson.core.JsonFactory().createParser(text)) {
+            int tokens = 0;
+            while (parser.nextToken() != null) {
+                tokens++;
+            }
+            return tokens > 0;
+        } catch (IOException e) {
+            return false;
+        }
     }
 
     private static List<Path> temporaries(Path directory) throws IOException {
@@ -108,7 +226,11 @@ class InterruptedWriteTest {
             } else {
                 assertArrayEquals(before, after);
             }
-            if (!kill) {
+            if (kill) {
+                // SIGKILL ran no code: the next writer into the directory removes what it left
+                assertTrue(run(work, "convert", smallLog.toString(), "-o", target.toString()) == 0, "rerun");
+                assertEquals(List.of(), temporaries(work), "after SIGKILL and a rerun");
+            } else {
                 assertEquals(List.of(), temporaries(work), "after SIGTERM: " + output);
                 // stopped before the command began (JVM start), during it (it says what it completed), or after it
                 assertTrue(output.isBlank() || output.contains("interrupted: ") || output.contains("Written"),

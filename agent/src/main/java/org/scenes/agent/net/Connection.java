@@ -20,6 +20,7 @@ import java.nio.charset.StandardCharsets;
 final class Connection implements AutoCloseable {
     /** Larger than any message the server sends (its buffer is 8 KB). */
     private static final int MAX_DATAGRAM = 1 << 16;
+    private static final int MAX_DROPPED_PER_POLL = 256;
 
     private final DatagramChannel channel;
     private final Selector selector;
@@ -113,9 +114,13 @@ final class Connection implements AutoCloseable {
         channel.send(nulTerminated(message), clientPort);
     }
 
-    /** The next datagram from the server if one is waiting, else null; never blocks. */
+    /**
+     * The next datagram from the server if one is waiting, else null; never blocks. Datagrams from
+     * elsewhere are dropped, a bounded number per call, so a flood of them cannot keep the caller
+     * from its timeouts.
+     */
     Datagram poll() throws IOException {
-        while (true) {
+        for (int dropped = 0; dropped < MAX_DROPPED_PER_POLL; dropped++) {
             in.clear();
             SocketAddress from = channel.receive(in);
             if (from == null) {
@@ -125,6 +130,7 @@ final class Connection implements AutoCloseable {
                 return datagram();
             }
         }
+        return null;
     }
 
     /** Waits up to {@code timeoutMillis} for a datagram; null when none came (or {@link #wakeup} was called). */

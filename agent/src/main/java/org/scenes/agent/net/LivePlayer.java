@@ -91,6 +91,8 @@ public final class LivePlayer implements Runnable {
     private Connection link;
     private TrafficLog log;
     private long cycles;
+    /** When the last message that parsed arrived. */
+    private long lastUnderstood;
     private long due;
     private long missed;
     private long thinks;
@@ -197,6 +199,7 @@ public final class LivePlayer implements Runnable {
         answered.countDown();
         queue.add(reply);
         long lastHeard = reply.receivedNanos();
+        lastUnderstood = lastHeard;
         long silence = options.silenceTimeout().toNanos();
         while (!gameOver) {
             while (!queue.isEmpty() && !gameOver) {
@@ -208,6 +211,12 @@ public final class LivePlayer implements Runnable {
             if (stopRequested) {
                 bye();
                 return report(Outcome.STOPPED, "");
+            }
+            // A server that only sends what cannot be parsed is as good as gone: the game cannot go on.
+            if (System.nanoTime() - lastUnderstood > silence && System.nanoTime() - lastHeard <= silence) {
+                return fail(Outcome.SERVER_LOST, "no message from the server could be parsed for "
+                        + seconds(options.silenceTimeout().toMillis()) + " s (" + malformedCount()
+                        + " malformed): it is not a soccer server, or a broken one");
             }
             Datagram next = link.await(POLL_MILLIS);
             if (next == null) {
@@ -236,6 +245,7 @@ public final class LivePlayer implements Runnable {
             malformed(datagram, e);
             return;
         }
+        lastUnderstood = datagram.receivedNanos();
         boolean think = false;
         boolean cycleStart = false;
         if (message instanceof SenseBody body) {
@@ -371,6 +381,10 @@ public final class LivePlayer implements Runnable {
             notices.accept(name() + ": skipped a malformed " + kind + " message (" + e.getMessage() + "): "
                     + (text.length() > 80 ? text.substring(0, 80) + "..." : text) + "; more of this kind are only counted");
         }
+    }
+
+    private long malformedCount() {
+        return malformed.values().stream().mapToLong(Long::longValue).sum();
     }
 
     /** The word after the opening parenthesis, or a description when there is none. */
