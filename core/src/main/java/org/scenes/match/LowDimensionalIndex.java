@@ -3,6 +3,7 @@ package org.scenes.match;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import org.scenes.scene.ActionType;
 import org.scenes.scene.Scene;
 
 /**
@@ -50,19 +51,25 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     private final int[] actionClass;
     private final int[] indexStart;
     private final int[] indices;
-    // the k-d tree: per node its point range, children (-1 for leaves), slots some and all of its points
-    // hold, previous action classes (bit class + 1), box, least penalty per slot, least index
-    private final int[] nodeFrom;
-    private final int[] nodeTo;
-    private final int[] nodeLeft;
-    private final int[] nodeRight;
-    private final int[] nodeSome;
-    private final int[] nodeAll;
-    private final long[] nodeClasses;
-    private final float[] nodeMin;
-    private final float[] nodeMax;
-    private final double[] nodePenalty;
-    private final int[] nodeIndex;
+    // the k-d tree, packed so that a node's bound reads two short runs of memory: per node NODE_INTS
+    // ints (point range, children or -1 for leaves, slots some and all of its points hold, their
+    // previous action classes as bits class + 1, least index) and boxStride floats (per slot the
+    // box of each compared coordinate as min, max, then the least penalty, rounded down)
+    private static final int FROM = 0;
+    private static final int TO = 1;
+    private static final int LEFT = 2;
+    private static final int RIGHT = 3;
+    private static final int SOME = 4;
+    private static final int ALL = 5;
+    private static final int CLASSES = 6;
+    private static final int INDEX = 7;
+    private static final int NODE_INTS = 8;
+    private final int[] nodeInts;
+    /** Coordinates compared by the pair cost (a, b and, with a row weight, the row) and floats of a slot's box. */
+    private final int[] coordinate;
+    private final int slotBox;
+    private final int boxStride;
+    private final float[] nodeBox;
 
     private LowDimensionalIndex(ObjectSetMetric metric, int[] slotGroup, boolean[] slotPrevious, double[] slotWeight,
                                 float[] values, int[] mask, int[] actionClass, int[] indexStart, int[] indices, Tree tree) {
@@ -82,17 +89,33 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         this.actionClass = actionClass;
         this.indexStart = indexStart;
         this.indices = indices;
-        this.nodeFrom = tree.from.stream().mapToInt(Integer::intValue).toArray();
-        this.nodeTo = tree.to.stream().mapToInt(Integer::intValue).toArray();
-        this.nodeLeft = tree.left.stream().mapToInt(Integer::intValue).toArray();
-        this.nodeRight = tree.right.stream().mapToInt(Integer::intValue).toArray();
-        this.nodeSome = tree.some.stream().mapToInt(Integer::intValue).toArray();
-        this.nodeAll = tree.all.stream().mapToInt(Integer::intValue).toArray();
-        this.nodeClasses = tree.classes.stream().mapToLong(Long::longValue).toArray();
-        this.nodeMin = tree.min.toArray();
-        this.nodeMax = tree.max.toArray();
-        this.nodePenalty = tree.penalty.stream().mapToDouble(Double::doubleValue).toArray();
-        this.nodeIndex = tree.index.stream().mapToInt(Integer::intValue).toArray();
+        this.coordinate = rowAt >= 0 ? new int[] {0, 1, rowAt} : new int[] {0, 1};
+        this.slotBox = 2 * coordinate.length + 1;
+        this.boxStride = slotGroup.length * slotBox;
+        int nodes = tree.from.size();
+        this.nodeInts = new int[nodes * NODE_INTS];
+        this.nodeBox = new float[nodes * boxStride];
+        for (int node = 0; node < nodes; node++) {
+            int at = node * NODE_INTS;
+            nodeInts[at + FROM] = tree.from.get(node);
+            nodeInts[at + TO] = tree.to.get(node);
+            nodeInts[at + LEFT] = tree.left.get(node);
+            nodeInts[at + RIGHT] = tree.right.get(node);
+            nodeInts[at + SOME] = tree.some.get(node);
+            nodeInts[at + ALL] = tree.all.get(node);
+            nodeInts[at + CLASSES] = tree.classes.get(node);
+            nodeInts[at + INDEX] = tree.index.get(node);
+            for (int s = 0; s < slotGroup.length; s++) {
+                int box = node * boxStride + s * slotBox;
+                for (int c = 0; c < coordinate.length; c++) {
+                    nodeBox[box + 2 * c] = tree.min.get(node * width + s * stride + coordinate[c]);
+                    nodeBox[box + 2 * c + 1] = tree.max.get(node * width + s * stride + coordinate[c]);
+                }
+                double least = tree.penalty.get(node * slotGroup.length + s);
+                float rounded = (float) least;
+                nodeBox[box + 2 * coordinate.length] = rounded > least ? Math.nextDown(rounded) : rounded;
+            }
+        }
     }
 
     /** Points: how many in this index (distinct scenes as compared), for tests and docs. */
@@ -131,6 +154,9 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         int n = scenes.size();
         // one pass (each stored scene is decoded once): encode, and give up at a group of two objects
         float[] all = new float[Math.multiplyExact(n, width)];
+        if (ActionType.values().length * 3 > 31) {
+            return null; // previous action classes (and none) must fit a node's bits
+        }
         int[] sceneMask = new int[n];
         int[] sceneClass = new int[n];
         for (int i = 0; i < n; i++) {
@@ -220,7 +246,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         final List<Integer> right = new ArrayList<>();
         final List<Integer> some = new ArrayList<>();
         final List<Integer> all = new ArrayList<>();
-        final List<Long> classes = new ArrayList<>();
+        final List<Integer> classes = new ArrayList<>();
         final FloatList min = new FloatList();
         final FloatList max = new FloatList();
         final List<Double> penalty = new ArrayList<>();
@@ -333,12 +359,12 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         int least = Integer.MAX_VALUE;
         int some = 0;
         int all = -1;
-        long classes = 0;
+        int classes = 0;
         for (int r = from; r < to; r++) {
             int p = order[r];
             some |= mask[p];
             all &= mask[p];
-            classes |= 1L << (actionClass[p] + 1);
+            classes |= 1 << (actionClass[p] + 1);
             for (int s = 0; s < slots; s++) {
                 if ((mask[p] & 1 << s) == 0) {
                     continue;
@@ -438,17 +464,18 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             if (lower > worst) {
                 return; // every node left is bounded at least as far
             }
-            if (lower == worst && nodeIndex[node] > top.worstIndex()) {
+            int at = node * NODE_INTS;
+            if (lower == worst && nodeInts[at + INDEX] > top.worstIndex()) {
                 continue;
             }
-            if (nodeLeft[node] < 0) {
-                for (int p = nodeFrom[node]; p < nodeTo[node]; p++) {
+            int left = nodeInts[at + LEFT];
+            if (left < 0) {
+                for (int p = nodeInts[at + FROM]; p < nodeInts[at + TO]; p++) {
                     offer(p, q, qn, qClass, top, scratch);
                 }
                 continue;
             }
-            int left = nodeLeft[node];
-            int right = nodeRight[node];
+            int right = nodeInts[at + RIGHT];
             heap.push(bound(left, q, qn, qPenalty, qClass), left);
             heap.push(bound(right, q, qn, qPenalty, qClass), right);
         }
@@ -463,28 +490,30 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
      */
     private double bound(int node, float[][] q, int[] qn, double[] qPenalty, int qClass) {
         int slots = slotGroup.length;
-        double lower = memoryAction > 0 && (nodeClasses[node] & 1L << (qClass + 1)) == 0 ? memoryAction : 0;
-        int some = nodeSome[node];
-        int all = nodeAll[node];
-        int base = node * width;
-        for (int s = 0; s < slots; s++) {
+        int at = node * NODE_INTS;
+        double lower = memoryAction > 0 && (nodeInts[at + CLASSES] & 1 << (qClass + 1)) == 0 ? memoryAction : 0;
+        int some = nodeInts[at + SOME];
+        int all = nodeInts[at + ALL];
+        int box = node * boxStride;
+        int leastAt = 2 * coordinate.length;
+        for (int s = 0; s < slots; s++, box += slotBox) {
             boolean held = (some & 1 << s) != 0;
             boolean lacked = (all & 1 << s) == 0;
             double gap;
             if (qn[s] == 0) {
-                gap = lacked ? 0 : nodePenalty[node * slots + s];
+                gap = lacked ? 0 : nodeBox[box + leastAt];
             } else if (qn[s] == 1) {
                 gap = lacked ? qPenalty[s] : Double.POSITIVE_INFINITY;
                 if (held) {
-                    int at = base + s * stride;
-                    double da = outside(q[s][0], nodeMin[at], nodeMax[at]);
-                    double db = outside(q[s][1], nodeMin[at + 1], nodeMax[at + 1]);
+                    float[] x = q[s];
+                    double da = outside(x[0], nodeBox[box], nodeBox[box + 1]);
+                    double db = outside(x[1], nodeBox[box + 2], nodeBox[box + 3]);
                     double pair = polar ? da + db : Math.sqrt(da * da + db * db);
                     if (rowAt >= 0) {
-                        pair += outside(q[s][rowAt], nodeMin[at + rowAt], nodeMax[at + rowAt]);
+                        pair += outside(x[rowAt], nodeBox[box + 4], nodeBox[box + 5]);
                     }
                     if (optimal) {
-                        pair = Math.min(pair, qPenalty[s] + nodePenalty[node * slots + s]);
+                        pair = Math.min(pair, qPenalty[s] + nodeBox[box + leastAt]);
                     }
                     gap = Math.min(gap, pair);
                 }
