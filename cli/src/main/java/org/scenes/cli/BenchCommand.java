@@ -44,7 +44,6 @@ final class BenchCommand implements Callable<Integer> {
 
     /** Seed of synthetic knowledge bases; queries use the next one, so they are other moments. */
     static final long SYNTHETIC_SEED = 1;
-    private static final int QUERIES = 64;
 
     @Parameters(arity = "0..*", paramLabel = "FILE", description = "Scene files (.json or .json.gz): the knowledge base; queries are spread over it.")
     List<Path> files;
@@ -64,6 +63,10 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--queries", paramLabel = "FILE", description = "Scene files whose every scene is a query"
             + " (held out: not stored), with each configuration's transforms; default: 64 stored scenes spread over the knowledge base.")
     List<Path> queryFiles;
+
+    @Option(names = "--query-count", paramLabel = "N", defaultValue = "64", description = "Queries without --queries:"
+            + " this many synthetic ones, or stored scenes spread over the knowledge base (default ${DEFAULT-VALUE}).")
+    int queryCount;
 
     @Option(names = "--latency", description = "Add each decision's wall-clock and thread CPU time, p50 and p99 in"
             + " microseconds (a neighbour search; CPU time leaves out the waits of a busy machine).")
@@ -86,6 +89,9 @@ final class BenchCommand implements Callable<Integer> {
         }
         if (synthetic != null && queryFiles != null) {
             throw new UsageException("--queries needs scene files as knowledge base, not --synthetic");
+        }
+        if (queryCount < 1) {
+            throw new UsageException("--query-count must be at least 1, not " + queryCount);
         }
         if (synthetic != null && synthetic < 1) {
             throw new UsageException("--synthetic needs at least 1 scene, not " + synthetic);
@@ -124,7 +130,7 @@ final class BenchCommand implements Callable<Integer> {
             long start = System.nanoTime();
             knowledge = generate(synthetic);
             made = String.format(Locale.ROOT, " (generated in %.1f s)", (System.nanoTime() - start) / 1e9);
-            SyntheticScenes.generate(SYNTHETIC_SEED + 1, QUERIES, Grid.DEFAULT, queries::add);
+            SyntheticScenes.generate(SYNTHETIC_SEED + 1, queryCount, Grid.DEFAULT, queries::add);
         } else {
             knowledge = KnowledgeBase.load(files, List::of);
             queries = queries(knowledge, List::of);
@@ -170,8 +176,9 @@ final class BenchCommand implements Callable<Integer> {
             return all;
         }
         List<Scene> spread = new ArrayList<>();
-        for (int i = 0; i < QUERIES; i++) {
-            spread.add(knowledge.scene((int) ((long) i * knowledge.size() / QUERIES)));
+        int count = Math.min(queryCount, knowledge.size());
+        for (int i = 0; i < count; i++) {
+            spread.add(knowledge.scene((int) ((long) i * knowledge.size() / count)));
         }
         return spread;
     }
