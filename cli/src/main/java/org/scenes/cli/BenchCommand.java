@@ -44,7 +44,6 @@ final class BenchCommand implements Callable<Integer> {
 
     /** Seed of synthetic knowledge bases; queries use the next one, so they are other moments. */
     static final long SYNTHETIC_SEED = 1;
-    private static final int QUERIES = 64;
 
     @Parameters(arity = "0..*", paramLabel = "FILE", description = "Scene files (.json or .json.gz): the knowledge base; queries are spread over it.")
     List<Path> files;
@@ -60,6 +59,14 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--config", paramLabel = "CONFIG.json", description = "Also measure this configuration (from scenes tune),"
             + " with its transforms applied to stored scenes and queries, at its k (repeatable).")
     List<Path> configs;
+
+    @Option(names = "--queries", paramLabel = "FILE", description = "Scene files whose every scene is a query"
+            + " (held out: not stored), with each configuration's transforms; default: 64 stored scenes spread over the knowledge base.")
+    List<Path> queryFiles;
+
+    @Option(names = "--query-count", paramLabel = "N", defaultValue = "64", description = "Queries without --queries:"
+            + " this many synthetic ones, or stored scenes spread over the knowledge base (default ${DEFAULT-VALUE}).")
+    int queryCount;
 
     @Option(names = "--latency", description = "Add each decision's wall-clock and thread CPU time, p50 and p99 in"
             + " microseconds (a neighbour search; CPU time leaves out the waits of a busy machine).")
@@ -79,6 +86,12 @@ final class BenchCommand implements Callable<Integer> {
         }
         if (synthetic != null && !noFiles) {
             throw new UsageException("--synthetic measures generated scenes; give it without scene files");
+        }
+        if (synthetic != null && queryFiles != null) {
+            throw new UsageException("--queries needs scene files as knowledge base, not --synthetic");
+        }
+        if (queryCount < 1) {
+            throw new UsageException("--query-count must be at least 1, not " + queryCount);
         }
         if (synthetic != null && synthetic < 1) {
             throw new UsageException("--synthetic needs at least 1 scene, not " + synthetic);
@@ -117,16 +130,14 @@ final class BenchCommand implements Callable<Integer> {
             long start = System.nanoTime();
             knowledge = generate(synthetic);
             made = String.format(Locale.ROOT, " (generated in %.1f s)", (System.nanoTime() - start) / 1e9);
-            SyntheticScenes.generate(SYNTHETIC_SEED + 1, QUERIES, Grid.DEFAULT, queries::add);
+            SyntheticScenes.generate(SYNTHETIC_SEED + 1, queryCount, Grid.DEFAULT, queries::add);
         } else {
             knowledge = KnowledgeBase.load(files, List::of);
-            for (int i = 0; i < QUERIES; i++) {
-                queries.add(knowledge.scene((int) ((long) i * knowledge.size() / QUERIES)));
-            }
+            queries = queries(knowledge, List::of);
         }
         PrintWriter out = spec.commandLine().getOut();
-        out.printf(Locale.ROOT, "%d stored %sscenes%s, one thread, k=1%n%-24s %18s", knowledge.size(),
-                synthetic != null ? "synthetic " : "", made, "metric", "scenes per 100 ms");
+        out.printf(Locale.ROOT, "%d stored %sscenes%s, %d queries, one thread, k=1%n%-24s %18s", knowledge.size(),
+                synthetic != null ? "synthetic " : "", made, queries.size(), "metric", "scenes per 100 ms");
         out.printf(Locale.ROOT, latency ? " %24s %24s%n" : "%n", "decision us p50 / p99", "CPU us p50 / p99");
         for (Measured measured : chosen) {
             registry.check(PluginKind.METRIC, measured.name(), measured.config());
@@ -144,9 +155,7 @@ final class BenchCommand implements Callable<Integer> {
                 transformedQueries = KnowledgeBase.transform(queries, config.transformFactory(registry).get());
             } else {
                 transformed = KnowledgeBase.load(files, config.transformFactory(registry));
-                for (int i = 0; i < QUERIES; i++) {
-                    transformedQueries.add(transformed.scene((int) ((long) i * transformed.size() / QUERIES)));
-                }
+                transformedQueries = queries(transformed, config.transformFactory(registry));
             }
             Recognizer recognizer = new Recognizer(transformed, config.metricFactory(registry), config.k());
             row(out, configs.get(c).getFileName().toString(), recognizer, transformedQueries, transformed.size());
@@ -155,6 +164,23 @@ final class BenchCommand implements Callable<Integer> {
             out.println("ball-goal (index) visits few scenes: its figure is stored scenes over decision time.");
         }
         return ExitCodes.OK;
+    }
+
+    /** Every scene of the --queries files (transformed as the knowledge base), or stored scenes spread over it. */
+    private List<Scene> queries(KnowledgeBase knowledge, java.util.function.Supplier<List<org.scenes.match.SceneTransform>> transforms) {
+        if (queryFiles != null) {
+            List<Scene> all = new ArrayList<>();
+            for (Path file : queryFiles) {
+                all.addAll(KnowledgeBase.transform(org.scenes.scene.SceneFileReader.read(file).scenes(), transforms.get()));
+            }
+            return all;
+        }
+        List<Scene> spread = new ArrayList<>();
+        int count = Math.min(queryCount, knowledge.size());
+        for (int i = 0; i < count; i++) {
+            spread.add(knowledge.scene((int) ((long) i * knowledge.size() / count)));
+        }
+        return spread;
     }
 
     /** One measured row: throughput, then the wall and CPU time of each decision. */

@@ -41,6 +41,28 @@ class BenchCommandTest {
     }
 
     @Test
+    @RequiresSharedData
+    void heldOutQueriesAreEverySceneOfTheirFiles() {
+        Path game = SharedData.resolve("krislet/classic-game1");
+        Path stored = dir.resolve("c1.json.gz");
+        Path held = dir.resolve("c2.json.gz");
+        assertEquals(0, run("convert", "-o", stored.toString(), game.resolve("Carleton_1.lsf.gz").toString()), cli.err());
+        assertEquals(0, run("convert", "-o", held.toString(), game.resolve("Carleton_2.lsf.gz").toString()), cli.err());
+        int count = org.scenes.scene.SceneFileReader.read(held).scenes().size();
+        assertEquals(0, run("bench", "--time", "0.02", "--metric", "ball-goal", "--queries", held, stored), cli.err());
+        assertTrue(cli.out().split("\n")[0].contains(", " + count + " queries,"), cli.out());
+        assertEquals(2, run("bench", "--synthetic", 100, "--queries", held), cli.out());
+    }
+
+    @Test
+    void queryCountSetsHowManyQueries() {
+        assertEquals(0, run("bench", "--time", "0.02", "--metric", "ball-goal", "--synthetic", 500, "--query-count", 10), cli.err());
+        assertTrue(cli.out().split("\n")[0].startsWith("500 stored synthetic scenes"), cli.out());
+        assertTrue(cli.out().split("\n")[0].contains(", 10 queries,"), cli.out());
+        assertEquals(2, run("bench", "--synthetic", 500, "--query-count", 0));
+    }
+
+    @Test
     void syntheticKnowledgeBaseOfTheGivenSize() {
         assertEquals(0, run("bench", "--time", "0.05", "--metric", "ball-goal", "--synthetic", 3000), cli.err());
         String[] lines = cli.out().split("\n");

@@ -297,16 +297,24 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
                 team = strings.get((int) varint());
                 uniformNumber = (int) unzigzag(varint());
             }
-            double[] values = new double[7];
-            for (int i = 0; i < values.length; i++) {
-                values[i] = (presence & 1 << i) != 0 ? value() : Double.NaN;
-            }
+            // seven fields in the order written, as locals: no array per decoded object
+            double distance = optional(presence, DISTANCE);
+            double direction = optional(presence, DIRECTION);
+            double distanceChange = optional(presence, DISTANCE_CHANGE);
+            double directionChange = optional(presence, DIRECTION_CHANGE);
+            double bodyFacing = optional(presence, BODY_FACING);
+            double headFacing = optional(presence, HEAD_FACING);
+            double pointing = optional(presence, POINTING);
             Cell cell = (presence & EXPLICIT_CELL) != 0 ? new Cell((int) varint(), (int) varint())
-                    : grid.cell(values[0], values[1]);
+                    : grid.cell(distance, direction);
             double confidence = (presence & CONFIDENCE) != 0 ? value() : 1;
             return new SeenObject(shape.kind(), shape.name(), team, uniformNumber, shape.goalie(), shape.relation(),
-                    values[0], values[1], values[2], values[3], values[4], values[5], values[6], shape.mark(), cell,
+                    distance, direction, distanceChange, directionChange, bodyFacing, headFacing, pointing, shape.mark(), cell,
                     confidence);
+        }
+
+        private double optional(int presence, int field) {
+            return (presence & field) != 0 ? value() : Double.NaN;
         }
 
         private double value() {

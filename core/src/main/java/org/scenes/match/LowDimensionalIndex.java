@@ -3,6 +3,7 @@ package org.scenes.match;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import org.scenes.scene.ActionType;
 import org.scenes.scene.Scene;
 
 /**
@@ -13,12 +14,16 @@ import org.scenes.scene.Scene;
  * <ul>
  * <li>scenes with the same objects and previous action class (every float equal) are one
  * <em>point</em>, which offers its k lowest indices;</li>
- * <li>points are split into buckets by which groups they hold and (with {@code memory-action})
- * their previous action class, and each bucket into a k-d tree whose nodes keep the box of their
- * points' floats, their least unmatched penalty per group and their least scene index;</li>
- * <li>a query visits nodes in order of a lower bound of their distance (box gaps and penalties,
- * the memory-action term exact) and stops once that bound exceeds the k-th best, or equals it
- * and the node holds no lower index.</li>
+ * <li>points are sorted into buckets by which groups they hold and (with {@code memory-action})
+ * their previous action class; one k-d tree spans them all, its upper nodes splitting between
+ * buckets, its lower ones within a bucket at the median of the widest weighted float; a node
+ * keeps which groups some and all of its points hold, their previous action classes, the box of
+ * the floats of the points holding each group, their least unmatched penalty per group and their
+ * least scene index;</li>
+ * <li>a query visits nodes in order of a lower bound of their distance (per group the least of
+ * the box gap and the penalty of a missing partner; the memory-action cost unless the node holds
+ * the query's class) and stops once that bound exceeds the k-th best, or equals it and the node
+ * holds no lower index.</li>
  * </ul>
  * Distances offered are computed by {@link ObjectSetMetric#groupDistance} in the exhaustive
  * path's order, so they are bit-identical to it; bounds are shaved against float rounding.
@@ -46,16 +51,27 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     private final int[] actionClass;
     private final int[] indexStart;
     private final int[] indices;
-    // the k-d tree: per node its point range, children (-1 for leaves), box, least penalty per slot, least index
-    private final int[] nodeFrom;
-    private final int[] nodeTo;
-    private final int[] nodeLeft;
-    private final int[] nodeRight;
-    private final float[] nodeMin;
-    private final float[] nodeMax;
-    private final double[] nodePenalty;
-    private final int[] nodeIndex;
-    private final int[] roots;
+    // the k-d tree, packed so that a node's bound reads two short runs of memory: per node NODE_INTS
+    // ints (point range, children or -1 for leaves, slots some and all of its points hold, their
+    // previous action classes as bits class + 1, least index) and boxStride floats (per slot the
+    // box of each compared coordinate as min, max, then the least penalty, rounded down)
+    private static final int FROM = 0;
+    private static final int TO = 1;
+    private static final int LEFT = 2;
+    private static final int RIGHT = 3;
+    private static final int SOME = 4;
+    private static final int ALL = 5;
+    private static final int CLASSES = 6;
+    private static final int INDEX = 7;
+    private static final int NODE_INTS = 8;
+    private final int[] nodeInts;
+    /** Coordinates compared by the pair cost (a, b and, with a row weight, the row) and floats of a slot's box. */
+    private final int[] coordinate;
+    private final int slotBox;
+    /** Where a slot's box starts within a node's floats; slots no stored scene holds have none (-1). */
+    private final int[] slotBoxAt;
+    private final int boxStride;
+    private final float[] nodeBox;
 
     private LowDimensionalIndex(ObjectSetMetric metric, int[] slotGroup, boolean[] slotPrevious, double[] slotWeight,
                                 float[] values, int[] mask, int[] actionClass, int[] indexStart, int[] indices, Tree tree) {
@@ -75,15 +91,42 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         this.actionClass = actionClass;
         this.indexStart = indexStart;
         this.indices = indices;
-        this.nodeFrom = tree.from.stream().mapToInt(Integer::intValue).toArray();
-        this.nodeTo = tree.to.stream().mapToInt(Integer::intValue).toArray();
-        this.nodeLeft = tree.left.stream().mapToInt(Integer::intValue).toArray();
-        this.nodeRight = tree.right.stream().mapToInt(Integer::intValue).toArray();
-        this.nodeMin = tree.min.toArray();
-        this.nodeMax = tree.max.toArray();
-        this.nodePenalty = tree.penalty.stream().mapToDouble(Double::doubleValue).toArray();
-        this.nodeIndex = tree.index.stream().mapToInt(Integer::intValue).toArray();
-        this.roots = tree.roots.stream().mapToInt(Integer::intValue).toArray();
+        this.coordinate = rowAt >= 0 ? new int[] {0, 1, rowAt} : new int[] {0, 1};
+        this.slotBox = 2 * coordinate.length + 1;
+        int nodes = tree.from.size();
+        int anywhere = nodes == 0 ? 0 : tree.some.get(0);
+        this.slotBoxAt = new int[slotGroup.length];
+        int boxes = 0;
+        for (int s = 0; s < slotGroup.length; s++) {
+            slotBoxAt[s] = (anywhere & 1 << s) != 0 ? slotBox * boxes++ : -1;
+        }
+        this.boxStride = boxes * slotBox;
+        this.nodeInts = new int[nodes * NODE_INTS];
+        this.nodeBox = new float[nodes * boxStride];
+        for (int node = 0; node < nodes; node++) {
+            int at = node * NODE_INTS;
+            nodeInts[at + FROM] = tree.from.get(node);
+            nodeInts[at + TO] = tree.to.get(node);
+            nodeInts[at + LEFT] = tree.left.get(node);
+            nodeInts[at + RIGHT] = tree.right.get(node);
+            nodeInts[at + SOME] = tree.some.get(node);
+            nodeInts[at + ALL] = tree.all.get(node);
+            nodeInts[at + CLASSES] = tree.classes.get(node);
+            nodeInts[at + INDEX] = tree.index.get(node);
+            for (int s = 0; s < slotGroup.length; s++) {
+                if (slotBoxAt[s] < 0) {
+                    continue;
+                }
+                int box = node * boxStride + slotBoxAt[s];
+                for (int c = 0; c < coordinate.length; c++) {
+                    nodeBox[box + 2 * c] = tree.min.get(node * width + s * stride + coordinate[c]);
+                    nodeBox[box + 2 * c + 1] = tree.max.get(node * width + s * stride + coordinate[c]);
+                }
+                double least = tree.penalty.get(node * slotGroup.length + s);
+                float rounded = (float) least;
+                nodeBox[box + 2 * coordinate.length] = rounded > least ? Math.nextDown(rounded) : rounded;
+            }
+        }
     }
 
     /** Points: how many in this index (distinct scenes as compared), for tests and docs. */
@@ -122,6 +165,9 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         int n = scenes.size();
         // one pass (each stored scene is decoded once): encode, and give up at a group of two objects
         float[] all = new float[Math.multiplyExact(n, width)];
+        if (ActionType.values().length * 3 > 31) {
+            return null; // previous action classes (and none) must fit a node's bits
+        }
         int[] sceneMask = new int[n];
         int[] sceneClass = new int[n];
         for (int i = 0; i < n; i++) {
@@ -209,11 +255,13 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         final List<Integer> to = new ArrayList<>();
         final List<Integer> left = new ArrayList<>();
         final List<Integer> right = new ArrayList<>();
+        final List<Integer> some = new ArrayList<>();
+        final List<Integer> all = new ArrayList<>();
+        final List<Integer> classes = new ArrayList<>();
         final FloatList min = new FloatList();
         final FloatList max = new FloatList();
         final List<Double> penalty = new ArrayList<>();
         final List<Integer> index = new ArrayList<>();
-        final List<Integer> roots = new ArrayList<>();
     }
 
     private static final class FloatList {
@@ -227,14 +275,18 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             data[size++] = value;
         }
 
+        float get(int i) {
+            return data[i];
+        }
+
         float[] toArray() {
             return Arrays.copyOf(data, size);
         }
     }
 
     /**
-     * This index with its k-d trees: the points reordered within each bucket so that every
-     * node is a contiguous range, a tree per bucket.
+     * This index with its k-d tree: the points reordered within each bucket so that every
+     * node is a contiguous range.
      */
     private LowDimensionalIndex withTree() {
         int points = mask.length;
@@ -242,14 +294,15 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         for (int p = 0; p < points; p++) {
             order[p] = p;
         }
-        Tree tree = new Tree();
-        int bucketStart = 0;
-        for (int p = 1; p <= points; p++) {
-            if (p == points || mask[p] != mask[bucketStart] || actionClass[p] != actionClass[bucketStart]) {
-                tree.roots.add(split(tree, order, bucketStart, p));
-                bucketStart = p;
+        List<Integer> bucketStarts = new ArrayList<>();
+        for (int p = 0; p <= points; p++) {
+            if (p == 0 || p == points || mask[p] != mask[p - 1] || actionClass[p] != actionClass[p - 1]) {
+                bucketStarts.add(p);
             }
         }
+        Tree tree = new Tree();
+        int root = node(tree, order, 0, points);
+        buckets(tree, order, bucketStarts.stream().mapToInt(Integer::intValue).toArray(), 0, bucketStarts.size() - 1, root);
         // points in tree order, with their indices
         float[] sortedValues = new float[values.length];
         int[] sortedMask = new int[points];
@@ -272,8 +325,47 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
                 sortedStart, sortedIndices, tree);
     }
 
-    /** A node over order[from, to): its box and, above a leaf's size, children split at the median of the widest weighted float. */
-    private int split(Tree tree, int[] order, int from, int to) {
+    /**
+     * The children of a node over buckets [first, last) (bucket b being points starts[b] to
+     * starts[b + 1]): one bucket is split by its floats; several are halved at the bucket boundary
+     * nearest the middle point, so buckets of every size sit under one root.
+     */
+    private void buckets(Tree tree, int[] order, int[] starts, int first, int last, int node) {
+        if (last - first == 1) {
+            split(tree, order, node);
+            return;
+        }
+        int from = starts[first];
+        int to = starts[last];
+        int middle = first + 1;
+        for (int b = first + 2; b < last; b++) {
+            if (Math.abs(2L * starts[b] - from - to) < Math.abs(2L * starts[middle] - from - to)) {
+                middle = b;
+            }
+        }
+        int left = children(tree, order, node, starts[middle]);
+        buckets(tree, order, starts, first, middle, left);
+        buckets(tree, order, starts, middle, last, left + 1);
+    }
+
+    /**
+     * Two children of the node, split at point {@code middle}, made one after the other: a query
+     * computes both bounds together, from one run of memory. Returns the left one.
+     */
+    private int children(Tree tree, int[] order, int node, int middle) {
+        int left = node(tree, order, tree.from.get(node), middle);
+        int right = node(tree, order, middle, tree.to.get(node));
+        tree.left.set(node, left);
+        tree.right.set(node, right);
+        return left;
+    }
+
+    /**
+     * A new leaf over order[from, to): which slots some and all of its points hold, their
+     * classes, per slot the box of the floats and the least penalty of the points holding it,
+     * the least scene index.
+     */
+    private int node(Tree tree, int[] order, int from, int to) {
         int node = tree.from.size();
         tree.from.add(from);
         tree.to.add(to);
@@ -287,20 +379,30 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         double[] penalty = new double[slots];
         Arrays.fill(penalty, Double.POSITIVE_INFINITY);
         int least = Integer.MAX_VALUE;
+        int some = 0;
+        int all = -1;
+        int classes = 0;
         for (int r = from; r < to; r++) {
             int p = order[r];
-            for (int f = 0; f < width; f++) {
-                float v = values[p * width + f];
-                low[f] = Math.min(low[f], v);
-                high[f] = Math.max(high[f], v);
-            }
+            some |= mask[p];
+            all &= mask[p];
+            classes |= 1 << (actionClass[p] + 1);
             for (int s = 0; s < slots; s++) {
-                if ((mask[p] & 1 << s) != 0) {
-                    penalty[s] = Math.min(penalty[s], metric.penalty(values, p * width + s * stride));
+                if ((mask[p] & 1 << s) == 0) {
+                    continue;
                 }
+                for (int f = s * stride; f < (s + 1) * stride; f++) {
+                    float v = values[p * width + f];
+                    low[f] = Math.min(low[f], v);
+                    high[f] = Math.max(high[f], v);
+                }
+                penalty[s] = Math.min(penalty[s], metric.penalty(values, p * width + s * stride));
             }
             least = Math.min(least, indices[indexStart[p]]);
         }
+        tree.some.add(some);
+        tree.all.add(all);
+        tree.classes.add(classes);
         for (int f = 0; f < width; f++) {
             tree.min.add(low[f]);
             tree.max.add(high[f]);
@@ -309,8 +411,21 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             tree.penalty.add(penalty[s]);
         }
         tree.index.add(least);
+        return node;
+    }
+
+    /** Below a node within one bucket and above a leaf's size, children split at the median of the widest weighted float. */
+    private void split(Tree tree, int[] order, int node) {
+        int from = tree.from.get(node);
+        int to = tree.to.get(node);
         if (to - from <= LEAF) {
-            return node;
+            return;
+        }
+        float[] low = new float[width];
+        float[] high = new float[width];
+        for (int f = 0; f < width; f++) {
+            low[f] = tree.min.get(node * width + f);
+            high[f] = tree.max.get(node * width + f);
         }
         int widest = -1;
         double extent = 0;
@@ -326,7 +441,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             }
         }
         if (widest < 0) {
-            return node; // all points alike in every compared float (cannot happen for distinct points)
+            return; // all points alike in every compared float (cannot happen for distinct points)
         }
         int middle = (from + to) >>> 1;
         // sorted as primitive keys: the float made order-preserving in the high half, the point in the low
@@ -340,11 +455,9 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         for (int r = from; r < to; r++) {
             order[r] = (int) keys[r - from];
         }
-        int left = split(tree, order, from, middle);
-        int right = split(tree, order, middle, to);
-        tree.left.set(node, left);
-        tree.right.set(node, right);
-        return node;
+        int left = children(tree, order, node, middle);
+        split(tree, order, left);
+        split(tree, order, left + 1);
     }
 
     @Override
@@ -363,69 +476,67 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         int qClass = memoryAction > 0 && query.previous() != null ? ObjectSetMetric.actionClass(query.previous()) : -1;
         Assignment.Workspace scratch = new Assignment.Workspace();
         NodeHeap heap = new NodeHeap();
-        for (int root : roots) {
-            int point = nodeFrom[root];
-            double fixed = memoryAction > 0 && qClass != actionClass[point] ? memoryAction : 0;
-            for (int s = 0; s < slots; s++) {
-                if ((mask[point] & 1 << s) == 0 && qn[s] == 1) {
-                    fixed += slotWeight[s] * qPenalty[s];
-                }
-            }
-            heap.push(bound(root, fixed, q, qn, qPenalty), root, fixed);
-        }
+        heap.push(bound(0, q, qn, qPenalty, qClass), 0);
         while (heap.size > 0) {
             double lower = heap.topBound();
             int node = heap.topNode();
-            double fixed = heap.topFixed();
             heap.pop();
             double worst = top.bound();
             if (lower > worst) {
                 return; // every node left is bounded at least as far
             }
-            if (lower == worst && nodeIndex[node] > top.worstIndex()) {
+            int at = node * NODE_INTS;
+            if (lower == worst && nodeInts[at + INDEX] > top.worstIndex()) {
                 continue;
             }
-            if (nodeLeft[node] < 0) {
-                for (int p = nodeFrom[node]; p < nodeTo[node]; p++) {
+            int left = nodeInts[at + LEFT];
+            if (left < 0) {
+                for (int p = nodeInts[at + FROM]; p < nodeInts[at + TO]; p++) {
                     offer(p, q, qn, qClass, top, scratch);
                 }
                 continue;
             }
-            int left = nodeLeft[node];
-            int right = nodeRight[node];
-            heap.push(bound(left, fixed, q, qn, qPenalty), left, fixed);
-            heap.push(bound(right, fixed, q, qn, qPenalty), right, fixed);
+            int right = nodeInts[at + RIGHT];
+            heap.push(bound(left, q, qn, qPenalty, qClass), left);
+            heap.push(bound(right, q, qn, qPenalty, qClass), right);
         }
     }
 
     /**
-     * A lower bound of the distance of every point under the node: the bucket's fixed terms
-     * plus, per slot the node's points hold, the gap from the query's object to the node's box
-     * (capped by both penalties for optimal matching) or the least stored penalty; shaved.
+     * A lower bound of the distance of every point under the node, shaved: the memory-action
+     * cost unless some point has the query's previous action class, plus per slot the least of
+     * what its points can cost: for those holding the slot's object the gap from the query's
+     * object to their box (capped by both penalties for optimal matching) or their least
+     * penalty when the query lacks it; for those lacking it the query object's penalty.
      */
-    private double bound(int node, double fixed, float[][] q, int[] qn, double[] qPenalty) {
+    private double bound(int node, float[][] q, int[] qn, double[] qPenalty, int qClass) {
         int slots = slotGroup.length;
-        int point = nodeFrom[node];
-        double lower = fixed;
-        int base = node * width;
+        int at = node * NODE_INTS;
+        double lower = memoryAction > 0 && (nodeInts[at + CLASSES] & 1 << (qClass + 1)) == 0 ? memoryAction : 0;
+        int some = nodeInts[at + SOME];
+        int all = nodeInts[at + ALL];
+        int leastAt = 2 * coordinate.length;
         for (int s = 0; s < slots; s++) {
-            if ((mask[point] & 1 << s) == 0) {
-                continue;
-            }
-            double least = nodePenalty[node * slots + s];
+            int box = node * boxStride + slotBoxAt[s]; // read only where some point holds the slot
+            boolean held = (some & 1 << s) != 0;
+            boolean lacked = (all & 1 << s) == 0;
             double gap;
             if (qn[s] == 0) {
-                gap = least;
+                gap = lacked ? 0 : nodeBox[box + leastAt];
             } else if (qn[s] == 1) {
-                int at = base + s * stride;
-                double da = outside(q[s][0], nodeMin[at], nodeMax[at]);
-                double db = outside(q[s][1], nodeMin[at + 1], nodeMax[at + 1]);
-                gap = polar ? da + db : Math.sqrt(da * da + db * db);
-                if (rowAt >= 0) {
-                    gap += outside(q[s][rowAt], nodeMin[at + rowAt], nodeMax[at + rowAt]);
-                }
-                if (optimal) {
-                    gap = Math.min(gap, qPenalty[s] + least);
+                gap = lacked ? qPenalty[s] : Double.POSITIVE_INFINITY;
+                if (held) {
+                    float[] x = q[s];
+                    double da = outside(x[0], nodeBox[box], nodeBox[box + 1]);
+                    double db = outside(x[1], nodeBox[box + 2], nodeBox[box + 3]);
+                    double pair = polar ? da + db : Math.sqrt(da * da + db * db);
+                    if (rowAt >= 0) {
+                        pair += outside(x[rowAt], nodeBox[box + 4], nodeBox[box + 5]);
+                    }
+                    if (optimal) {
+                        pair = Math.min(pair, qPenalty[s] + nodeBox[box + leastAt]);
+                    }
+                    gap = Math.min(gap, pair);
                 }
             } else {
                 gap = 0; // several objects on the query's side: no bound taken
@@ -461,17 +572,15 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         }
     }
 
-    /** A min-heap of nodes by lower bound, carrying each node's fixed (bucket) terms. */
+    /** A min-heap of nodes by lower bound. */
     private static final class NodeHeap {
         private double[] bounds = new double[64];
-        private double[] fixed = new double[64];
         private int[] nodes = new int[64];
         int size;
 
-        void push(double bound, int node, double fixedTerms) {
+        void push(double bound, int node) {
             if (size == nodes.length) {
                 bounds = Arrays.copyOf(bounds, size * 2);
-                fixed = Arrays.copyOf(fixed, size * 2);
                 nodes = Arrays.copyOf(nodes, size * 2);
             }
             int child = size++;
@@ -481,12 +590,10 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
                     break;
                 }
                 bounds[child] = bounds[parent];
-                fixed[child] = fixed[parent];
                 nodes[child] = nodes[parent];
                 child = parent;
             }
             bounds[child] = bound;
-            fixed[child] = fixedTerms;
             nodes[child] = node;
         }
 
@@ -498,17 +605,12 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             return nodes[0];
         }
 
-        double topFixed() {
-            return fixed[0];
-        }
-
         void pop() {
             size--;
             if (size == 0) {
                 return;
             }
             double bound = bounds[size];
-            double fixedTerms = fixed[size];
             int node = nodes[size];
             int parent = 0;
             while (true) {
@@ -523,12 +625,10 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
                     break;
                 }
                 bounds[parent] = bounds[child];
-                fixed[parent] = fixed[child];
                 nodes[parent] = nodes[child];
                 parent = child;
             }
             bounds[parent] = bound;
-            fixed[parent] = fixedTerms;
             nodes[parent] = node;
         }
     }

@@ -50,10 +50,20 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * @param projectCycles objects moved this many cycles forward (negative: back) by their changes
      * @param memoryWeight weight of the distance between remembered previous scenes
      * @param memoryActionWeight cost when the remembered previous actions differ in type
+     * @param nearestPlayers compare only the nearest player of each player class (all players,
+     *        teammates, opponents, unknown), so every group holds at most one object
      */
     public record Settings(ObjectWeights weights, Matching matching, Space space, boolean logDistance,
                            double distanceWeight, double directionWeight, double rowWeight, double penalty, double penaltyScale,
-                           double projectCycles, double memoryWeight, double memoryActionWeight) {
+                           double projectCycles, double memoryWeight, double memoryActionWeight, boolean nearestPlayers) {
+        /** Settings comparing every player. */
+        public Settings(ObjectWeights weights, Matching matching, Space space, boolean logDistance,
+                        double distanceWeight, double directionWeight, double rowWeight, double penalty, double penaltyScale,
+                        double projectCycles, double memoryWeight, double memoryActionWeight) {
+            this(weights, matching, space, logDistance, distanceWeight, directionWeight, rowWeight, penalty, penaltyScale,
+                    projectCycles, memoryWeight, memoryActionWeight, false);
+        }
+
         public Settings {
             for (double value : new double[] {distanceWeight, directionWeight, rowWeight, penalty, memoryWeight, memoryActionWeight}) {
                 if (!(value >= 0) || Double.isInfinite(value)) {
@@ -78,8 +88,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         options.put("penalty-scale", "distance at which the unmatched penalty halves (default 10)");
         options.put("memory", "weight of the remembered previous scene (needs the memory transform; default 0)");
         options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
+        options.put("nearest-players", "true to compare only the nearest player of each weighted player class"
+                + " (teammates, opponents, unknown, all players), which the exact index then serves (default false)");
         options.put("index", "true (default) to search an exact index when every weighted group holds at most one object"
-                + " per scene (ball, goals); false to scan every scene");
+                + " per scene (ball, goals, nearest players); false to scan every scene");
         if (projection) {
             options.put("cycles", "cycles to project objects forward by their distance/direction change (default 1; negative: back)");
         } else {
@@ -114,16 +126,21 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                         + " is unknown; use cartesian or polar");
             };
         }
-        String log = config.option("log-distance", "false").toLowerCase(Locale.ROOT);
-        if (!log.equals("true") && !log.equals("false")) {
-            throw new PluginException("option log-distance=" + log + " must be true or false");
-        }
-        return new Settings(config.objectWeights(), matching, space, log.equals("true"),
+        return new Settings(config.objectWeights(), matching, space, flag(config, "log-distance"),
                 config.doubleOption("distance-weight", 1), config.doubleOption("direction-weight", 1),
                 config.doubleOption("row-weight", 0),
                 config.doubleOption("penalty", 10), config.doubleOption("penalty-scale", 10),
                 config.doubleOption("cycles", defaultProjection), config.doubleOption("memory", 0),
-                config.doubleOption("memory-action", 0));
+                config.doubleOption("memory-action", 0), flag(config, "nearest-players"));
+    }
+
+    /** A true/false option, false by default. */
+    private static boolean flag(PluginConfig config, String name) {
+        String value = config.option(name, "false").toLowerCase(Locale.ROOT);
+        if (!value.equals("true") && !value.equals("false")) {
+            throw new PluginException("option " + name + "=" + value + " must be true or false");
+        }
+        return value.equals("true");
     }
 
     // groups: ball, own goal, opponent goal, goal of unknown side, flags, lines, all players,
@@ -131,6 +148,11 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     static final int GROUPS = 10;
     private static final int[] CLASS_OF_GROUP = {0, 1, 1, 1, 2, 3, 4, 5, 6, 7};
     private static final int PLAYERS = 6;
+
+    /** Whether a group holds players (all, teammates, opponents, unknown): with nearest-players, its nearest only. */
+    private static boolean playerGroup(int group) {
+        return group >= PLAYERS;
+    }
 
     /**
      * A scene as packed numbers: per group, per object nearest first, {@link #stride()} 32-bit
@@ -263,8 +285,9 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         for (int group = 0; group < GROUPS; group++) {
             List<Placed> objects = groups.get(group);
             objects.sort(Comparator.comparingDouble(Placed::distance));
-            float[] values = new float[objects.size() * stride];
-            for (int i = 0; i < objects.size(); i++) {
+            int kept = settings.nearestPlayers() && playerGroup(group) ? Math.min(1, objects.size()) : objects.size();
+            float[] values = new float[kept * stride];
+            for (int i = 0; i < kept; i++) {
                 Placed object = objects.get(i);
                 int at = i * stride;
                 values[at] = object.a();
@@ -294,6 +317,11 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             }
             if (object.kind() == ObjectKind.PLAYER && groupWeight[PLAYERS] > 0) {
                 counts[PLAYERS]++;
+            }
+        }
+        if (settings.nearestPlayers()) {
+            for (int group = PLAYERS; group < GROUPS; group++) {
+                counts[group] = Math.min(1, counts[group]);
             }
         }
     }

@@ -19,6 +19,8 @@ public final class Grid {
     private final double maxAngle;
     private final double[] bounds;
     private final double columnWidth;
+    /** Every cell, row after row, made once (decoding a knowledge base asks for millions); null for huge grids. */
+    private final Cell[] cells;
 
     public Grid(int columns, double minAngle, double maxAngle, double[] bounds) {
         if (columns < 1) {
@@ -38,6 +40,11 @@ public final class Grid {
         this.maxAngle = maxAngle;
         this.bounds = bounds.clone();
         this.columnWidth = (maxAngle - minAngle) / columns;
+        long count = (long) columns * (bounds.length + 1);
+        cells = count <= 4096 ? new Cell[(int) count] : null;
+        for (int i = 0; cells != null && i < cells.length; i++) {
+            cells[i] = new Cell(i % columns, i / columns);
+        }
     }
 
     /** A grid with {@code columns} columns and {@code bounds.length + 1} rows over the default angle range. */
@@ -86,7 +93,9 @@ public final class Grid {
     }
 
     public Cell cell(double distance, double direction) {
-        return new Cell(column(direction), row(distance));
+        int column = column(direction);
+        int row = row(distance);
+        return cells != null ? cells[row * columns + column] : new Cell(column, row);
     }
 
     /**

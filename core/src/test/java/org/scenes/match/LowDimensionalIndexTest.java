@@ -29,10 +29,16 @@ import org.scenes.testing.SharedData;
  * The exact index of low-dimensional object-set configurations (ball and goals, with or without
  * memory terms) finds the same neighbours at bit-identical distances as the exhaustive scan,
  * for every space, both matchings and k = 1, 5, 15; on synthetic scenes with many ties and
- * duplicates, and on real Krislet scenes.
+ * duplicates, and on real Krislet scenes; also with the nearest player of each kind weighed
+ * ({@code nearest-players}).
  */
 class LowDimensionalIndexTest {
     private static final ObjectWeights BALL_GOAL = ObjectWeights.parse("ball=1,goal=0.05");
+    /** Ball, goals and the nearest teammate and opponent (with {@code nearest-players}). */
+    private static final ObjectWeights NEAREST = ObjectWeights.parse("ball=1,goal=0.05,teammates=0.3,opponents=0.5");
+    /** Ball and the nearest player regardless of team. */
+    private static final ObjectWeights ANY_PLAYER = ObjectWeights.parse("ball=1,players=0.4");
+
 
     /** The configuration `scenes tune --objective direction` chose for Krislet (README). */
     private static final Map<String, String> TUNED = Map.of("space", "polar", "log-distance", "true",
@@ -48,6 +54,13 @@ class LowDimensionalIndexTest {
             Map.of("matching", "optimal", "penalty", "0.5", "penalty-scale", "3"),
             Map.of("memory-action", "3", "row-weight", "1"));
 
+    /** Configurations with the nearest player of each kind, with and without memory terms. */
+    private static final List<Map<String, String>> NEAREST_CONFIGURATIONS = List.of(
+            with(TUNED, "nearest-players", "true"),
+            Map.of("nearest-players", "true"),
+            Map.of("nearest-players", "true", "matching", "optimal", "memory", "0.5"),
+            Map.of("nearest-players", "true", "space", "polar", "log-distance", "true", "memory", "0.3", "memory-action", "7"));
+
     @Test
     void syntheticScenesAsExhaustive() {
         List<Scene> stored = remembered(synthetic(21, 3000));
@@ -59,6 +72,32 @@ class LowDimensionalIndexTest {
         check(Map.of("matching", "optimal", "memory-action", "2"), ObjectSetMetric.Space.CELL, 0, stored, queries);
         check(Map.of(), ObjectSetMetric.Space.CARTESIAN, 1, stored, queries);
         check(Map.of("memory", "1", "matching", "optimal"), ObjectSetMetric.Space.CARTESIAN, -2, stored, queries);
+    }
+
+    @Test
+    void nearestPlayersAsExhaustive() {
+        List<Scene> stored = remembered(withPlayers(51, synthetic(51, 2500)));
+        List<Scene> queries = remembered(withPlayers(52, synthetic(52, 50)));
+        for (Map<String, String> options : NEAREST_CONFIGURATIONS) {
+            check(options, ObjectSetMetric.Space.CARTESIAN, 0, NEAREST, stored, queries);
+        }
+        check(Map.of("nearest-players", "true", "memory-action", "2"), ObjectSetMetric.Space.CELL, 0, NEAREST, stored, queries);
+        check(Map.of("nearest-players", "true", "matching", "optimal"), ObjectSetMetric.Space.CARTESIAN, 1, ANY_PLAYER,
+                stored, queries);
+    }
+
+    @Test
+    void nearestPlayersKeepOnlyTheNearestOfEachKind() {
+        Scene far = TestScenes.scene(1, Action.dash(50), TestScenes.ball(5, 0),
+                TestScenes.player(Relation.TEAMMATE, 3, 10), TestScenes.player(Relation.TEAMMATE, 30, -40));
+        Scene near = TestScenes.scene(2, Action.dash(50), TestScenes.ball(5, 0), TestScenes.player(Relation.TEAMMATE, 3, 10));
+        ObjectWeights teammates = ObjectWeights.parse("ball=1,teammates=1");
+        ObjectSetMetric nearest = metric(Map.of("nearest-players", "true"), ObjectSetMetric.Space.CARTESIAN, 0, teammates, true);
+        ObjectSetMetric every = metric(Map.of(), ObjectSetMetric.Space.CARTESIAN, 0, teammates, true);
+        assertEquals(0.0, nearest.distance(far, near), 0.0); // the far teammate is not compared
+        assertTrue(every.distance(far, near) > 0);
+        assertInstanceOf(LowDimensionalIndex.class, nearest.pack(List.of(far, near)));
+        assertInstanceOf(PackedObjectSets.class, every.pack(List.of(far, near)));
     }
 
     @Test
@@ -108,6 +147,32 @@ class LowDimensionalIndexTest {
         }
         check(Map.of("matching", "optimal"), ObjectSetMetric.Space.CELL, 0, stored, queries);
         check(Map.of(), ObjectSetMetric.Space.CARTESIAN, 1, stored, queries);
+        for (Map<String, String> options : NEAREST_CONFIGURATIONS) {
+            check(options, ObjectSetMetric.Space.CARTESIAN, 0, NEAREST, stored, queries);
+        }
+    }
+
+    private static Map<String, String> with(Map<String, String> options, String key, String value) {
+        Map<String, String> all = new HashMap<>(options);
+        all.put(key, value);
+        return Map.copyOf(all);
+    }
+
+    /** The scenes with zero to three teammates and opponents each, at quantised places (so nearest ones tie and repeat). */
+    private static List<Scene> withPlayers(long seed, List<Scene> scenes) {
+        Random random = new Random(seed);
+        List<Scene> result = new ArrayList<>();
+        for (Scene scene : scenes) {
+            List<SeenObject> objects = new ArrayList<>(scene.objects());
+            for (Relation relation : new Relation[] {Relation.TEAMMATE, Relation.OPPONENT}) {
+                int count = random.nextInt(4);
+                for (int i = 0; i < count; i++) {
+                    objects.add(TestScenes.player(relation, 1 + random.nextInt(30), 10 * (random.nextInt(9) - 4)));
+                }
+            }
+            result.add(new Scene(scene.cycle(), scene.observer(), objects, scene.actions()));
+        }
+        return result;
     }
 
     private static List<Scene> scenes(Path log) throws IOException {
@@ -162,17 +227,24 @@ class LowDimensionalIndexTest {
         return ObjectSetMetric.create(PluginConfig.DEFAULT.withOptions(all).withObjectWeights(weights), space, cycles);
     }
 
-    /** Every query against the recognizer at k = 1, 5, 15: same indices, bit-identical distances. */
     private static void check(Map<String, String> options, ObjectSetMetric.Space space, double cycles,
                               List<Scene> stored, List<Scene> queries) {
-        ObjectSetMetric reference = metric(options, space, cycles, BALL_GOAL, false);
+        check(options, space, cycles, BALL_GOAL, stored, queries);
+    }
+
+    /** Every query against the recognizer at k = 1, 5, 15: same indices, bit-identical distances. */
+    private static void check(Map<String, String> options, ObjectSetMetric.Space space, double cycles, ObjectWeights weights,
+                              List<Scene> stored, List<Scene> queries) {
+        ObjectSetMetric reference = metric(options, space, cycles, weights, false);
         List<List<Neighbour>> expected = new ArrayList<>();
         for (Scene query : queries) {
             expected.add(exhaustive(reference, stored, query));
         }
+        assertInstanceOf(LowDimensionalIndex.class, metric(options, space, cycles, weights, true).pack(stored),
+                "the index serves " + options + " " + weights);
         for (int k : new int[] {1, 5, 15}) {
             Recognizer recognizer = new Recognizer(KnowledgeBase.of(Grid.DEFAULT, stored),
-                    () -> metric(options, space, cycles, BALL_GOAL, true), k);
+                    () -> metric(options, space, cycles, weights, true), k);
             for (int q = 0; q < queries.size(); q++) {
                 List<Neighbour> actual = recognizer.nearest(queries.get(q));
                 assertEquals(k, actual.size());

@@ -124,8 +124,9 @@ final class BenchSets {
      * ({@code index=false}) and {@code ball-goal-index} its exact index (the plugin's default);
      * {@code tuned} is the tuned Krislet configuration of the README ({@code continuous}, polar,
      * ball and goals, memory of the previous action: its low-dimensional index) and
-     * {@code tuned-scan} the same scanning every scene ({@code index=false}); both need the
-     * memory transform ({@link #remembers}).
+     * {@code tuned-scan} the same scanning every scene ({@code index=false}), {@code tuned-nearest}
+     * the same with the nearest teammate and opponent weighed too ({@code nearest-players}); all
+     * need the memory transform ({@link #remembers}).
      */
     static Supplier<SceneMetric> metric(String name) {
         PluginRegistry registry = PluginRegistry.load();
@@ -133,16 +134,19 @@ final class BenchSets {
             case "script-ball-goal" -> "script:" + Path.of(System.getProperty("scenes.examples", "../examples/scripts"), "ball-goal.groovy");
             case "continuous-optimal" -> "continuous";
             case "ball-goal-index" -> "ball-goal";
-            case "tuned", "tuned-scan" -> "continuous";
+            case "tuned", "tuned-scan", "tuned-nearest" -> "continuous";
             default -> name;
         };
         PluginConfig config = switch (name) {
             case "continuous-optimal" -> PluginConfig.DEFAULT.withOptions(Map.of("matching", "optimal"));
             case "ball-goal" -> PluginConfig.DEFAULT.withOptions(Map.of("index", "false"));
-            case "tuned", "tuned-scan" -> PluginConfig.DEFAULT.withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05"))
+            case "tuned", "tuned-scan", "tuned-nearest" -> PluginConfig.DEFAULT
+                    .withObjectWeights(ObjectWeights.parse(name.equals("tuned-nearest")
+                            ? "ball=1,goal=0.05,teammates=0.05,opponents=0.05" : "ball=1,goal=0.05"))
                     .withOptions(Map.of("space", "polar", "log-distance", "true", "distance-weight", "30",
                             "direction-weight", "10", "row-weight", "1000", "penalty", "20000", "penalty-scale", "10000",
-                            "memory-action", "100", "index", Boolean.toString(name.equals("tuned"))));
+                            "memory-action", "100", "index", Boolean.toString(!name.equals("tuned-scan")),
+                            "nearest-players", Boolean.toString(name.equals("tuned-nearest"))));
             default -> PluginConfig.DEFAULT;
         };
         return () -> registry.metric(spec, config);

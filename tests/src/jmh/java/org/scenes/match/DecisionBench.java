@@ -6,6 +6,7 @@ import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.Measurement;
 import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
@@ -13,6 +14,7 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import org.scenes.plugin.PluginConfig;
 import org.scenes.plugin.PluginRegistry;
@@ -27,7 +29,8 @@ import org.scenes.scene.Scene;
  * without Carleton_2 (Carleton_2's scenes are the queries), or that many synthetic scenes. Metrics
  * named as in {@link BenchSets#metric}: {@code ball-goal-index} is what the agent uses,
  * {@code ball-goal} the packed scan without the index, {@code tuned} the tuned Krislet
- * configuration through its low-dimensional index and {@code tuned-scan} the same scanning every scene
+ * configuration through its low-dimensional index, {@code tuned-nearest} it with the nearest teammate and
+ * opponent too, and {@code tuned-scan} the same scanning every scene
  * ({@link BenchSets#synthetic}, synthetic queries). Each fork builds its knowledge base once
  * (printed as a {@code [setup]} line with the heap in use).
  */
@@ -45,7 +48,7 @@ public class DecisionBench {
     @Param({"1", "5", "15"})
     public int k;
 
-    @Param({"ball-goal-index", "ball-goal", "continuous", "tuned", "tuned-scan"})
+    @Param({"ball-goal-index", "ball-goal", "continuous", "tuned", "tuned-scan", "tuned-nearest"})
     public String metric;
 
     private Recognizer recognizer;
@@ -68,5 +71,41 @@ public class DecisionBench {
     public Action decide() {
         next = (next + 1) % queries.size();
         return selector.select(recognizer.nearest(queries.get(next)), random);
+    }
+
+    private final java.lang.management.ThreadMXBean threads = java.lang.management.ManagementFactory.getThreadMXBean();
+    private long[] cpuNanos = new long[1 << 16];
+    private int decisions;
+
+    @Setup(Level.Iteration)
+    public void startCounting() {
+        decisions = 0;
+    }
+
+    /**
+     * As {@link #decide}, also taking each decision's thread CPU time, whose p50 and p99 are printed
+     * after every iteration as a {@code [cpu]} line: on a loaded machine wall-clock samples mostly
+     * measure the waits for a core, CPU time does not.
+     */
+    @Benchmark
+    public Action decideCpuTime() {
+        long start = threads.getCurrentThreadCpuTime();
+        Action action = decide();
+        if (decisions == cpuNanos.length) {
+            cpuNanos = java.util.Arrays.copyOf(cpuNanos, decisions * 2);
+        }
+        cpuNanos[decisions++] = threads.getCurrentThreadCpuTime() - start;
+        return action;
+    }
+
+    @TearDown(Level.Iteration)
+    public void printCpuTime() {
+        if (decisions == 0) {
+            return; // the iteration ran decide
+        }
+        long[] sorted = java.util.Arrays.copyOf(cpuNanos, decisions);
+        java.util.Arrays.sort(sorted);
+        System.out.printf(java.util.Locale.ROOT, "%n[cpu] %s %s k=%d: %d decisions, CPU us p50 %.1f p99 %.1f%n", knowledge, metric, k,
+                decisions, sorted[(decisions - 1) / 2] / 1e3, sorted[(int) Math.ceil(0.99 * decisions) - 1] / 1e3);
     }
 }
