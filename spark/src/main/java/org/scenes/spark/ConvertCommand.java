@@ -13,7 +13,10 @@ import org.apache.hadoop.fs.FileStatus;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.scenes.convert.DropReason;
 import org.scenes.convert.Pairing;
+import org.scenes.gamelog.GameLogs;
+import org.scenes.gamelog.ServerLogs;
 import org.scenes.scene.Grid;
+import org.scenes.vision.Fading;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -23,13 +26,17 @@ import picocli.CommandLine.Spec;
 
 /** {@code scenes-spark convert}: player logs to scene files as a Spark job, one task per game. */
 @Command(name = "convert", mixinStandardHelpOptions = true, sortOptions = false,
-        description = "Convert player logs into scene files as 'scenes convert --out-dir' does, as a Spark job with "
-                + "one task per game. A game is a directory of player logs: each directory given, and each of its "
-                + "subdirectories, that holds logs (.lsf, .log, .txt, gzip or not); a log given by name belongs to "
-                + "the game of its directory. OUT/GAME/<log name>.json.gz appear only when complete; paths may be "
-                + "any Hadoop-compatible file system (hdfs://, s3a://, file://; no scheme: the local disk).")
+        description = {"Convert player logs or the server's game logs into scene files as 'scenes convert --out-dir'"
+                + " does, as a Spark job with one task per game. A game is a directory of player logs (each directory"
+                + " given, and each of its subdirectories, that holds logs: .lsf, .log, .txt, gzip or not; a log given"
+                + " by name belongs to the game of its directory), written as OUT/GAME/<log name>.json.gz;"
+                + " or a game log (GAME.rcg, in those directories or given by name, told by content) with the"
+                + " command log beside it (GAME.rcl; .gz or not), written as OUT/GAME/TEAM_UNUM.json.gz.",
+                "Scene files appear only when complete; paths may be any Hadoop-compatible file system (hdfs://,"
+                        + " s3a://, file://; no scheme: the local disk)."})
 final class ConvertCommand implements Callable<Integer> {
     private static final String[] LOG_SUFFIXES = {".lsf", ".log", ".txt"};
+    private static final String[] COMMAND_LOG_SUFFIXES = {".rcl", ".rcl.gz"};
 
     @Spec
     CommandSpec spec;
@@ -37,7 +44,8 @@ final class ConvertCommand implements Callable<Integer> {
     @ParentCommand
     SparkCommand top;
 
-    @Parameters(paramLabel = "LOG|DIR", arity = "1..*", description = "Player logs, or directories of games.")
+    @Parameters(paramLabel = "LOG|DIR", arity = "1..*",
+            description = "Player logs, game logs (GAME.rcg beside GAME.rcl), or directories of games.")
     List<String> inputs;
 
     @Option(names = "--out-dir", paramLabel = "OUT", required = true,
@@ -59,13 +67,39 @@ final class ConvertCommand implements Callable<Integer> {
             description = "How sees and actions become scenes, as for 'scenes convert' (default auto).")
     String pairing;
 
+    @Option(names = "--team", paramLabel = "NAME", description = "Game logs: only this team's players.")
+    String team;
+
+    @Option(names = "--unum", paramLabel = "N", description = "Game logs: only players with this number.")
+    int unum;
+
+    @Option(names = "--fading", paramLabel = "dice|halfway", defaultValue = "dice",
+            description = "Game logs: how a seen player's team and number fade with distance, as for 'scenes convert'"
+                    + " (default dice).")
+    String fading;
+
+    @Option(names = "--fading-seed", paramLabel = "N", defaultValue = "1",
+            description = "Game logs: seed of the fading dice. Default: 1.")
+    long fadingSeed;
+
+    @Option(names = "--commands-first", description = "Game logs: within a step, a player's commands came before"
+            + " its see (as in the simulator's own games), not after it (default).")
+    boolean commandsFirst;
+
     @Override
     public Integer call() throws IOException {
         Pairing chosen = Pairing.fromKey(pairing);
         if (chosen == null) {
             throw new UsageException("--pairing must be see, cycle or auto, not '" + pairing + "'");
         }
-        GameConversion.Settings settings = GameConversion.Settings.of(grid(), chosen, strict);
+        if (Fading.named(fading, fadingSeed) == null) {
+            throw new UsageException("--fading: expected dice or halfway, not '" + fading + "'");
+        }
+        if (unum < 0 || unum > 11) {
+            throw new UsageException("--unum: a uniform number from 1 to 11, not " + unum);
+        }
+        GameConversion.Settings settings = GameConversion.Settings.of(grid(), chosen, strict,
+                new GameConversion.GameLogSettings(team, unum, fading, fadingSeed, commandsFirst));
         HadoopFiles hadoop = HadoopFiles.fromEnvironment();
         List<GameConversion.Game> games = games(hadoop);
         for (GameConversion.Game game : games) {
@@ -135,46 +169,112 @@ final class ConvertCommand implements Callable<Integer> {
         return failures.isEmpty() ? 0 : 1;
     }
 
-    /** The games of the inputs, in the order given, each named by its directory. */
+    /**
+     * The games of the inputs, in the order given: the player logs of a directory, named by the
+     * directory, and each game log, named by its file without {@code .rcg} and {@code .gz}.
+     */
     private List<GameConversion.Game> games(HadoopFiles hadoop) throws IOException {
         Map<String, GameConversion.Game> games = new LinkedHashMap<>();
-        Map<String, String> directories = new LinkedHashMap<>();
+        Map<String, String> sources = new LinkedHashMap<>();
+        List<String> commandLogs = new ArrayList<>();
         for (String input : inputs) {
             if (hadoop.isDirectory(input)) {
                 String directory = input.replaceFirst("/+$", "");
-                addGame(games, directories, hadoop.path(directory).toString(), logsIn(hadoop, directory));
+                addDirectory(hadoop, games, sources, directory);
                 for (FileStatus status : hadoop.list(directory)) {
                     if (status.isDirectory() && !status.getPath().getName().startsWith(".")) {
-                        String sub = directory + "/" + status.getPath().getName();
-                        addGame(games, directories, hadoop.path(sub).toString(), logsIn(hadoop, sub));
+                        addDirectory(hadoop, games, sources, directory + "/" + status.getPath().getName());
                     }
                 }
             } else if (hadoop.exists(input)) {
-                String path = hadoop.path(input).toString();
-                addGame(games, directories, path.substring(0, path.lastIndexOf('/')), List.of(input));
+                ServerLogs.Kind kind = hadoop.serverLogKind(input);
+                if (kind == ServerLogs.Kind.GAME) {
+                    addServerGame(games, sources, input, commandLogBeside(hadoop, input));
+                } else if (kind == ServerLogs.Kind.COMMAND) {
+                    commandLogs.add(input);
+                } else {
+                    String path = hadoop.path(input).toString();
+                    addGame(games, sources, path.substring(0, path.lastIndexOf('/')), List.of(input));
+                }
             } else {
                 throw new UsageException("no such log or directory: " + input);
             }
         }
+        for (String commandLog : commandLogs) {
+            boolean paired = false;
+            for (GameConversion.Game game : games.values()) {
+                paired |= game.serverLogs() && hadoop.path(game.logs().get(1)).equals(hadoop.path(commandLog));
+            }
+            if (!paired) {
+                throw new UsageException(commandLog + " is a command log: give its game log (GAME.rcg beside"
+                        + " GAME.rcl)");
+            }
+        }
         if (games.isEmpty()) {
-            throw new UsageException("no player logs (.lsf, .log, .txt, gzip or not) in " + String.join(", ", inputs));
+            throw new UsageException("no player logs (.lsf, .log, .txt, gzip or not) or game logs (.rcg) in "
+                    + String.join(", ", inputs));
         }
         return new ArrayList<>(games.values());
     }
 
+    /** A directory's player logs (a game named by the directory) and its game logs (a game each). */
+    private static void addDirectory(HadoopFiles hadoop, Map<String, GameConversion.Game> games,
+                                     Map<String, String> sources, String directory) throws IOException {
+        List<String> logs = new ArrayList<>();
+        for (FileStatus status : hadoop.list(directory)) {
+            String name = status.getPath().getName();
+            String plain = name.endsWith(".gz") ? name.substring(0, name.length() - 3) : name;
+            if (!status.isFile() || name.startsWith(".")) {
+                continue;
+            }
+            if (plain.endsWith(".rcg")) {
+                String gameLog = directory + "/" + name;
+                addServerGame(games, sources, gameLog, commandLogBeside(hadoop, gameLog));
+            } else if (Arrays.stream(LOG_SUFFIXES).anyMatch(plain::endsWith)) {
+                logs.add(directory + "/" + name);
+            }
+        }
+        addGame(games, sources, hadoop.path(directory).toString(), logs);
+    }
+
+    /** GAME.rcl or GAME.rcl.gz beside GAME.rcg, as for {@code scenes convert GAME.rcg}. */
+    private static String commandLogBeside(HadoopFiles hadoop, String gameLog) throws IOException {
+        String directory = gameLog.contains("/") ? gameLog.substring(0, gameLog.lastIndexOf('/') + 1) : "";
+        String base = GameLogs.baseName(gameLog.substring(directory.length()));
+        for (String suffix : COMMAND_LOG_SUFFIXES) {
+            String candidate = directory + base + suffix;
+            if (hadoop.exists(candidate) && hadoop.serverLogKind(candidate) == ServerLogs.Kind.COMMAND) {
+                return candidate;
+            }
+        }
+        throw new UsageException("no command log beside " + gameLog + " (" + base + ".rcl): the scenes pair what"
+                + " each player saw with what it sent");
+    }
+
+    private static void addServerGame(Map<String, GameConversion.Game> games, Map<String, String> sources,
+                                      String gameLog, String commandLog) {
+        String name = GameLogs.baseName(gameLog.substring(gameLog.lastIndexOf('/') + 1));
+        String known = sources.putIfAbsent(name, gameLog);
+        if (known != null && !known.equals(gameLog)) {
+            throw new UsageException("two games are named " + name + " (" + known + " and " + gameLog
+                    + "); convert them separately, into different --out-dir");
+        }
+        games.putIfAbsent(name, GameConversion.Game.ofServerLogs(name, gameLog, commandLog));
+    }
+
     /** Adds logs to the game of a directory (its full path), named by the directory's name. */
-    private static void addGame(Map<String, GameConversion.Game> games, Map<String, String> directories, String directory,
+    private static void addGame(Map<String, GameConversion.Game> games, Map<String, String> sources, String directory,
                                 List<String> logs) {
         if (logs.isEmpty()) {
             return;
         }
         String name = gameName(directory);
-        String known = directories.putIfAbsent(name, directory);
+        String known = sources.putIfAbsent(name, directory);
         if (known != null && !known.equals(directory)) {
             throw new UsageException("two games are named " + name + " (" + known + " and " + directory
                     + "); convert them separately, into different --out-dir");
         }
-        GameConversion.Game game = games.computeIfAbsent(name, n -> new GameConversion.Game(n, new ArrayList<>()));
+        GameConversion.Game game = games.computeIfAbsent(name, n -> new GameConversion.Game(n, new ArrayList<>(), false));
         for (String log : logs) {
             if (!game.logs().contains(log)) {
                 game.logs().add(log);
@@ -186,18 +286,6 @@ final class ConvertCommand implements Callable<Integer> {
         String trimmed = directory.replaceFirst("/+$", "");
         String name = trimmed.substring(trimmed.lastIndexOf('/') + 1);
         return name.isEmpty() || name.equals(".") ? "game" : name;
-    }
-
-    private static List<String> logsIn(HadoopFiles hadoop, String directory) throws IOException {
-        List<String> logs = new ArrayList<>();
-        for (FileStatus status : hadoop.list(directory)) {
-            String name = status.getPath().getName();
-            String plain = name.endsWith(".gz") ? name.substring(0, name.length() - 3) : name;
-            if (status.isFile() && !name.startsWith(".") && Arrays.stream(LOG_SUFFIXES).anyMatch(plain::endsWith)) {
-                logs.add(directory + "/" + name);
-            }
-        }
-        return logs;
     }
 
     private Grid grid() {
