@@ -21,6 +21,8 @@ import org.scenes.convert.SceneConverter;
 import org.scenes.files.AtomicOutput;
 import org.scenes.scene.Grid;
 import org.scenes.scene.Scene;
+import org.scenes.options.GameLogOptions;
+import org.scenes.options.GridOptions;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -89,29 +91,12 @@ final class ConvertCommand implements Callable<Integer> {
         }
     }
 
-    @Option(names = "--team", paramLabel = "NAME", description = "Game logs: only this team's players.")
-    String team;
-
-    @Option(names = "--unum", paramLabel = "N", description = "Game logs: only players with this number.")
-    int unum;
-
-    @Option(names = "--fading", paramLabel = "dice|halfway", defaultValue = "dice",
-            description = {"Game logs: how a seen player's team and number (and changes) fade with distance: dice"
-                    + " (the server's probabilities; default) or halfway (shown below the halfway point, as the"
-                    + " simulator does)."})
-    String fading;
-
-    @Option(names = "--fading-seed", paramLabel = "N", defaultValue = "1", description = "Game logs: seed of the"
-            + " fading dice. Default: 1.")
-    long fadingSeed;
+    @Mixin
+    GameLogOptions gameLogOptions;
 
     @Option(names = "--threads", paramLabel = "N", description = "Game logs: threads rebuilding the players."
             + " Default: the number of cores.")
     int threads = Runtime.getRuntime().availableProcessors();
-
-    @Option(names = "--commands-first", description = {"Game logs: within a step, a player's commands came"
-            + " before its see (as in the simulator's own games), not after it (default)."})
-    boolean commandsFirst;
 
     private int warningsShown;
 

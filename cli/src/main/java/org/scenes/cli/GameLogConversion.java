@@ -12,7 +12,7 @@ import org.scenes.convert.GameLogConverter;
 import org.scenes.convert.GameSceneFiles;
 import org.scenes.gamelog.GameLogs;
 import org.scenes.scene.Grid;
-import org.scenes.vision.Fading;
+import org.scenes.options.GameLogOptions;
 
 /**
  * {@code scenes convert GAME.rcg [GAME.rcl]}: the options handed to core's {@link GameSceneFiles}
@@ -32,13 +32,8 @@ final class GameLogConversion {
     }
 
     int run(ConvertCommand options, Grid grid, PrintWriter out, PrintWriter err) throws IOException {
-        Fading fading = Fading.named(options.fading, options.fadingSeed);
-        if (fading == null) {
-            throw new UsageException("--fading: expected dice or halfway, not '" + options.fading + "'");
-        }
-        if (options.unum < 0 || options.unum > 11) {
-            throw new UsageException("--unum: a uniform number from 1 to 11, not " + options.unum);
-        }
+        GameLogOptions choice = options.gameLogOptions;
+        choice.check();
         Path single = options.output.file;
         Path directory = options.output.directory;
         if (directory != null) {
@@ -53,12 +48,11 @@ final class GameLogConversion {
             return single != null ? single : directory.resolve(key + ".json.gz");
         };
         long started = System.nanoTime();
-        GameSceneFiles.Written written = GameSceneFiles.write(new GameLogConverter(grid, options.pairing, fading,
-                GameLogConverter.only(options.team, options.unum), options.threads)
-                .commandsBeforeSee(options.commandsFirst), grid, logs, target);
+        GameSceneFiles.Written written = GameSceneFiles.write(new GameLogConverter(grid, options.pairing,
+                choice.fading(), choice.selected(), options.threads).commandsBeforeSee(choice.commandsFirst()), grid,
+                logs, target);
         if (written.result().players().isEmpty()) {
-            throw new UsageException("no player of " + logs.gameLog() + " is " + (options.team == null ? ""
-                    : "of team " + options.team + " ") + (options.unum == 0 ? "" : "number " + options.unum));
+            throw new UsageException(choice.noPlayer(logs.gameLog()));
         }
         for (String warning : written.result().warnings()) {
             err.println("scenes: warning: " + warning);

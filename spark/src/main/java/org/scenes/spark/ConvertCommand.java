@@ -15,9 +15,10 @@ import org.scenes.convert.DropReason;
 import org.scenes.convert.Pairing;
 import org.scenes.gamelog.GameLogs;
 import org.scenes.gamelog.ServerLogs;
-import org.scenes.scene.Grid;
-import org.scenes.vision.Fading;
+import org.scenes.options.GameLogOptions;
+import org.scenes.options.GridOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -52,13 +53,8 @@ final class ConvertCommand implements Callable<Integer> {
             description = "Where each game's scene files go: OUT/GAME/<log name>.json.gz.")
     String outDir;
 
-    @Option(names = "--grid", paramLabel = "CxR", defaultValue = "5x3",
-            description = "Columns (angle slices over [-45,45] degrees) x rows (distance rings); default ${DEFAULT-VALUE}.")
-    String gridText;
-
-    @Option(names = "--bounds", paramLabel = "D", split = ",", splitSynopsisLabel = ",",
-            description = "Ascending distances (m) separating the rows: rows - 1 values; default 1,5 for 3 rows.")
-    double[] bounds;
+    @Mixin
+    GridOptions gridOptions;
 
     @Option(names = "--strict", description = "A malformed line fails its log instead of being skipped.")
     boolean strict;
@@ -67,24 +63,8 @@ final class ConvertCommand implements Callable<Integer> {
             description = "How sees and actions become scenes, as for 'scenes convert' (default auto).")
     String pairing;
 
-    @Option(names = "--team", paramLabel = "NAME", description = "Game logs: only this team's players.")
-    String team;
-
-    @Option(names = "--unum", paramLabel = "N", description = "Game logs: only players with this number.")
-    int unum;
-
-    @Option(names = "--fading", paramLabel = "dice|halfway", defaultValue = "dice",
-            description = "Game logs: how a seen player's team and number fade with distance, as for 'scenes convert'"
-                    + " (default dice).")
-    String fading;
-
-    @Option(names = "--fading-seed", paramLabel = "N", defaultValue = "1",
-            description = "Game logs: seed of the fading dice. Default: 1.")
-    long fadingSeed;
-
-    @Option(names = "--commands-first", description = "Game logs: within a step, a player's commands came before"
-            + " its see (as in the simulator's own games), not after it (default).")
-    boolean commandsFirst;
+    @Mixin
+    GameLogOptions gameLogOptions;
 
     @Override
     public Integer call() throws IOException {
@@ -92,14 +72,10 @@ final class ConvertCommand implements Callable<Integer> {
         if (chosen == null) {
             throw new UsageException("--pairing must be see, cycle or auto, not '" + pairing + "'");
         }
-        if (Fading.named(fading, fadingSeed) == null) {
-            throw new UsageException("--fading: expected dice or halfway, not '" + fading + "'");
-        }
-        if (unum < 0 || unum > 11) {
-            throw new UsageException("--unum: a uniform number from 1 to 11, not " + unum);
-        }
-        GameConversion.Settings settings = GameConversion.Settings.of(grid(), chosen, strict,
-                new GameConversion.GameLogSettings(team, unum, fading, fadingSeed, commandsFirst));
+        GameLogOptions g = gameLogOptions;
+        g.check();
+        GameConversion.Settings settings = GameConversion.Settings.of(gridOptions.grid(), chosen, strict,
+                new GameConversion.GameLogSettings(g.team(), g.unum(), g.fadingName(), g.fadingSeed(), g.commandsFirst()));
         HadoopFiles hadoop = HadoopFiles.fromEnvironment();
         List<GameConversion.Game> games = games(hadoop);
         for (GameConversion.Game game : games) {
@@ -150,7 +126,7 @@ final class ConvertCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "%-22s %s%n", "Logs read", logs);
         out.printf(Locale.ROOT, "%-22s %s (%.1f MB of text)%n", "Lines read", lines, bytes / 1e6);
         out.printf(Locale.ROOT, "%-22s %s (%s repeated while paused, collapsed)%n", "See messages", sees, repeated);
-        out.printf(Locale.ROOT, "%-22s %s  (grid %s)%n", "Scenes written", scenes, grid().describe());
+        out.printf(Locale.ROOT, "%-22s %s  (grid %s)%n", "Scenes written", scenes, gridOptions.grid().describe());
         out.printf(Locale.ROOT, "%-22s %s%n", "Scenes dropped", dropped.values().stream().mapToLong(Long::longValue).sum());
         for (DropReason reason : DropReason.values()) {
             out.printf(Locale.ROOT, "  %-20s %s%n", reason.label(), dropped.getOrDefault(reason, 0L));
@@ -286,34 +262,5 @@ final class ConvertCommand implements Callable<Integer> {
         String trimmed = directory.replaceFirst("/+$", "");
         String name = trimmed.substring(trimmed.lastIndexOf('/') + 1);
         return name.isEmpty() || name.equals(".") ? "game" : name;
-    }
-
-    private Grid grid() {
-        int x = gridText.indexOf('x');
-        int columns;
-        int rows;
-        try {
-            columns = Integer.parseInt(gridText.substring(0, x < 0 ? gridText.length() : x).trim());
-            rows = x < 0 ? -1 : Integer.parseInt(gridText.substring(x + 1).trim());
-        } catch (NumberFormatException e) {
-            throw new UsageException("--grid must be COLUMNSxROWS, e.g. 5x3, not '" + gridText + "'");
-        }
-        double[] distances = bounds;
-        if (distances == null) {
-            if (rows != -1 && rows != 3) {
-                throw new UsageException("--grid " + gridText + " has " + rows + " rows: give --bounds with " + (rows - 1)
-                        + " distances");
-            }
-            distances = Grid.DEFAULT.bounds();
-        } else if (rows != -1 && distances.length != rows - 1) {
-            throw new UsageException("--grid " + gridText + " has " + rows + " rows but --bounds gives " + distances.length
-                    + " distances (need " + (rows - 1) + ")");
-        }
-        try {
-            return Grid.of(columns, distances);
-        } catch (IllegalArgumentException e) {
-            throw new UsageException("bad grid " + gridText + " with bounds " + Arrays.toString(distances) + ": "
-                    + e.getMessage());
-        }
     }
 }
