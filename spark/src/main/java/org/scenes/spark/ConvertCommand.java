@@ -82,67 +82,49 @@ final class ConvertCommand implements Callable<Integer> {
             GameConversion.outputNames(game); // two logs of a game with one name fail before any task runs
         }
         long started = System.nanoTime();
-        List<List<GameConversion.LogResult>> results;
+        ConvertSummary summary;
         try (JavaSparkContext spark = top.options.start("convert")) {
             String out = outDir;
-            results = spark.parallelize(games, games.size())
-                    .map(game -> GameConversion.convert(game, settings, out, GameConversion.outputNames(game))).collect();
+            ArrayList<GameConversion.Game> all = new ArrayList<>(games);
+            List<Integer> indices = java.util.stream.IntStream.range(0, all.size()).boxed().toList();
+            // each task sums its game; the sums are reduced on the executors, the driver gets one summary
+            summary = spark.parallelize(indices, all.size()).map(i -> {
+                GameConversion.Game game = all.get(i);
+                return ConvertSummary.of(i, GameConversion.convert(game, settings, out, GameConversion.outputNames(game)));
+            }).treeReduce(ConvertSummary::merge);
         }
-        return report(games, results, (System.nanoTime() - started) / 1e9);
+        return report(games.size(), summary, (System.nanoTime() - started) / 1e9);
     }
 
-    private int report(List<GameConversion.Game> games, List<List<GameConversion.LogResult>> results, double seconds) {
+    private int report(int games, ConvertSummary summary, double seconds) {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        long logs = 0;
-        long lines = 0;
-        long bytes = 0;
-        long sees = 0;
-        long repeated = 0;
-        long scenes = 0;
-        long malformed = 0;
-        Map<DropReason, Long> dropped = new LinkedHashMap<>();
-        List<String> failures = new ArrayList<>();
-        long written = 0;
-        for (List<GameConversion.LogResult> game : results) {
-            for (GameConversion.LogResult log : game) {
-                logs++;
-                lines += log.lines();
-                bytes += log.bytes();
-                sees += log.sees();
-                repeated += log.repeatedSees();
-                scenes += log.scenes();
-                malformed += log.malformed();
-                log.dropped().forEach((reason, count) -> dropped.merge(reason, count, Long::sum));
-                log.warnings().forEach(warning -> err.println("scenes-spark: warning: " + warning));
-                if (log.error() != null) {
-                    failures.add(log.error());
-                } else {
-                    written++;
-                }
-            }
+        summary.warnings.forEach(warning -> err.println("scenes-spark: warning: " + warning.text()));
+        if (summary.warningCount > summary.warnings.size()) {
+            err.printf("scenes-spark: warning: %d more warnings not shown%n", summary.warningCount - summary.warnings.size());
         }
-        out.printf(Locale.ROOT, "%-22s %s (one task each)%n", "Games", games.size());
-        out.printf(Locale.ROOT, "%-22s %s%n", "Logs read", logs);
-        out.printf(Locale.ROOT, "%-22s %s (%.1f MB of text)%n", "Lines read", lines, bytes / 1e6);
-        out.printf(Locale.ROOT, "%-22s %s (%s repeated while paused, collapsed)%n", "See messages", sees, repeated);
-        out.printf(Locale.ROOT, "%-22s %s  (grid %s)%n", "Scenes written", scenes, gridOptions.grid().describe());
-        out.printf(Locale.ROOT, "%-22s %s%n", "Scenes dropped", dropped.values().stream().mapToLong(Long::longValue).sum());
+        out.printf(Locale.ROOT, "%-22s %s (one task each)%n", "Games", games);
+        out.printf(Locale.ROOT, "%-22s %s%n", "Logs read", summary.logs);
+        out.printf(Locale.ROOT, "%-22s %s (%.1f MB of text)%n", "Lines read", summary.lines, summary.bytes / 1e6);
+        out.printf(Locale.ROOT, "%-22s %s (%s repeated while paused, collapsed)%n", "See messages", summary.sees,
+                summary.repeatedSees);
+        out.printf(Locale.ROOT, "%-22s %s  (grid %s)%n", "Scenes written", summary.scenes, gridOptions.grid().describe());
+        out.printf(Locale.ROOT, "%-22s %s%n", "Scenes dropped", summary.dropped());
         for (DropReason reason : DropReason.values()) {
-            out.printf(Locale.ROOT, "  %-20s %s%n", reason.label(), dropped.getOrDefault(reason, 0L));
+            out.printf(Locale.ROOT, "  %-20s %s%n", reason.label(), summary.dropped(reason));
         }
-        out.printf(Locale.ROOT, "%-22s %s%n", "Malformed lines", malformed);
-        out.printf(Locale.ROOT, "%-22s %s scene files under %s%n", "Written", written, outDir);
+        out.printf(Locale.ROOT, "%-22s %s%n", "Malformed lines", summary.malformed);
+        out.printf(Locale.ROOT, "%-22s %s scene files under %s%n", "Written", summary.written, outDir);
         out.printf(Locale.ROOT, "%-22s %.2f s%n", "Time", seconds);
         out.flush();
-        for (String failure : failures) {
-            err.println("scenes-spark: error: " + failure);
-        }
-        if (!failures.isEmpty()) {
-            err.printf("scenes-spark: error: %d of %d logs gave no scenes%n", failures.size(), logs);
+        summary.failures.forEach(failure -> err.println("scenes-spark: error: " + failure.text()));
+        if (summary.failureCount > 0) {
+            err.printf("scenes-spark: error: %d of %d logs gave no scenes%s%n", summary.failureCount, summary.logs,
+                    summary.failureCount > summary.failures.size() ? " (the first " + summary.failures.size() + " named)"
+                            : "");
         }
         err.flush();
-        return failures.isEmpty() ? 0 : 1;
+        return summary.failureCount == 0 ? 0 : 1;
     }
 
     /**

@@ -17,7 +17,6 @@ import org.scenes.experiment.Result;
 import org.scenes.experiment.ResultTable;
 import org.scenes.experiment.Sweep;
 import org.scenes.scene.SceneFile;
-import org.scenes.validate.Folds;
 import org.scenes.validate.MatchConfig;
 import org.scenes.options.SweepOptions;
 import picocli.CommandLine.Command;
@@ -58,7 +57,7 @@ final class ExperimentCommand implements Callable<Integer> {
         try (JavaSparkContext spark = top.options.start("experiment " + sweepOptions.sweepFile().getFileName());
              DistributedFolds folds = new DistributedFolds(spark, files, data, sweep.protocol(), top.options.registry(),
                      top.options.pluginDirectories())) {
-            Map<MatchConfig, Folds> validated = folds.run(configs);
+            Map<MatchConfig, List<Map<String, Double>>> validated = folds.figures(configs);
             List<Result> results = new ArrayList<>();
             for (int i = 0; i < configurations.size(); i++) {
                 results.add(new Result(configurations.get(i), FoldValidation.measures(validated.get(configs.get(i)))));
