@@ -48,7 +48,7 @@ final class GameLogConversion {
             return single != null ? single : directory.resolve(key + ".json.gz");
         };
         long started = System.nanoTime();
-        GameSceneFiles.Written written = GameSceneFiles.write(new GameLogConverter(grid, options.pairing,
+        GameSceneFiles.Written written = GameSceneFiles.write(new GameLogConverter(grid, options.pairingOptions.pairing(),
                 choice.fading(), choice.selected(), options.threads).commandsBeforeSee(choice.commandsFirst()), grid,
                 logs, target);
         if (written.result().players().isEmpty()) {

@@ -12,11 +12,11 @@ import java.util.concurrent.Callable;
 import org.apache.hadoop.fs.FileStatus;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.scenes.convert.DropReason;
-import org.scenes.convert.Pairing;
 import org.scenes.gamelog.GameLogs;
 import org.scenes.gamelog.ServerLogs;
 import org.scenes.options.GameLogOptions;
 import org.scenes.options.GridOptions;
+import org.scenes.options.PairingOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -56,25 +56,17 @@ final class ConvertCommand implements Callable<Integer> {
     @Mixin
     GridOptions gridOptions;
 
-    @Option(names = "--strict", description = "A malformed line fails its log instead of being skipped.")
-    boolean strict;
-
-    @Option(names = "--pairing", paramLabel = "see|cycle|auto", defaultValue = "auto",
-            description = "How sees and actions become scenes, as for 'scenes convert' (default auto).")
-    String pairing;
+    @Mixin
+    PairingOptions pairingOptions;
 
     @Mixin
     GameLogOptions gameLogOptions;
 
     @Override
     public Integer call() throws IOException {
-        Pairing chosen = Pairing.fromKey(pairing);
-        if (chosen == null) {
-            throw new UsageException("--pairing must be see, cycle or auto, not '" + pairing + "'");
-        }
         GameLogOptions g = gameLogOptions;
         g.check();
-        GameConversion.Settings settings = GameConversion.Settings.of(gridOptions.grid(), chosen, strict,
+        GameConversion.Settings settings = GameConversion.Settings.of(gridOptions.grid(), pairingOptions.pairing(), pairingOptions.strict(),
                 new GameConversion.GameLogSettings(g.team(), g.unum(), g.fadingName(), g.fadingSeed(), g.commandsFirst()));
         HadoopFiles hadoop = HadoopFiles.fromEnvironment();
         List<GameConversion.Game> games = games(hadoop);
