@@ -92,7 +92,6 @@ final class ExperimentCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
-
     /** The scene files, a directory standing for the .json and .json.gz files in it, sorted. */
     private static List<SceneFile> read(List<String> data) throws IOException {
         List<Path> paths = new ArrayList<>();

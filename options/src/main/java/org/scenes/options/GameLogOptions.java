@@ -78,6 +78,11 @@ public final class GameLogOptions {
 
     /** The error when no player of a game matches the choice. */
     public String noPlayer(Object gameLog) {
+        return noPlayer(gameLog, team, unum);
+    }
+
+    /** The error when no player of a game is of {@code team} (any when null) with number {@code unum} (any when 0). */
+    public static String noPlayer(Object gameLog, String team, int unum) {
         return "no player of " + gameLog + " is " + (team == null ? "" : "of team " + team + " ")
                 + (unum == 0 ? "" : "number " + unum);
     }

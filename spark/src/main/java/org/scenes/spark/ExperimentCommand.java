@@ -107,7 +107,6 @@ final class ExperimentCommand implements Callable<Integer> {
         return written;
     }
 
-
     /** The sweep's scene files, a directory standing for the .json and .json.gz files in it, sorted (as the local command). */
     static List<String> dataPaths(List<String> data, HadoopFiles hadoop) throws IOException {
         List<String> paths = new ArrayList<>();

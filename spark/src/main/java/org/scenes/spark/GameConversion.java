@@ -15,6 +15,7 @@ import org.scenes.convert.GameSceneFiles;
 import org.scenes.convert.Pairing;
 import org.scenes.convert.SceneConverter;
 import org.scenes.gamelog.GameLogs;
+import org.scenes.options.GameLogOptions;
 import org.scenes.scene.Grid;
 import org.scenes.scene.LazySceneFileWriter;
 import org.scenes.vision.Fading;
@@ -143,9 +144,8 @@ final class GameConversion {
         }
         ArrayList<String> warnings = new ArrayList<>(written.result().warnings());
         if (written.result().players().isEmpty()) {
-            return List.of(failed(gameLog, "no player of " + gameLog + " is " + (settings.gameLogs().team() == null ? ""
-                    : "of team " + settings.gameLogs().team() + " ") + (settings.gameLogs().unum() == 0 ? ""
-                    : "number " + settings.gameLogs().unum()), warnings));
+            return List.of(failed(gameLog, GameLogOptions.noPlayer(gameLog, settings.gameLogs().team(),
+                    settings.gameLogs().unum()), warnings));
         }
         if (written.scenes() == 0) {
             return List.of(failed(gameLog, "no scenes from " + gameLog + " and " + commandLog
