@@ -16,11 +16,13 @@ import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.convert.ConversionReport;
 import org.scenes.convert.DropReason;
 import org.scenes.convert.MalformedLine;
-import org.scenes.convert.Pairing;
 import org.scenes.convert.SceneConverter;
 import org.scenes.files.AtomicOutput;
 import org.scenes.scene.Grid;
 import org.scenes.scene.Scene;
+import org.scenes.options.GameLogOptions;
+import org.scenes.options.GridOptions;
+import org.scenes.options.PairingOptions;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -68,50 +70,15 @@ final class ConvertCommand implements Callable<Integer> {
     @Mixin
     GridOptions gridOptions;
 
-    @Option(names = "--strict", description = "Stop at the first malformed line instead of skipping it.")
-    boolean strict;
+    @Mixin
+    PairingOptions pairingOptions;
 
-    @Option(names = "--pairing", paramLabel = "see|cycle|auto", defaultValue = "auto",
-            converter = PairingConverter.class,
-            description = {"How sees and actions become scenes: see (a scene per see, the classic rule),"
-                    + " cycle (a scene per cycle with the latest see and its age, for players that act every cycle),"
-                    + " auto (cycle once the server confirms synchronous vision with (ok synch_see); default)."})
-    Pairing pairing;
-
-    static final class PairingConverter implements picocli.CommandLine.ITypeConverter<Pairing> {
-        @Override
-        public Pairing convert(String value) {
-            Pairing pairing = Pairing.fromKey(value);
-            if (pairing == null) {
-                throw new picocli.CommandLine.TypeConversionException("expected see, cycle or auto, not '" + value + "'");
-            }
-            return pairing;
-        }
-    }
-
-    @Option(names = "--team", paramLabel = "NAME", description = "Game logs: only this team's players.")
-    String team;
-
-    @Option(names = "--unum", paramLabel = "N", description = "Game logs: only players with this number.")
-    int unum;
-
-    @Option(names = "--fading", paramLabel = "dice|halfway", defaultValue = "dice",
-            description = {"Game logs: how a seen player's team and number (and changes) fade with distance: dice"
-                    + " (the server's probabilities; default) or halfway (shown below the halfway point, as the"
-                    + " simulator does)."})
-    String fading;
-
-    @Option(names = "--fading-seed", paramLabel = "N", defaultValue = "1", description = "Game logs: seed of the"
-            + " fading dice. Default: 1.")
-    long fadingSeed;
+    @Mixin
+    GameLogOptions gameLogOptions;
 
     @Option(names = "--threads", paramLabel = "N", description = "Game logs: threads rebuilding the players."
             + " Default: the number of cores.")
     int threads = Runtime.getRuntime().availableProcessors();
-
-    @Option(names = "--commands-first", description = {"Game logs: within a step, a player's commands came"
-            + " before its see (as in the simulator's own games), not after it (default)."})
-    boolean commandsFirst;
 
     private int warningsShown;
 
@@ -128,7 +95,8 @@ final class ConvertCommand implements Callable<Integer> {
         if (game != null) {
             return game.run(this, grid, spec.commandLine().getOut(), err);
         }
-        SceneConverter converter = new SceneConverter(grid, pairing, strict, line -> warn(err, line));
+        SceneConverter converter = new SceneConverter(grid, pairingOptions.pairing(), pairingOptions.strict(),
+                line -> warn(err, line));
         ConversionReport total = new ConversionReport();
         List<Path> written = new java.util.concurrent.CopyOnWriteArrayList<>();
         int failed = 0;

@@ -22,12 +22,11 @@ import org.scenes.experiment.Sweep;
 import org.scenes.files.AtomicOutput;
 import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.SceneFile;
-import org.scenes.script.ScriptFailure;
-import org.scenes.script.Sweeps;
+import org.scenes.options.SweepOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
 import org.scenes.files.CsvTables;
@@ -45,15 +44,8 @@ final class ExperimentCommand implements Callable<Integer> {
     @ParentCommand
     ScenesCommand top;
 
-    @Parameters(paramLabel = "SWEEP.groovy", description = "The sweep script.")
-    Path sweepFile;
-
-    @Option(names = {"-o", "--out-dir"}, paramLabel = "DIR",
-            description = "Where NAME.csv, NAME.json, NAME.md and NAME.svg go (default: the sweep script's directory).")
-    Path outDir;
-
-    @Option(names = "--name", paramLabel = "NAME", description = "Base name of the result files (default: the script's name).")
-    String name;
+    @Mixin
+    SweepOptions sweepOptions;
 
     @Option(names = "--threads", paramLabel = "N",
             description = "Configurations validated at once (default: the number of cores).")
@@ -65,7 +57,7 @@ final class ExperimentCommand implements Callable<Integer> {
         if (workers < 1) {
             throw new UsageException("--threads must be at least 1, not " + workers);
         }
-        Sweep sweep = load();
+        Sweep sweep = sweepOptions.load();
         List<SceneFile> files = read(sweep.data());
         PluginRegistry registry = top.global.registry();
         List<Configuration> configurations = sweep.configurations();
@@ -81,10 +73,9 @@ final class ExperimentCommand implements Callable<Integer> {
             table = Experiment.run(sweep, validation, parallelQueries ? 1 : workers, () -> { });
         }
         table.checkMeasures();
-        String base = name != null ? name : sweepFile.getFileName().toString().replaceFirst("\\.groovy$", "");
-        Path directory = outDir != null ? outDir : sweepFile.toAbsolutePath().getParent();
-        String command = "scenes experiment " + sweepFile + (outDir == null ? "" : " --out-dir " + outDir)
-                + (name == null ? "" : " --name " + name);
+        String base = sweepOptions.baseName();
+        Path directory = Path.of(sweepOptions.outDir());
+        String command = sweepOptions.command("scenes");
         Path csv = directory.resolve(base + ".csv");
         Path json = directory.resolve(base + ".json");
         Path markdown = directory.resolve(base + ".md");
@@ -99,15 +90,6 @@ final class ExperimentCommand implements Callable<Integer> {
         out.printf("%nWritten %s, %s, %s, %s%n", csv, json, markdown, chart);
         out.flush();
         return ExitCodes.OK;
-    }
-
-    private Sweep load() {
-        try {
-            return Sweeps.load(sweepFile.toString());
-        } catch (ScriptFailure e) {
-            // a sweep script describes the run: its failure is a bad command line, like a bad option
-            throw new UsageException(e.getMessage());
-        }
     }
 
     /** The scene files, a directory standing for the .json and .json.gz files in it, sorted. */

@@ -16,7 +16,9 @@ import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.validate.MatchConfig;
 import org.scenes.validate.RandomSearch;
 import org.scenes.validate.Tuner;
+import org.scenes.options.TuneOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParentCommand;
@@ -40,22 +42,8 @@ final class TuneCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output"}, paramLabel = "CONFIG.json", required = true, description = "Where to write the configuration.")
     Path output;
 
-    @Option(names = "--seed", paramLabel = "S", description = "Seed of every random choice (default 1).")
-    long seed = 1;
-
-    @Option(names = "--sweeps", paramLabel = "N", description = "Passes over the search dimensions (default 2).")
-    int sweeps = 2;
-
-    @Option(names = "--protocol", paramLabel = "leave-one-out|next",
-            description = "Cross-validation: each file against all others (default) or against the next one, as the thesis did.")
-    String protocol = "leave-one-out";
-
-    @Option(names = "--objective", paramLabel = "mean|accuracy|direction|macro-f1",
-            description = "What to maximise: the mean of accuracy, action-with-direction accuracy and macro F1 (default), or one of them.")
-    String objective = "mean";
-
-    @Option(names = "--quiet", description = "Do not print each configuration tried.")
-    boolean quiet;
+    @Mixin
+    TuneOptions tuning;
 
     @Option(names = "--search", paramLabel = "descent|random",
             description = {"descent (default): coordinate descent over a few families;",
@@ -74,9 +62,7 @@ final class TuneCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        if (sweeps < 1) {
-            throw new UsageException("--sweeps must be at least 1");
-        }
+        int sweeps = tuning.sweeps();
         OutputPaths.checkFile("-o", output);
         if (!search.equals("descent") && !search.equals("random")) {
             throw new UsageException("--search must be descent or random, not " + search);
@@ -93,42 +79,22 @@ final class TuneCommand implements Callable<Integer> {
             files.add(SceneFileReader.read(path));
         }
         PrintWriter out = spec.commandLine().getOut();
-        Folds.Protocol chosen = Folds.Protocol.fromKey(protocol);
-        if (chosen == null) {
-            throw new UsageException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
-        }
-        Tuner.Objective goal = switch (objective) {
-            case "mean" -> Tuner.Objective.MEAN;
-            case "accuracy" -> Tuner.Objective.ACCURACY;
-            case "direction" -> Tuner.Objective.DIRECTION;
-            case "macro-f1" -> Tuner.Objective.MACRO_F1;
-            default -> throw new UsageException("--objective must be mean, accuracy, direction or macro-f1, not " + objective);
-        };
+        Folds.Protocol chosen = tuning.protocol();
+        Tuner.Objective goal = tuning.objective();
         if (search.equals("random")) {
             return random(files, chosen, goal, limit, out);
         }
-        Tuner tuner = new Tuner(files, top.global.registry(), chosen, goal, quiet ? null : line -> {
+        Tuner tuner = new Tuner(files, top.global.registry(), chosen, goal, tuning.quiet() ? null : line -> {
             out.println(line);
             out.flush();
         });
-        Tuner.Result result = tuner.tune(MatchConfig.DEFAULT.withSeed(seed), Tuner.defaultSearch(), sweeps);
+        Tuner.Result result = tuner.tune(MatchConfig.DEFAULT.withSeed(tuning.seed()), Tuner.defaultSearch(), sweeps);
         if (table != null) {
             TriedTable.write(table, tuner.tried());
         }
-        Map<String, Object> score = new LinkedHashMap<>();
-        score.put("score", result.score());
-        score.put("protocol", protocol);
-        score.put("objective", objective);
-        score.put("scoreFormula", objective.equals("mean")
-                ? "(accuracy + action-with-direction accuracy + macro F1) / 3 over the decisions of all folds"
-                : objective + " over the decisions of all folds");
-        score.put("figures", result.figures());
-        score.put("configurationsTried", result.evaluated());
-        score.put("trainFiles", train.stream().map(Path::toString).toList());
+        Map<String, Object> score = tuning.crossValidation(result, train.stream().map(Path::toString).toList());
         ConfigFiles.write(output, result.config(), Map.of("crossValidation", score));
-        out.printf("Best of %d configurations: %s%n", result.evaluated(), result.config().describe());
-        out.printf("Cross-validation score %.4f (accuracy %.4f, with direction %.4f, macro F1 %.4f)%n", result.score(),
-                result.figures().get("accuracy"), result.figures().get("directionAccuracy"), result.figures().get("macroF1"));
+        TuneOptions.printBest(out, result);
         out.println("Written to " + output);
         out.flush();
         return ExitCodes.OK;
@@ -166,10 +132,10 @@ final class TuneCommand implements Callable<Integer> {
         long startNanos = System.nanoTime();
         long deadline = limit.nanos() == Long.MAX_VALUE ? Long.MAX_VALUE : startNanos + limit.nanos();
         RandomSearch.Result result;
-        try (ProgressBar bar = System.console() == null || quiet ? null
+        try (ProgressBar bar = System.console() == null || tuning.quiet() ? null
                 : new ProgressBarBuilder().setTaskName("Tuning").setInitialMax(1).setUnit(" configurations", 1)
                         .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build()) {
-            result = searcher.run(MatchConfig.DEFAULT.withSeed(seed), seed, limit.configurations(), deadline,
+            result = searcher.run(MatchConfig.DEFAULT.withSeed(tuning.seed()), tuning.seed(), limit.configurations(), deadline,
                     bar == null ? null : (done, planned, best) -> {
                         synchronized (bar) {
                             bar.maxHint(Math.max(planned, done));
@@ -185,8 +151,8 @@ final class TuneCommand implements Callable<Integer> {
         long distinct = result.table().stream().map(RandomSearch.Tried::config).distinct().count();
         Map<String, Object> score = new LinkedHashMap<>();
         score.put("score", result.score());
-        score.put("protocol", protocol);
-        score.put("objective", objective);
+        score.put("protocol", tuning.protocolName());
+        score.put("objective", tuning.objectiveName());
         score.put("search", "random search with successive halving");
         score.put("figures", result.figures());
         score.put("configurationsTried", distinct);

@@ -3,7 +3,6 @@ package org.scenes.experiment;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.function.ToDoubleFunction;
 import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.SceneFile;
 import org.scenes.validate.Folds;
@@ -66,14 +65,30 @@ public final class FoldValidation implements Experiment.Validation {
 
     /** Each figure's mean over the folds, and the accuracy's standard deviation; no timing. */
     public static Map<String, Double> measures(Folds folds) {
+        return measures(folds.reports().stream().map(FoldValidation::figures).toList());
+    }
+
+    /** A fold's figures, as {@link Folds#figures()} names them: all that {@link #measures(List)} needs of it. */
+    public static Map<String, Double> figures(ValidationReport fold) {
+        Map<String, Double> figures = new LinkedHashMap<>();
+        Folds.figures().forEach((name, figure) -> figures.put(name, figure.applyAsDouble(fold)));
+        return figures;
+    }
+
+    /**
+     * {@link #measures(Folds)} from each fold's {@link #figures}, in fold order, so a run that
+     * computes the figures where the fold ran collects a few numbers a fold, not its decisions.
+     */
+    public static Map<String, Double> measures(List<Map<String, Double>> folds) {
         Map<String, Double> measures = new LinkedHashMap<>();
-        for (Map.Entry<String, ToDoubleFunction<ValidationReport>> figure : Folds.figures().entrySet()) {
-            if (figure.getKey().equals(TIMING)) {
+        for (String figure : Folds.figures().keySet()) {
+            if (figure.equals(TIMING)) {
                 continue;
             }
-            measures.put(figure.getKey(), folds.mean(figure.getValue()));
-            if (figure.getKey().equals("accuracy")) {
-                measures.put("accuracyStd", folds.std(figure.getValue()));
+            double[] byFold = folds.stream().mapToDouble(fold -> fold.get(figure)).toArray();
+            measures.put(figure, Folds.mean(byFold));
+            if (figure.equals("accuracy")) {
+                measures.put("accuracyStd", Folds.std(byFold));
             }
         }
         return measures;

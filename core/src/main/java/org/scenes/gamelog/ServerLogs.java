@@ -22,13 +22,18 @@ public final class ServerLogs {
 
     /** The kind of server log {@code file} is, or null when it is neither (e.g. a player's log). */
     public static Kind detect(Path file) throws IOException {
+        try (InputStream in = Inputs.open(file)) {
+            return detect(in);
+        }
+    }
+
+    /** The kind of server log a stream (already decompressed) starts, or null; reads its first bytes. */
+    public static Kind detect(InputStream in) throws IOException {
         byte[] head = new byte[PEEK];
         int length = 0;
-        try (InputStream in = Inputs.open(file)) {
-            int read;
-            while (length < PEEK && (read = in.read(head, length, PEEK - length)) > 0) {
-                length += read;
-            }
+        int read;
+        while (length < PEEK && (read = in.read(head, length, PEEK - length)) > 0) {
+            length += read;
         }
         int start = 0;
         while (start < length && Character.isWhitespace(head[start])) {

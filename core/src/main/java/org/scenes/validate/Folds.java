@@ -138,12 +138,22 @@ public final class Folds {
     }
 
     public double mean(ToDoubleFunction<ValidationReport> figure) {
-        return reports.stream().mapToDouble(figure).filter(v -> !Double.isNaN(v)).average().orElse(Double.NaN);
+        return mean(reports.stream().mapToDouble(figure).toArray());
     }
 
     /** Sample standard deviation over the folds where the figure is defined. */
     public double std(ToDoubleFunction<ValidationReport> figure) {
-        double[] values = reports.stream().mapToDouble(figure).filter(v -> !Double.isNaN(v)).toArray();
+        return std(reports.stream().mapToDouble(figure).toArray());
+    }
+
+    /** The mean of a figure's values over the folds (in fold order) where it is defined. */
+    public static double mean(double[] byFold) {
+        return java.util.Arrays.stream(byFold).filter(v -> !Double.isNaN(v)).average().orElse(Double.NaN);
+    }
+
+    /** The sample standard deviation of a figure's values over the folds (in fold order) where it is defined. */
+    public static double std(double[] byFold) {
+        double[] values = java.util.Arrays.stream(byFold).filter(v -> !Double.isNaN(v)).toArray();
         if (values.length < 2) {
             return 0;
         }

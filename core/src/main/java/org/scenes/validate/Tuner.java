@@ -27,6 +27,29 @@ public final class Tuner {
 
     /** The chosen configuration, its cross-validation score and the figures behind it. */
     public record Result(MatchConfig config, double score, Map<String, Double> figures, int evaluated) {
+        /** A descent's end, with the figures of its best configuration's pooled report. */
+        public static Result of(Descent descent, ValidationReport pooled, int evaluated) {
+            Map<String, Double> figures = new java.util.LinkedHashMap<>();
+            Folds.figures().forEach((name, figure) -> figures.put(name, figure.applyAsDouble(pooled)));
+            return new Result(descent.best(), descent.score(), figures, evaluated);
+        }
+    }
+
+    /**
+     * Scores configurations for {@link #descend}: the local tuner validates them one at a time; one
+     * that validates on many machines may validate the variants it is told of ahead all at once.
+     */
+    @FunctionalInterface
+    public interface Evaluation {
+        double score(MatchConfig config);
+
+        /** The configurations the descent is about to score; nothing is done ahead by default. */
+        default void ahead(List<MatchConfig> configurations) {
+        }
+    }
+
+    /** Where a descent ends: the best configuration and its score. */
+    public record Descent(MatchConfig best, double score) {
     }
 
     private final List<SceneFile> files;
@@ -48,7 +71,7 @@ public final class Tuner {
         DIRECTION,
         MACRO_F1;
 
-        double of(ValidationReport pooled) {
+        public double of(ValidationReport pooled) {
             return switch (this) {
                 case MEAN -> score(pooled);
                 case ACCURACY -> pooled.accuracy();
@@ -103,15 +126,29 @@ public final class Tuner {
     }
 
     public Result tune(MatchConfig start, List<Dimension> dimensions, int sweeps) {
+        Descent descent = descend(start, dimensions, sweeps, this::evaluate);
+        return Result.of(descent, folds.get(descent.best()).pooled(), scores.size());
+    }
+
+    /**
+     * The coordinate descent: each dimension's variants applied to the best configuration so far,
+     * a variant kept only when strictly better; before each dimension the evaluation is told the
+     * variants of the best at the dimension's start.
+     */
+    public static Descent descend(MatchConfig start, List<Dimension> dimensions, int sweeps, Evaluation evaluation) {
         // start from the first variant of the first dimension: the bare start may be slow and is rarely a contender
         MatchConfig best = dimensions.isEmpty() ? start : dimensions.get(0).variants().get(0).apply(start);
-        double bestScore = evaluate(best);
+        if (!dimensions.isEmpty()) {
+            evaluation.ahead(variants(dimensions.get(0), best));
+        }
+        double bestScore = evaluation.score(best);
         for (int sweep = 0; sweep < sweeps; sweep++) {
             boolean improved = false;
             for (Dimension dimension : dimensions) {
+                evaluation.ahead(variants(dimension, best));
                 for (UnaryOperator<MatchConfig> variant : dimension.variants()) {
                     MatchConfig candidate = variant.apply(best);
-                    double score = evaluate(candidate);
+                    double score = evaluation.score(candidate);
                     // strictly better only: ties keep the earlier, simpler configuration
                     if (score > bestScore + 1e-9) {
                         best = candidate;
@@ -124,10 +161,11 @@ public final class Tuner {
                 break;
             }
         }
-        ValidationReport pooled = folds.get(best).pooled();
-        Map<String, Double> figures = new java.util.LinkedHashMap<>();
-        Folds.figures().forEach((name, figure) -> figures.put(name, figure.applyAsDouble(pooled)));
-        return new Result(best, bestScore, figures, scores.size());
+        return new Descent(best, bestScore);
+    }
+
+    private static List<MatchConfig> variants(Dimension dimension, MatchConfig config) {
+        return dimension.variants().stream().map(variant -> variant.apply(config)).toList();
     }
 
     /** The built-in search: metric family and its weights, memory, k and selector. */

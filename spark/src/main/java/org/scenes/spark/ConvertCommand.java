@@ -12,9 +12,13 @@ import java.util.concurrent.Callable;
 import org.apache.hadoop.fs.FileStatus;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.scenes.convert.DropReason;
-import org.scenes.convert.Pairing;
-import org.scenes.scene.Grid;
+import org.scenes.gamelog.GameLogs;
+import org.scenes.gamelog.ServerLogs;
+import org.scenes.options.GameLogOptions;
+import org.scenes.options.GridOptions;
+import org.scenes.options.PairingOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -23,13 +27,17 @@ import picocli.CommandLine.Spec;
 
 /** {@code scenes-spark convert}: player logs to scene files as a Spark job, one task per game. */
 @Command(name = "convert", mixinStandardHelpOptions = true, sortOptions = false,
-        description = "Convert player logs into scene files as 'scenes convert --out-dir' does, as a Spark job with "
-                + "one task per game. A game is a directory of player logs: each directory given, and each of its "
-                + "subdirectories, that holds logs (.lsf, .log, .txt, gzip or not); a log given by name belongs to "
-                + "the game of its directory. OUT/GAME/<log name>.json.gz appear only when complete; paths may be "
-                + "any Hadoop-compatible file system (hdfs://, s3a://, file://; no scheme: the local disk).")
+        description = {"Convert player logs or the server's game logs into scene files as 'scenes convert --out-dir'"
+                + " does, as a Spark job with one task per game. A game is a directory of player logs (each directory"
+                + " given, and each of its subdirectories, that holds logs: .lsf, .log, .txt, gzip or not; a log given"
+                + " by name belongs to the game of its directory), written as OUT/GAME/<log name>.json.gz;"
+                + " or a game log (GAME.rcg, in those directories or given by name, told by content) with the"
+                + " command log beside it (GAME.rcl; .gz or not), written as OUT/GAME/TEAM_UNUM.json.gz.",
+                "Scene files appear only when complete; paths may be any Hadoop-compatible file system (hdfs://,"
+                        + " s3a://, file://; no scheme: the local disk)."})
 final class ConvertCommand implements Callable<Integer> {
     private static final String[] LOG_SUFFIXES = {".lsf", ".log", ".txt"};
+    private static final String[] COMMAND_LOG_SUFFIXES = {".rcl", ".rcl.gz"};
 
     @Spec
     CommandSpec spec;
@@ -37,144 +45,186 @@ final class ConvertCommand implements Callable<Integer> {
     @ParentCommand
     SparkCommand top;
 
-    @Parameters(paramLabel = "LOG|DIR", arity = "1..*", description = "Player logs, or directories of games.")
+    @Parameters(paramLabel = "LOG|DIR", arity = "1..*",
+            description = "Player logs, game logs (GAME.rcg beside GAME.rcl), or directories of games.")
     List<String> inputs;
 
     @Option(names = "--out-dir", paramLabel = "OUT", required = true,
             description = "Where each game's scene files go: OUT/GAME/<log name>.json.gz.")
     String outDir;
 
-    @Option(names = "--grid", paramLabel = "CxR", defaultValue = "5x3",
-            description = "Columns (angle slices over [-45,45] degrees) x rows (distance rings); default ${DEFAULT-VALUE}.")
-    String gridText;
+    @Mixin
+    GridOptions gridOptions;
 
-    @Option(names = "--bounds", paramLabel = "D", split = ",", splitSynopsisLabel = ",",
-            description = "Ascending distances (m) separating the rows: rows - 1 values; default 1,5 for 3 rows.")
-    double[] bounds;
+    @Mixin
+    PairingOptions pairingOptions;
 
-    @Option(names = "--strict", description = "A malformed line fails its log instead of being skipped.")
-    boolean strict;
-
-    @Option(names = "--pairing", paramLabel = "see|cycle|auto", defaultValue = "auto",
-            description = "How sees and actions become scenes, as for 'scenes convert' (default auto).")
-    String pairing;
+    @Mixin
+    GameLogOptions gameLogOptions;
 
     @Override
     public Integer call() throws IOException {
-        Pairing chosen = Pairing.fromKey(pairing);
-        if (chosen == null) {
-            throw new UsageException("--pairing must be see, cycle or auto, not '" + pairing + "'");
-        }
-        GameConversion.Settings settings = GameConversion.Settings.of(grid(), chosen, strict);
+        GameLogOptions g = gameLogOptions;
+        g.check();
+        GameConversion.Settings settings = GameConversion.Settings.of(gridOptions.grid(), pairingOptions.pairing(), pairingOptions.strict(),
+                new GameConversion.GameLogSettings(g.team(), g.unum(), g.fadingName(), g.fadingSeed(), g.commandsFirst()));
         HadoopFiles hadoop = HadoopFiles.fromEnvironment();
         List<GameConversion.Game> games = games(hadoop);
         for (GameConversion.Game game : games) {
             GameConversion.outputNames(game); // two logs of a game with one name fail before any task runs
         }
         long started = System.nanoTime();
-        List<List<GameConversion.LogResult>> results;
+        ConvertSummary summary;
         try (JavaSparkContext spark = top.options.start("convert")) {
             String out = outDir;
-            results = spark.parallelize(games, games.size())
-                    .map(game -> GameConversion.convert(game, settings, out, GameConversion.outputNames(game))).collect();
+            ArrayList<GameConversion.Game> all = new ArrayList<>(games);
+            List<Integer> indices = java.util.stream.IntStream.range(0, all.size()).boxed().toList();
+            // each task sums its game; the sums are reduced on the executors, the driver gets one summary
+            summary = spark.parallelize(indices, all.size()).map(i -> {
+                GameConversion.Game game = all.get(i);
+                return ConvertSummary.of(i, GameConversion.convert(game, settings, out, GameConversion.outputNames(game)));
+            }).treeReduce(ConvertSummary::merge);
         }
-        return report(games, results, (System.nanoTime() - started) / 1e9);
+        return report(games.size(), summary, (System.nanoTime() - started) / 1e9);
     }
 
-    private int report(List<GameConversion.Game> games, List<List<GameConversion.LogResult>> results, double seconds) {
+    private int report(int games, ConvertSummary summary, double seconds) {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        long logs = 0;
-        long lines = 0;
-        long bytes = 0;
-        long sees = 0;
-        long repeated = 0;
-        long scenes = 0;
-        long malformed = 0;
-        Map<DropReason, Long> dropped = new LinkedHashMap<>();
-        List<String> failures = new ArrayList<>();
-        long written = 0;
-        for (List<GameConversion.LogResult> game : results) {
-            for (GameConversion.LogResult log : game) {
-                logs++;
-                lines += log.lines();
-                bytes += log.bytes();
-                sees += log.sees();
-                repeated += log.repeatedSees();
-                scenes += log.scenes();
-                malformed += log.malformed();
-                log.dropped().forEach((reason, count) -> dropped.merge(reason, count, Long::sum));
-                log.warnings().forEach(warning -> err.println("scenes-spark: warning: " + warning));
-                if (log.error() != null) {
-                    failures.add(log.error());
-                } else {
-                    written++;
-                }
-            }
+        summary.warnings.forEach(warning -> err.println("scenes-spark: warning: " + warning.text()));
+        if (summary.warningCount > summary.warnings.size()) {
+            err.printf("scenes-spark: warning: %d more warnings not shown%n", summary.warningCount - summary.warnings.size());
         }
-        out.printf(Locale.ROOT, "%-22s %s (one task each)%n", "Games", games.size());
-        out.printf(Locale.ROOT, "%-22s %s%n", "Logs read", logs);
-        out.printf(Locale.ROOT, "%-22s %s (%.1f MB of text)%n", "Lines read", lines, bytes / 1e6);
-        out.printf(Locale.ROOT, "%-22s %s (%s repeated while paused, collapsed)%n", "See messages", sees, repeated);
-        out.printf(Locale.ROOT, "%-22s %s  (grid %s)%n", "Scenes written", scenes, grid().describe());
-        out.printf(Locale.ROOT, "%-22s %s%n", "Scenes dropped", dropped.values().stream().mapToLong(Long::longValue).sum());
+        out.printf(Locale.ROOT, "%-22s %s (one task each)%n", "Games", games);
+        out.printf(Locale.ROOT, "%-22s %s%n", "Logs read", summary.logs);
+        out.printf(Locale.ROOT, "%-22s %s (%.1f MB of text)%n", "Lines read", summary.lines, summary.bytes / 1e6);
+        out.printf(Locale.ROOT, "%-22s %s (%s repeated while paused, collapsed)%n", "See messages", summary.sees,
+                summary.repeatedSees);
+        out.printf(Locale.ROOT, "%-22s %s  (grid %s)%n", "Scenes written", summary.scenes, gridOptions.grid().describe());
+        out.printf(Locale.ROOT, "%-22s %s%n", "Scenes dropped", summary.dropped());
         for (DropReason reason : DropReason.values()) {
-            out.printf(Locale.ROOT, "  %-20s %s%n", reason.label(), dropped.getOrDefault(reason, 0L));
+            out.printf(Locale.ROOT, "  %-20s %s%n", reason.label(), summary.dropped(reason));
         }
-        out.printf(Locale.ROOT, "%-22s %s%n", "Malformed lines", malformed);
-        out.printf(Locale.ROOT, "%-22s %s scene files under %s%n", "Written", written, outDir);
+        out.printf(Locale.ROOT, "%-22s %s%n", "Malformed lines", summary.malformed);
+        out.printf(Locale.ROOT, "%-22s %s scene files under %s%n", "Written", summary.written, outDir);
         out.printf(Locale.ROOT, "%-22s %.2f s%n", "Time", seconds);
         out.flush();
-        for (String failure : failures) {
-            err.println("scenes-spark: error: " + failure);
-        }
-        if (!failures.isEmpty()) {
-            err.printf("scenes-spark: error: %d of %d logs gave no scenes%n", failures.size(), logs);
+        summary.failures.forEach(failure -> err.println("scenes-spark: error: " + failure.text()));
+        if (summary.failureCount > 0) {
+            err.printf("scenes-spark: error: %d of %d logs gave no scenes%s%n", summary.failureCount, summary.logs,
+                    summary.failureCount > summary.failures.size() ? " (the first " + summary.failures.size() + " named)"
+                            : "");
         }
         err.flush();
-        return failures.isEmpty() ? 0 : 1;
+        return summary.failureCount == 0 ? 0 : 1;
     }
 
-    /** The games of the inputs, in the order given, each named by its directory. */
+    /**
+     * The games of the inputs, in the order given: the player logs of a directory, named by the
+     * directory, and each game log, named by its file without {@code .rcg} and {@code .gz}.
+     */
     private List<GameConversion.Game> games(HadoopFiles hadoop) throws IOException {
         Map<String, GameConversion.Game> games = new LinkedHashMap<>();
-        Map<String, String> directories = new LinkedHashMap<>();
+        Map<String, String> sources = new LinkedHashMap<>();
+        List<String> commandLogs = new ArrayList<>();
         for (String input : inputs) {
             if (hadoop.isDirectory(input)) {
                 String directory = input.replaceFirst("/+$", "");
-                addGame(games, directories, hadoop.path(directory).toString(), logsIn(hadoop, directory));
+                addDirectory(hadoop, games, sources, directory);
                 for (FileStatus status : hadoop.list(directory)) {
                     if (status.isDirectory() && !status.getPath().getName().startsWith(".")) {
-                        String sub = directory + "/" + status.getPath().getName();
-                        addGame(games, directories, hadoop.path(sub).toString(), logsIn(hadoop, sub));
+                        addDirectory(hadoop, games, sources, directory + "/" + status.getPath().getName());
                     }
                 }
             } else if (hadoop.exists(input)) {
-                String path = hadoop.path(input).toString();
-                addGame(games, directories, path.substring(0, path.lastIndexOf('/')), List.of(input));
+                ServerLogs.Kind kind = hadoop.serverLogKind(input);
+                if (kind == ServerLogs.Kind.GAME) {
+                    addServerGame(games, sources, input, commandLogBeside(hadoop, input));
+                } else if (kind == ServerLogs.Kind.COMMAND) {
+                    commandLogs.add(input);
+                } else {
+                    String path = hadoop.path(input).toString();
+                    addGame(games, sources, path.substring(0, path.lastIndexOf('/')), List.of(input));
+                }
             } else {
                 throw new UsageException("no such log or directory: " + input);
             }
         }
+        for (String commandLog : commandLogs) {
+            boolean paired = false;
+            for (GameConversion.Game game : games.values()) {
+                paired |= game.serverLogs() && hadoop.path(game.logs().get(1)).equals(hadoop.path(commandLog));
+            }
+            if (!paired) {
+                throw new UsageException(commandLog + " is a command log: give its game log (GAME.rcg beside"
+                        + " GAME.rcl)");
+            }
+        }
         if (games.isEmpty()) {
-            throw new UsageException("no player logs (.lsf, .log, .txt, gzip or not) in " + String.join(", ", inputs));
+            throw new UsageException("no player logs (.lsf, .log, .txt, gzip or not) or game logs (.rcg) in "
+                    + String.join(", ", inputs));
         }
         return new ArrayList<>(games.values());
     }
 
+    /** A directory's player logs (a game named by the directory) and its game logs (a game each). */
+    private static void addDirectory(HadoopFiles hadoop, Map<String, GameConversion.Game> games,
+                                     Map<String, String> sources, String directory) throws IOException {
+        List<String> logs = new ArrayList<>();
+        for (FileStatus status : hadoop.list(directory)) {
+            String name = status.getPath().getName();
+            String plain = name.endsWith(".gz") ? name.substring(0, name.length() - 3) : name;
+            if (!status.isFile() || name.startsWith(".")) {
+                continue;
+            }
+            if (plain.endsWith(".rcg")) {
+                String gameLog = directory + "/" + name;
+                addServerGame(games, sources, gameLog, commandLogBeside(hadoop, gameLog));
+            } else if (Arrays.stream(LOG_SUFFIXES).anyMatch(plain::endsWith)) {
+                logs.add(directory + "/" + name);
+            }
+        }
+        addGame(games, sources, hadoop.path(directory).toString(), logs);
+    }
+
+    /** GAME.rcl or GAME.rcl.gz beside GAME.rcg, as for {@code scenes convert GAME.rcg}. */
+    private static String commandLogBeside(HadoopFiles hadoop, String gameLog) throws IOException {
+        String directory = gameLog.contains("/") ? gameLog.substring(0, gameLog.lastIndexOf('/') + 1) : "";
+        String base = GameLogs.baseName(gameLog.substring(directory.length()));
+        for (String suffix : COMMAND_LOG_SUFFIXES) {
+            String candidate = directory + base + suffix;
+            if (hadoop.exists(candidate) && hadoop.serverLogKind(candidate) == ServerLogs.Kind.COMMAND) {
+                return candidate;
+            }
+        }
+        throw new UsageException("no command log beside " + gameLog + " (" + base + ".rcl): the scenes pair what"
+                + " each player saw with what it sent");
+    }
+
+    private static void addServerGame(Map<String, GameConversion.Game> games, Map<String, String> sources,
+                                      String gameLog, String commandLog) {
+        String name = GameLogs.baseName(gameLog.substring(gameLog.lastIndexOf('/') + 1));
+        String known = sources.putIfAbsent(name, gameLog);
+        if (known != null && !known.equals(gameLog)) {
+            throw new UsageException("two games are named " + name + " (" + known + " and " + gameLog
+                    + "); convert them separately, into different --out-dir");
+        }
+        games.putIfAbsent(name, GameConversion.Game.ofServerLogs(name, gameLog, commandLog));
+    }
+
     /** Adds logs to the game of a directory (its full path), named by the directory's name. */
-    private static void addGame(Map<String, GameConversion.Game> games, Map<String, String> directories, String directory,
+    private static void addGame(Map<String, GameConversion.Game> games, Map<String, String> sources, String directory,
                                 List<String> logs) {
         if (logs.isEmpty()) {
             return;
         }
         String name = gameName(directory);
-        String known = directories.putIfAbsent(name, directory);
+        String known = sources.putIfAbsent(name, directory);
         if (known != null && !known.equals(directory)) {
             throw new UsageException("two games are named " + name + " (" + known + " and " + directory
                     + "); convert them separately, into different --out-dir");
         }
-        GameConversion.Game game = games.computeIfAbsent(name, n -> new GameConversion.Game(n, new ArrayList<>()));
+        GameConversion.Game game = games.computeIfAbsent(name, n -> new GameConversion.Game(n, new ArrayList<>(), false));
         for (String log : logs) {
             if (!game.logs().contains(log)) {
                 game.logs().add(log);
@@ -186,46 +236,5 @@ final class ConvertCommand implements Callable<Integer> {
         String trimmed = directory.replaceFirst("/+$", "");
         String name = trimmed.substring(trimmed.lastIndexOf('/') + 1);
         return name.isEmpty() || name.equals(".") ? "game" : name;
-    }
-
-    private static List<String> logsIn(HadoopFiles hadoop, String directory) throws IOException {
-        List<String> logs = new ArrayList<>();
-        for (FileStatus status : hadoop.list(directory)) {
-            String name = status.getPath().getName();
-            String plain = name.endsWith(".gz") ? name.substring(0, name.length() - 3) : name;
-            if (status.isFile() && !name.startsWith(".") && Arrays.stream(LOG_SUFFIXES).anyMatch(plain::endsWith)) {
-                logs.add(directory + "/" + name);
-            }
-        }
-        return logs;
-    }
-
-    private Grid grid() {
-        int x = gridText.indexOf('x');
-        int columns;
-        int rows;
-        try {
-            columns = Integer.parseInt(gridText.substring(0, x < 0 ? gridText.length() : x).trim());
-            rows = x < 0 ? -1 : Integer.parseInt(gridText.substring(x + 1).trim());
-        } catch (NumberFormatException e) {
-            throw new UsageException("--grid must be COLUMNSxROWS, e.g. 5x3, not '" + gridText + "'");
-        }
-        double[] distances = bounds;
-        if (distances == null) {
-            if (rows != -1 && rows != 3) {
-                throw new UsageException("--grid " + gridText + " has " + rows + " rows: give --bounds with " + (rows - 1)
-                        + " distances");
-            }
-            distances = Grid.DEFAULT.bounds();
-        } else if (rows != -1 && distances.length != rows - 1) {
-            throw new UsageException("--grid " + gridText + " has " + rows + " rows but --bounds gives " + distances.length
-                    + " distances (need " + (rows - 1) + ")");
-        }
-        try {
-            return Grid.of(columns, distances);
-        } catch (IllegalArgumentException e) {
-            throw new UsageException("bad grid " + gridText + " with bounds " + Arrays.toString(distances) + ": "
-                    + e.getMessage());
-        }
     }
 }

@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.UUID;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.apache.spark.broadcast.Broadcast;
+import org.scenes.experiment.FoldValidation;
 import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.Scene;
 import org.scenes.scene.SceneFile;
@@ -21,9 +22,10 @@ import org.scenes.validate.Validator;
  * Cross-validation of many matching configurations as one Spark job each call: one task per
  * (configuration, fold). The scene files go to every executor once (a broadcast); each executor
  * builds a fold's knowledge base once and shares it between that fold's tasks. A task runs the
- * project's recognizer and validator on its fold, as {@code scenes validate --folds} does, and sends
- * back its predictions; the driver rebuilds each fold's report from them, so every figure, the
- * fold means and the pooled report come from the validator's own code and equal the local run's.
+ * project's recognizer and validator on its fold, as {@code scenes validate --folds} does. For a
+ * sweep it sends back its fold's figures (a few numbers), computed by the validator's own code; for
+ * the tuner, which scores the decisions of all folds pooled, its decisions, from which the driver
+ * rebuilds the fold's report. Either way every number equals the local run's.
  */
 final class DistributedFolds implements AutoCloseable {
     private final JavaSparkContext spark;
@@ -62,17 +64,56 @@ final class DistributedFolds implements AutoCloseable {
     private record Task(int index, ConfigSpec config, int fold) implements Serializable {
     }
 
-    /** Every configuration's folds, in the order given; one Spark task per (configuration, fold). */
-    Map<MatchConfig, Folds> run(List<MatchConfig> configurations) {
-        for (MatchConfig config : configurations) {
-            config.check(registry);
+    /** What a task sends back instead of its decisions: its fold's figures, in the order of {@link Folds#figures()}. */
+    private record FoldFigures(int task, double[] values) implements Serializable {
+    }
+
+    /**
+     * Every configuration's figures by fold, in the order given, as {@link FoldValidation#measures(List)}
+     * takes them: one Spark task per (configuration, fold), each computing its fold's figures where it
+     * ran, so the driver collects a few numbers a task.
+     */
+    Map<MatchConfig, List<Map<String, Double>>> figures(List<MatchConfig> configurations) {
+        List<Task> tasks = tasks(configurations);
+        Map<MatchConfig, List<Map<String, Double>>> results = new LinkedHashMap<>();
+        if (tasks.isEmpty()) {
+            return results;
         }
-        List<Task> tasks = new ArrayList<>();
-        for (MatchConfig config : configurations) {
+        Broadcast<SceneData> scenes = data;
+        String jobId = job;
+        Folds.Protocol folds = protocol;
+        ArrayList<String> plugins = pluginPath;
+        List<FoldFigures> collected = spark.parallelize(tasks, tasks.size()).map(task -> {
+            Map<String, Double> figures = FoldValidation.figures(validate(task, scenes, jobId, folds, plugins));
+            return new FoldFigures(task.index(), figures.values().stream().mapToDouble(Double::doubleValue).toArray());
+        }).collect();
+        FoldFigures[] byTask = new FoldFigures[tasks.size()];
+        for (FoldFigures f : collected) {
+            byTask[f.task()] = f;
+        }
+        List<String> names = new ArrayList<>(Folds.figures().keySet());
+        for (int c = 0; c < configurations.size(); c++) {
+            List<Map<String, Double>> byFold = new ArrayList<>();
             for (int fold = 0; fold < files.size(); fold++) {
-                tasks.add(new Task(tasks.size(), ConfigSpec.of(config), fold));
+                double[] values = byTask[c * files.size() + fold].values();
+                Map<String, Double> figures = new LinkedHashMap<>();
+                for (int i = 0; i < names.size(); i++) {
+                    figures.put(names.get(i), values[i]);
+                }
+                byFold.add(figures);
             }
+            results.put(configurations.get(c), byFold);
         }
+        return results;
+    }
+
+    /**
+     * Every configuration's folds, in the order given; one Spark task per (configuration, fold),
+     * each sending back its decisions, from which the driver rebuilds the fold's report (the tuner
+     * scores the decisions of all folds pooled).
+     */
+    Map<MatchConfig, Folds> run(List<MatchConfig> configurations) {
+        List<Task> tasks = tasks(configurations);
         Map<MatchConfig, Folds> results = new LinkedHashMap<>();
         if (tasks.isEmpty()) {
             return results;
@@ -82,7 +123,7 @@ final class DistributedFolds implements AutoCloseable {
         Folds.Protocol folds = protocol;
         ArrayList<String> plugins = pluginPath;
         List<Predictions> predictions = spark.parallelize(tasks, tasks.size())
-                .map(task -> predict(task, scenes, jobId, folds, plugins)).collect();
+                .map(task -> Predictions.of(task.index(), validate(task, scenes, jobId, folds, plugins))).collect();
         Predictions[] byTask = new Predictions[tasks.size()];
         for (Predictions p : predictions) {
             byTask[p.task] = p;
@@ -102,16 +143,29 @@ final class DistributedFolds implements AutoCloseable {
         return results;
     }
 
+    /** A task per (configuration, fold), configurations checked first. */
+    private List<Task> tasks(List<MatchConfig> configurations) {
+        for (MatchConfig config : configurations) {
+            config.check(registry);
+        }
+        List<Task> tasks = new ArrayList<>();
+        for (MatchConfig config : configurations) {
+            for (int fold = 0; fold < files.size(); fold++) {
+                tasks.add(new Task(tasks.size(), ConfigSpec.of(config), fold));
+            }
+        }
+        return tasks;
+    }
+
     /** On an executor: one fold of one configuration, its queries one after another (the task is the unit of parallelism). */
-    private static Predictions predict(Task task, Broadcast<SceneData> scenes, String job, Folds.Protocol protocol,
-                                       List<String> pluginPath) {
+    private static ValidationReport validate(Task task, Broadcast<SceneData> scenes, String job, Folds.Protocol protocol,
+                                             List<String> pluginPath) {
         PluginRegistry registry = ExecutorState.registry(pluginPath);
         ExecutorState state = ExecutorState.forJob(job, scenes::value);
         MatchConfig config = task.config().config();
         ExecutorState.Fold fold = state.fold(config, registry, task.fold(), protocol);
         try {
-            ValidationReport report = Validator.run(fold.train(), fold.test(), config, registry, false, null);
-            return Predictions.of(task.index(), report);
+            return Validator.run(fold.train(), fold.test(), config, registry, false, null);
         } catch (RuntimeException e) {
             // named as the local sweep names it, with the fold
             String message = "configuration " + config.describe() + ", fold " + (task.fold() + 1) + ": " + e.getMessage();

@@ -2,13 +2,11 @@ package org.scenes.spark;
 
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Consumer;
-import java.util.function.UnaryOperator;
 import org.scenes.scene.ActionType;
 import org.scenes.validate.Folds;
 import org.scenes.validate.MatchConfig;
@@ -16,14 +14,14 @@ import org.scenes.validate.Tuner;
 import org.scenes.validate.ValidationReport;
 
 /**
- * {@link Tuner}'s coordinate descent with the folds run as Spark tasks. The search itself stays
+ * {@link Tuner#descend}, the local tuner's coordinate descent, with the folds run as Spark tasks. The search itself stays
  * sequential and takes the same steps as the local tuner (each variant applied to the best so far,
  * kept only if strictly better), so it chooses the same configuration; to keep the cluster busy,
  * every variant of a dimension is first validated at once against the best configuration at the
  * dimension's start, one job of (variants x folds) tasks. A variant that a change of the best
  * within the dimension alters is validated when the walk reaches it.
  */
-final class DistributedTuner {
+final class DistributedTuner implements Tuner.Evaluation {
     private final DistributedFolds folds;
     private final Tuner.Objective objective;
     private final Consumer<String> log;
@@ -39,7 +37,8 @@ final class DistributedTuner {
     }
 
     /** Validates those of the configurations not validated yet, in one job. */
-    private void evaluateAll(List<MatchConfig> configurations) {
+    @Override
+    public void ahead(List<MatchConfig> configurations) {
         List<MatchConfig> fresh = new ArrayList<>();
         for (MatchConfig config : configurations) {
             if (!scores.containsKey(config) && !fresh.contains(config)) {
@@ -51,13 +50,14 @@ final class DistributedTuner {
         }
         for (Map.Entry<MatchConfig, Folds> entry : folds.run(fresh).entrySet()) {
             ValidationReport report = entry.getValue().pooled();
-            scores.put(entry.getKey(), score(report));
+            scores.put(entry.getKey(), objective.of(report));
             pooled.put(entry.getKey(), report);
         }
     }
 
-    private double evaluate(MatchConfig config) {
-        evaluateAll(List.of(config));
+    @Override
+    public double score(MatchConfig config) {
+        ahead(List.of(config));
         if (asked.add(config)) {
             ValidationReport report = pooled.get(config);
             log.accept(String.format("%.4f  acc %.4f  dir %.4f  F1 %.4f  kicks %d/%d  %s", scores.get(config),
@@ -67,46 +67,10 @@ final class DistributedTuner {
         return scores.get(config);
     }
 
-    private double score(ValidationReport report) {
-        return switch (objective) {
-            case MEAN -> Tuner.score(report);
-            case ACCURACY -> report.accuracy();
-            case DIRECTION -> report.directionAccuracy();
-            case MACRO_F1 -> report.macroF1();
-        };
-    }
-
     /** The search of {@link Tuner#tune}, step for step. */
     Tuner.Result tune(MatchConfig start, List<Tuner.Dimension> dimensions, int sweeps) {
-        MatchConfig best = dimensions.isEmpty() ? start : dimensions.get(0).variants().get(0).apply(start);
-        if (!dimensions.isEmpty()) {
-            MatchConfig first = best;
-            evaluateAll(dimensions.get(0).variants().stream().map(v -> v.apply(first)).toList());
-        }
-        double bestScore = evaluate(best);
-        for (int sweep = 0; sweep < sweeps; sweep++) {
-            boolean improved = false;
-            for (Tuner.Dimension dimension : dimensions) {
-                MatchConfig atStart = best;
-                evaluateAll(dimension.variants().stream().map(v -> v.apply(atStart)).toList());
-                for (UnaryOperator<MatchConfig> variant : dimension.variants()) {
-                    MatchConfig candidate = variant.apply(best);
-                    double score = evaluate(candidate);
-                    if (score > bestScore + 1e-9) {
-                        best = candidate;
-                        bestScore = score;
-                        improved = true;
-                    }
-                }
-            }
-            if (!improved) {
-                break;
-            }
-        }
-        ValidationReport report = pooled.get(best);
-        Map<String, Double> figures = new LinkedHashMap<>();
-        Folds.figures().forEach((name, figure) -> figures.put(name, figure.applyAsDouble(report)));
-        return new Tuner.Result(best, bestScore, figures, asked.size());
+        Tuner.Descent descent = Tuner.descend(start, dimensions, sweeps, this);
+        return Tuner.Result.of(descent, pooled.get(descent.best()), asked.size());
     }
 
     /** Configurations validated, including those validated ahead and never asked for. */

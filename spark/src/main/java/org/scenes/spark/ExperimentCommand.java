@@ -17,14 +17,11 @@ import org.scenes.experiment.Result;
 import org.scenes.experiment.ResultTable;
 import org.scenes.experiment.Sweep;
 import org.scenes.scene.SceneFile;
-import org.scenes.script.ScriptFailure;
-import org.scenes.script.Sweeps;
-import org.scenes.validate.Folds;
 import org.scenes.validate.MatchConfig;
+import org.scenes.options.SweepOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
 import org.scenes.files.CsvTables;
@@ -41,19 +38,12 @@ final class ExperimentCommand implements Callable<Integer> {
     @ParentCommand
     SparkCommand top;
 
-    @Parameters(paramLabel = "SWEEP.groovy", description = "The sweep script (the same as for 'scenes experiment').")
-    Path sweepFile;
-
-    @Option(names = {"-o", "--out-dir"}, paramLabel = "DIR",
-            description = "Where NAME.csv, NAME.json and NAME.md go, any Hadoop-compatible path (default: the script's directory).")
-    String outDir;
-
-    @Option(names = "--name", paramLabel = "NAME", description = "Base name of the result files (default: the script's name).")
-    String name;
+    @Mixin
+    SweepOptions sweepOptions;
 
     @Override
     public Integer call() throws IOException {
-        Sweep sweep = load();
+        Sweep sweep = sweepOptions.load();
         HadoopFiles hadoop = HadoopFiles.fromEnvironment();
         List<String> paths = dataPaths(sweep.data(), hadoop);
         SceneData data = SceneData.read(paths, hadoop);
@@ -64,10 +54,10 @@ final class ExperimentCommand implements Callable<Integer> {
             configs.add(FoldValidation.matchConfig(configuration, sweep.transforms(), sweep.seed()));
         }
         ResultTable table;
-        try (JavaSparkContext spark = top.options.start("experiment " + sweepFile.getFileName());
+        try (JavaSparkContext spark = top.options.start("experiment " + sweepOptions.sweepFile().getFileName());
              DistributedFolds folds = new DistributedFolds(spark, files, data, sweep.protocol(), top.options.registry(),
                      top.options.pluginDirectories())) {
-            Map<MatchConfig, Folds> validated = folds.run(configs);
+            Map<MatchConfig, List<Map<String, Double>>> validated = folds.figures(configs);
             List<Result> results = new ArrayList<>();
             for (int i = 0; i < configurations.size(); i++) {
                 results.add(new Result(configurations.get(i), FoldValidation.measures(validated.get(configs.get(i)))));
@@ -75,10 +65,9 @@ final class ExperimentCommand implements Callable<Integer> {
             table = new ResultTable(sweep, results);
         }
         table.checkMeasures();
-        String base = name != null ? name : sweepFile.getFileName().toString().replaceFirst("\\.groovy$", "");
-        String directory = outDir != null ? outDir : sweepFile.toAbsolutePath().getParent().toString();
-        String command = "scenes-spark experiment " + sweepFile + (outDir == null ? "" : " --out-dir " + outDir)
-                + (name == null ? "" : " --name " + name);
+        String base = sweepOptions.baseName();
+        String directory = sweepOptions.outDir();
+        String command = sweepOptions.command("scenes-spark");
         List<String> written = write(table, hadoop, directory, base, command);
         PrintWriter out = spec.commandLine().getOut();
         out.printf("%s (%d configurations, %d folds, seed %d)%n%n", sweep.title().isEmpty() ? base : sweep.title(),
@@ -116,14 +105,6 @@ final class ExperimentCommand implements Callable<Integer> {
             Files.deleteIfExists(scratch);
         }
         return written;
-    }
-
-    private Sweep load() {
-        try {
-            return Sweeps.load(sweepFile.toString());
-        } catch (ScriptFailure e) {
-            throw new UsageException(e.getMessage());
-        }
     }
 
     /** The sweep's scene files, a directory standing for the .json and .json.gz files in it, sorted (as the local command). */

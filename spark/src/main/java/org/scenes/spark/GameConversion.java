@@ -10,31 +10,46 @@ import java.util.List;
 import java.util.Locale;
 import org.scenes.convert.ConversionReport;
 import org.scenes.convert.DropReason;
+import org.scenes.convert.GameLogConverter;
+import org.scenes.convert.GameSceneFiles;
 import org.scenes.convert.Pairing;
 import org.scenes.convert.SceneConverter;
+import org.scenes.gamelog.GameLogs;
+import org.scenes.options.GameLogOptions;
 import org.scenes.scene.Grid;
 import org.scenes.scene.LazySceneFileWriter;
+import org.scenes.vision.Fading;
 
 /**
  * One game's conversion, the unit of a {@code convert} job: each of the game's player logs goes
  * through the project's {@link SceneConverter} into a scene file, exactly as {@code scenes convert
- * --out-dir} writes it, which is then published under {@code OUT/GAME/}. Game logs ({@code .rcg},
- * one file per game holding every player) slot in here as another kind of input: one task, a scene
- * file per player.
+ * --out-dir} writes it, which is then published under {@code OUT/GAME/}; or the game's server logs
+ * ({@code GAME.rcg} and {@code GAME.rcl}, every player in one file) through {@link GameSceneFiles},
+ * a scene file per player, as {@code scenes convert GAME.rcg --out-dir} writes them.
  */
 final class GameConversion {
     private GameConversion() {
     }
 
-    /** A game: its name (the output directory) and its logs. */
-    record Game(String name, ArrayList<String> logs) implements Serializable {
+    /**
+     * A game: its name (the output directory) and its logs: players' logs, or with {@code serverLogs}
+     * the server's game log and command log.
+     */
+    record Game(String name, ArrayList<String> logs, boolean serverLogs) implements Serializable {
+        static Game ofServerLogs(String name, String gameLog, String commandLog) {
+            return new Game(name, new ArrayList<>(List.of(gameLog, commandLog)), true);
+        }
     }
 
-    /** How logs become scenes: the grid, the pairing and strictness of {@code scenes convert}. */
-    record Settings(int columns, double minAngle, double maxAngle, double[] bounds, String pairing, boolean strict)
-            implements Serializable {
-        static Settings of(Grid grid, Pairing pairing, boolean strict) {
-            return new Settings(grid.columns(), grid.minAngle(), grid.maxAngle(), grid.bounds(), pairing.key(), strict);
+    /**
+     * How logs become scenes: the grid, the pairing and strictness of {@code scenes convert}, and
+     * for game logs the players chosen, the fading and the order of commands and sees.
+     */
+    record Settings(int columns, double minAngle, double maxAngle, double[] bounds, String pairing, boolean strict,
+                    GameLogSettings gameLogs) implements Serializable {
+        static Settings of(Grid grid, Pairing pairing, boolean strict, GameLogSettings gameLogs) {
+            return new Settings(grid.columns(), grid.minAngle(), grid.maxAngle(), grid.bounds(), pairing.key(), strict,
+                    gameLogs);
         }
 
         Grid grid() {
@@ -51,12 +66,25 @@ final class GameConversion {
     /** Malformed-line warnings each log reports in full; the rest are counted. */
     static final int WARNINGS_KEPT = 10;
 
+    /** The options of {@code scenes convert} for game logs (a null team: any; unum 0: any). */
+    record GameLogSettings(String team, int unum, String fading, long fadingSeed, boolean commandsFirst)
+            implements Serializable {
+        GameLogConverter converter(Grid grid, Pairing pairing) {
+            // one thread: the job's parallelism is its games
+            return new GameLogConverter(grid, pairing, Fading.named(fading, fadingSeed),
+                    GameLogConverter.only(team, unum), 1).commandsBeforeSee(commandsFirst);
+        }
+    }
+
     static List<LogResult> convert(Game game, Settings settings, String outDir, List<String> names) throws IOException {
         HadoopFiles hadoop = HadoopFiles.fromEnvironment();
         Grid grid = settings.grid();
         Path scratch = Files.createTempDirectory("scenes-spark-convert");
         List<LogResult> results = new ArrayList<>();
         try {
+            if (game.serverLogs()) {
+                return convertServerLogs(game, settings, outDir, hadoop, scratch);
+            }
             for (int i = 0; i < game.logs().size(); i++) {
                 String log = game.logs().get(i);
                 ArrayList<String> warnings = new ArrayList<>();
@@ -79,31 +107,72 @@ final class GameConversion {
                         writer.commit();
                     }
                 } catch (IOException | RuntimeException e) {
-                    results.add(new LogResult(log, null, log + ": " + e.getMessage(), 0, 0, 0, 0, 0,
-                            new EnumMap<>(DropReason.class), 0, warnings));
+                    results.add(failed(log, log + ": " + e.getMessage(), warnings));
                     cleanUp(local, sceneFile, scratch);
                     continue;
                 }
                 if (error == null) {
                     hadoop.publish(sceneFile, target);
                 }
-                EnumMap<DropReason, Long> dropped = new EnumMap<>(DropReason.class);
-                for (DropReason reason : DropReason.values()) {
-                    dropped.put(reason, report.dropped(reason));
-                }
-                results.add(new LogResult(log, error == null ? target : null, error, report.lines(), report.bytes(),
-                        report.sees(), report.scenes(), report.repeatedSees(), dropped, report.malformed(), warnings));
+                results.add(result(log, error == null ? target : null, error, report, warnings));
                 cleanUp(local, sceneFile, scratch);
             }
         } finally {
-            try (var listing = Files.list(scratch)) {
-                for (Path file : listing.toList()) {
-                    Files.deleteIfExists(file);
-                }
-            }
-            Files.deleteIfExists(scratch);
+            deleteTree(scratch);
         }
         return results;
+    }
+
+    /**
+     * A game's server logs: {@link GameSceneFiles} writes a scene file per player, as {@code scenes
+     * convert GAME.rcg --out-dir} does, and each is published as {@code OUT/GAME/TEAM_UNUM.json.gz}.
+     * A result per player; the game's warnings go with the first.
+     */
+    private static List<LogResult> convertServerLogs(Game game, Settings settings, String outDir, HadoopFiles hadoop,
+                                                     Path scratch) throws IOException {
+        String gameLog = game.logs().get(0);
+        String commandLog = game.logs().get(1);
+        Grid grid = settings.grid();
+        Path files = Files.createDirectory(scratch.resolve("scenes"));
+        GameSceneFiles.Written written;
+        try {
+            GameLogs logs = new GameLogs(hadoop.local(gameLog, scratch), hadoop.local(commandLog, scratch));
+            written = GameSceneFiles.write(settings.gameLogs().converter(grid, Pairing.fromKey(settings.pairing())),
+                    grid, logs, key -> files.resolve(key + ".json.gz"));
+        } catch (IOException | RuntimeException e) {
+            return List.of(failed(gameLog, gameLog + ": " + e.getMessage(), new ArrayList<>()));
+        }
+        ArrayList<String> warnings = new ArrayList<>(written.result().warnings());
+        if (written.result().players().isEmpty()) {
+            return List.of(failed(gameLog, GameLogOptions.noPlayer(gameLog, settings.gameLogs().team(),
+                    settings.gameLogs().unum()), warnings));
+        }
+        if (written.scenes() == 0) {
+            return List.of(failed(gameLog, "no scenes from " + gameLog + " and " + commandLog
+                    + ": no player sent a command after a see", warnings));
+        }
+        List<LogResult> results = new ArrayList<>();
+        for (GameLogConverter.PlayerResult player : written.result().players()) {
+            String target = outDir.replaceFirst("/+$", "") + "/" + game.name() + "/" + player.key() + ".json.gz";
+            hadoop.publish(files.resolve(player.key() + ".json.gz"), target);
+            results.add(result(gameLog + "#" + player.key(), target, null, player.report(),
+                    results.isEmpty() ? warnings : new ArrayList<>()));
+        }
+        return results;
+    }
+
+    private static LogResult failed(String log, String error, ArrayList<String> warnings) {
+        return new LogResult(log, null, error, 0, 0, 0, 0, 0, new EnumMap<>(DropReason.class), 0, warnings);
+    }
+
+    private static LogResult result(String log, String written, String error, ConversionReport report,
+                                    ArrayList<String> warnings) {
+        EnumMap<DropReason, Long> dropped = new EnumMap<>(DropReason.class);
+        for (DropReason reason : DropReason.values()) {
+            dropped.put(reason, report.dropped(reason));
+        }
+        return new LogResult(log, written, error, report.lines(), report.bytes(), report.sees(), report.scenes(),
+                report.repeatedSees(), dropped, report.malformed(), warnings);
     }
 
     private static void cleanUp(Path local, Path sceneFile, Path scratch) throws IOException {
@@ -111,6 +180,14 @@ final class GameConversion {
             Files.deleteIfExists(local);
         }
         Files.deleteIfExists(sceneFile);
+    }
+
+    private static void deleteTree(Path directory) throws IOException {
+        try (var walk = Files.walk(directory)) {
+            for (Path file : walk.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(file);
+            }
+        }
     }
 
     /** A log with messages but no scene failed, as for {@code scenes convert}; null when it did not. */
@@ -131,6 +208,9 @@ final class GameConversion {
      */
     static List<String> outputNames(Game game) {
         List<String> names = new ArrayList<>();
+        if (game.serverLogs()) {
+            return names; // a file per player, named by the player
+        }
         for (String log : game.logs()) {
             String name = log.substring(log.lastIndexOf('/') + 1);
             for (String suffix : new String[] {".gz", ".lsf", ".log", ".txt"}) {

@@ -17,8 +17,9 @@ import picocli.CommandLine.ScopeType;
 /** Options every job accepts: where it runs, Spark properties, plugins. */
 final class SparkOptions {
     @Option(names = "--master", scope = ScopeType.INHERIT, paramLabel = "URL",
-            description = "Spark master: local[*] (default: every core of this machine), local[N], spark://HOST:PORT, yarn, k8s://...")
-    String master = "local[*]";
+            description = "Spark master: local[*] (every core of this machine; the default, unless spark-submit gave"
+                    + " one), local[N], spark://HOST:PORT, yarn, k8s://...")
+    String master;
 
     @Option(names = "--conf", scope = ScopeType.INHERIT, paramLabel = "KEY=VALUE",
             description = "A Spark property (repeatable), e.g. --conf spark.executor.memory=4g.")
@@ -50,8 +51,13 @@ final class SparkOptions {
         return registry;
     }
 
+    /** --master, else the master spark-submit set (as the spark.master property), else local[*]. */
+    String master() {
+        return master != null ? master : System.getProperty("spark.master", "local[*]");
+    }
+
     boolean local() {
-        return master.startsWith("local");
+        return master().startsWith("local");
     }
 
     /**
@@ -60,7 +66,7 @@ final class SparkOptions {
      * cluster the project's jars are shipped to the executors.
      */
     JavaSparkContext start(String job) {
-        SparkConf conf = new SparkConf().setAppName("scenes-spark " + job).setMaster(master);
+        SparkConf conf = new SparkConf().setAppName("scenes-spark " + job).setMaster(master());
         if (local()) {
             conf.set("spark.driver.host", "127.0.0.1").set("spark.driver.bindAddress", "127.0.0.1")
                     .set("spark.ui.enabled", "false");

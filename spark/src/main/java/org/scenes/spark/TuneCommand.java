@@ -17,7 +17,9 @@ import org.scenes.scene.SceneFile;
 import org.scenes.validate.Folds;
 import org.scenes.validate.MatchConfig;
 import org.scenes.validate.Tuner;
+import org.scenes.options.TuneOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParentCommand;
@@ -44,39 +46,14 @@ final class TuneCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output"}, paramLabel = "CONFIG.json", required = true, description = "Where to write the configuration.")
     String output;
 
-    @Option(names = "--seed", paramLabel = "S", description = "Seed of every random choice (default 1).")
-    long seed = 1;
-
-    @Option(names = "--sweeps", paramLabel = "N", description = "Passes over the search dimensions (default 2).")
-    int sweeps = 2;
-
-    @Option(names = "--protocol", paramLabel = "leave-one-out|next",
-            description = "Cross-validation: each file against all others (default) or against the next one.")
-    String protocol = "leave-one-out";
-
-    @Option(names = "--objective", paramLabel = "mean|accuracy|direction|macro-f1",
-            description = "What to maximise: the mean of accuracy, action-with-direction accuracy and macro F1 (default), or one of them.")
-    String objective = "mean";
-
-    @Option(names = "--quiet", description = "Do not print each configuration tried.")
-    boolean quiet;
+    @Mixin
+    TuneOptions tuning;
 
     @Override
     public Integer call() throws IOException {
-        if (sweeps < 1) {
-            throw new UsageException("--sweeps must be at least 1");
-        }
-        Folds.Protocol chosen = Folds.Protocol.fromKey(protocol);
-        if (chosen == null) {
-            throw new UsageException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
-        }
-        Tuner.Objective goal = switch (objective) {
-            case "mean" -> Tuner.Objective.MEAN;
-            case "accuracy" -> Tuner.Objective.ACCURACY;
-            case "direction" -> Tuner.Objective.DIRECTION;
-            case "macro-f1" -> Tuner.Objective.MACRO_F1;
-            default -> throw new UsageException("--objective must be mean, accuracy, direction or macro-f1, not " + objective);
-        };
+        int sweeps = tuning.sweeps();
+        Folds.Protocol chosen = tuning.protocol();
+        Tuner.Objective goal = tuning.objective();
         HadoopFiles hadoop = HadoopFiles.fromEnvironment();
         SceneData data = SceneData.read(train, hadoop);
         List<SceneFile> files = SweepInputs.decodeOnDriver(train, data, hadoop);
@@ -86,27 +63,15 @@ final class TuneCommand implements Callable<Integer> {
         try (JavaSparkContext spark = top.options.start("tune");
              DistributedFolds folds = new DistributedFolds(spark, files, data, chosen, top.options.registry(),
                      top.options.pluginDirectories())) {
-            DistributedTuner tuner = new DistributedTuner(folds, goal, quiet ? null : line -> {
+            DistributedTuner tuner = new DistributedTuner(folds, goal, tuning.quiet() ? null : line -> {
                 out.println(line);
                 out.flush();
             });
-            result = tuner.tune(MatchConfig.DEFAULT.withSeed(seed), Tuner.defaultSearch(), sweeps);
+            result = tuner.tune(MatchConfig.DEFAULT.withSeed(tuning.seed()), Tuner.defaultSearch(), sweeps);
             validated = tuner.validated();
         }
-        Map<String, Object> score = new LinkedHashMap<>();
-        score.put("score", result.score());
-        score.put("protocol", protocol);
-        score.put("objective", objective);
-        score.put("scoreFormula", objective.equals("mean")
-                ? "(accuracy + action-with-direction accuracy + macro F1) / 3 over the decisions of all folds"
-                : objective + " over the decisions of all folds");
-        score.put("figures", result.figures());
-        score.put("configurationsTried", result.evaluated());
-        score.put("trainFiles", train);
-        write(hadoop, result.config(), score);
-        out.printf("Best of %d configurations: %s%n", result.evaluated(), result.config().describe());
-        out.printf("Cross-validation score %.4f (accuracy %.4f, with direction %.4f, macro F1 %.4f)%n", result.score(),
-                result.figures().get("accuracy"), result.figures().get("directionAccuracy"), result.figures().get("macroF1"));
+        write(hadoop, result.config(), tuning.crossValidation(result, train));
+        TuneOptions.printBest(out, result);
         out.printf("Validated %d configurations in all (%d ahead of the search, to keep the executors busy)%n", validated,
                 validated - result.evaluated());
         out.println("Written to " + output);

@@ -32,15 +32,27 @@ class SparkJobsTest {
     @TempDir
     static Path work;
     static Path games;
+    /** The server's logs of game1: its .rcg and .rcl. */
+    static List<Path> serverLogs;
 
-    /** Two short seeded games of three Krislet players a side, each in its own directory of player logs. */
+    /**
+     * Two short seeded games of three Krislet players a side, each in its own directory of player
+     * logs; the first also recorded as the server's logs.
+     */
     @BeforeAll
     static void games() throws IOException {
         games = work.resolve("games");
         for (int seed = 1; seed <= 2; seed++) {
             Path game = games.resolve("game" + seed);
-            new Simulator(new GameSetup(new GameSetup.Team("Carleton", 3, Teachers.byName("krislet")),
-                    new GameSetup.Team("University", 3, Teachers.byName("krislet")), 1000, seed, game)).run(t -> { });
+            Simulator simulator = new Simulator(new GameSetup(new GameSetup.Team("Carleton", 3, Teachers.byName("krislet")),
+                    new GameSetup.Team("University", 3, Teachers.byName("krislet")), 1000, seed, game));
+            if (seed == 1) {
+                simulator.recordTo(work.resolve("server"));
+            }
+            simulator.run(t -> { });
+            if (seed == 1) {
+                serverLogs = simulator.recorded();
+            }
         }
     }
 
@@ -99,6 +111,49 @@ class SparkJobsTest {
                 assertEquals(gunzip(file), gunzip(written), written.toString());
             }
         }
+    }
+
+    @Test
+    void convertTakesGameLogsPlainOrGzippedAndWritesTheScenesOfScenesConvert() throws IOException {
+        assertEquals(2, serverLogs.size(), "a game log and a command log");
+        Path gameLog = serverLogs.get(0);
+        String base = gameLog.getFileName().toString().replaceFirst("\\.rcg$", "");
+        // the same game gzipped under another name, given by name (its command log is found beside it)
+        Path zipped = Files.createDirectories(work.resolve("server-gz"));
+        for (Path log : serverLogs) {
+            String suffix = log.getFileName().toString().endsWith(".rcg") ? ".rcg.gz" : ".rcl.gz";
+            try (var out = new java.util.zip.GZIPOutputStream(Files.newOutputStream(zipped.resolve("zipped" + suffix)))) {
+                Files.copy(log, out);
+            }
+        }
+        Path out = work.resolve("spark-game-scenes");
+        Run job = spark("convert", gameLog.getParent().toString(), zipped.resolve("zipped.rcg.gz").toString(),
+                "--out-dir", out.toString(), "--commands-first");
+        assertEquals(0, job.status(), job.err());
+        assertTrue(job.out().contains("Games                  2 (one task each)"), job.out());
+        for (Path input : List.of(gameLog, zipped.resolve("zipped.rcg.gz"))) {
+            String name = input.getFileName().toString().startsWith("zipped") ? "zipped" : base;
+            Path expected = work.resolve("local-game-scenes/" + name);
+            Run convert = local("convert", input.toString(), "--out-dir", expected.toString(), "--commands-first");
+            assertEquals(0, convert.status(), convert.err());
+            List<Path> local = files(expected);
+            assertEquals(6, local.size(), "a scene file per player");
+            List<Path> written = files(out.resolve(name));
+            assertEquals(local.stream().map(Path::getFileName).toList(), written.stream().map(Path::getFileName).toList(),
+                    "the same players' files, nothing else");
+            for (Path file : local) {
+                assertEquals(gunzip(file), gunzip(out.resolve(name).resolve(file.getFileName())), file.toString());
+            }
+        }
+        assertEquals(12, files(out).size());
+    }
+
+    @Test
+    void aCommandLogWithoutItsGameLogIsAUsageError() {
+        Run job = spark("convert", serverLogs.get(1).toString(), "--out-dir", work.resolve("no-game").toString());
+        assertEquals(2, job.status(), job.err());
+        assertTrue(job.err().startsWith("scenes-spark: " + serverLogs.get(1) + " is a command log"), job.err());
+        assertFalse(Files.exists(work.resolve("no-game")));
     }
 
     @Test
