@@ -148,7 +148,7 @@ final class BenchCommand implements Callable<Integer> {
                     transformedQueries.add(transformed.scene((int) ((long) i * transformed.size() / QUERIES)));
                 }
             }
-            Recognizer recognizer = new Recognizer(transformed, config.metricFactory(registry), config.k());
+            Recognizer recognizer = config.recognizer(transformed, registry, config.k());
             row(out, configs.get(c).getFileName().toString(), recognizer, transformedQueries, transformed.size());
         }
         if (metrics == null && chosen.stream().anyMatch(m -> m.label().equals("ball-goal (index)"))) {
