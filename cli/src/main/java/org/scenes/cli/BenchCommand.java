@@ -157,7 +157,7 @@ final class BenchCommand implements Callable<Integer> {
                 transformed = KnowledgeBase.load(files, config.transformFactory(registry));
                 transformedQueries = queries(transformed, config.transformFactory(registry));
             }
-            Recognizer recognizer = new Recognizer(transformed, config.metricFactory(registry), config.k());
+            Recognizer recognizer = config.recognizer(transformed, registry, config.k());
             row(out, configs.get(c).getFileName().toString(), recognizer, transformedQueries, transformed.size());
         }
         if (metrics == null && chosen.stream().anyMatch(m -> m.label().equals("ball-goal (index)"))) {

@@ -10,11 +10,14 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 import org.apache.commons.csv.CSVPrinter;
 import org.scenes.files.AtomicOutput;
+import org.scenes.plugins.coverage.KeyScenes;
 import org.scenes.scene.Action;
 import org.scenes.scene.ActionType;
 import org.scenes.scene.ObjectKind;
@@ -27,6 +30,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
 import org.scenes.files.CsvTables;
 
@@ -81,6 +85,20 @@ final class ExportCommand implements Callable<Integer> {
             + " class: previous_action (type; none at the start) and previous_turn_moment.")
     boolean previous;
 
+    @Option(names = "--key-scenes", paramLabel = "N", description = {"Only the N key scenes of each file (as 'show"
+            + " --key-scenes' picks them, docs/extensions.md), in the file's order, with an influence column before the class."})
+    Integer keyScenes;
+
+    @Option(names = "--key-by", paramLabel = "influence|events", defaultValue = "influence",
+            description = "--key-scenes by influence on neighbours' predictions (default) or the first N events.")
+    String keyBy;
+
+    @Option(names = "--metric", paramLabel = "NAME", description = "The metric ranking --key-scenes (default: the default configuration's).")
+    String metric;
+
+    @ParentCommand
+    ScenesCommand top;
+
     @Option(names = "--missing", paramLabel = "TEXT", defaultValue = "",
             description = "CSV text for a value the scene lacks; default empty (ARFF always uses '?').")
     String missing;
@@ -89,6 +107,9 @@ final class ExportCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         if (players < 0) {
             throw new UsageException("--players must be 0 or more, not " + players);
+        }
+        if (keyScenes != null) {
+            KeySceneChoice.check(keyScenes, keyBy); // before any output
         }
         if (output == null) {
             PrintWriter out = spec.commandLine().getOut();
@@ -132,6 +153,9 @@ final class ExportCommand implements Callable<Integer> {
         if (parameters) {
             columns.addAll(PARAMETER_COLUMNS);
         }
+        if (keyScenes != null) {
+            columns.add("influence");
+        }
         columns.add(label == Label.primary ? "action" : label.name());
         return columns;
     }
@@ -166,18 +190,26 @@ final class ExportCommand implements Callable<Integer> {
                         csv = CsvTables.printer(out, columns);
                     }
                 }
+                Map<Integer, Integer> keys = keyScenes == null ? null : keyScenes(file);
                 Scene before = null;
                 String name = file.getFileName().toString();
-                while (reader.hasNext()) {
+                for (int index = 0; reader.hasNext(); index++) {
                     Scene scene = reader.next();
                     boolean continues = before != null && before.observer().equals(scene.observer()) && before.cycle() <= scene.cycle();
-                    List<String> cells = row(name, scene, continues ? before : null, gap);
+                    Scene earlier = continues ? before : null;
+                    before = scene;
+                    if (keys != null && !keys.containsKey(index)) {
+                        continue;
+                    }
+                    List<String> cells = row(name, scene, earlier, gap);
+                    if (keys != null) {
+                        cells.add(cells.size() - 1, Integer.toString(keys.get(index)));
+                    }
                     if (csv != null) {
                         csv.printRecord(cells);
                     } else {
                         out.write(arffRow(cells));
                     }
-                    before = scene;
                     rows++;
                 }
             }
@@ -186,6 +218,16 @@ final class ExportCommand implements Callable<Integer> {
             csv.flush();
         }
         return rows;
+    }
+
+    /** The key scenes of a file: index to influence. */
+    private Map<Integer, Integer> keyScenes(Path file) {
+        Map<Integer, Integer> keys = new HashMap<>();
+        for (KeyScenes.Ranked ranked : KeySceneChoice.choose(SceneFileReader.read(file), keyScenes, keyBy, metric,
+                top.global.registry())) {
+            keys.put(ranked.index(), ranked.influence());
+        }
+        return keys;
     }
 
     /** ARFF quotes strings with a comma, quote or space in single quotes. */

@@ -108,7 +108,7 @@ final class PlayCommand implements Callable<Integer> {
         GameSetup.Team right = SimulateCommand.team(opponent, teamNames[1].trim());
         long started = System.nanoTime();
         KnowledgeBase knowledge = KnowledgeBase.load(sceneFiles, config.transformFactory(registry));
-        Recognizer recognizer = new Recognizer(knowledge, config.metricFactory(registry), config.k());
+        Recognizer recognizer = config.recognizer(knowledge, registry, config.k());
         GameSetup setup;
         try {
             GameSetup.Team left = new GameSetup.Team(teamNames[0].trim(), players, ImitationBrain.factory(recognizer,
@@ -144,7 +144,7 @@ final class PlayCommand implements Callable<Integer> {
         }
         var options = live.clientOptions("Imitator");
         KnowledgeBase knowledge = KnowledgeBase.load(sceneFiles, config.transformFactory(registry));
-        Recognizer recognizer = new Recognizer(knowledge, config.metricFactory(registry), config.k());
+        Recognizer recognizer = config.recognizer(knowledge, registry, config.k());
         PrintWriter err = spec.commandLine().getErr();
         err.printf(Locale.ROOT, "%-14s %d scenes from %d files; %s%n", "Learnt", knowledge.size(), sceneFiles.size(),
                 config.describe());

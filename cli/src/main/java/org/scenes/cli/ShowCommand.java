@@ -12,10 +12,8 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParentCommand;
-import org.scenes.plugin.PluginRegistry;
 import org.scenes.plugins.coverage.KeyScenes;
 import org.scenes.scene.SceneFile;
-import org.scenes.validate.MatchConfig;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
@@ -88,21 +86,8 @@ final class ShowCommand implements Callable<Integer> {
     }
 
     private int showKeyScenes(PrintWriter out, int count) {
-        if (count < 1) {
-            throw new UsageException("--key-scenes must be at least 1, not " + count);
-        }
-        if (!keyBy.equals("influence") && !keyBy.equals("events")) {
-            throw new UsageException("--key-by must be influence or events, not " + keyBy);
-        }
         SceneFile scenes = SceneFileReader.read(file);
-        if (keyBy.equals("events")) {
-            return print(out, KeyScenes.events(scenes.scenes(), count), scenes.grid(), "events");
-        }
-        MatchConfig config = metric == null ? MatchConfig.DEFAULT : MatchConfig.DEFAULT.withMetric(metric, java.util.Map.of());
-        PluginRegistry registry = top.global.registry();
-        config.check(registry);
-        return print(out, KeyScenes.rank(scenes.grid(), scenes.scenes(), config.metricFactory(registry), count),
-                scenes.grid(), "influence");
+        return print(out, KeySceneChoice.choose(scenes, count, keyBy, metric, top.global.registry()), scenes.grid(), keyBy);
     }
 
     private static int print(PrintWriter out, java.util.List<KeyScenes.Ranked> ranked, Grid grid, String measure) {

@@ -61,4 +61,27 @@ class CondenseCommandTest {
         assertTrue(cli.err().contains("--edit-k"), cli.err());
         assertTrue(Files.notExists(dir.resolve("x.json")), "nothing written on a usage error");
     }
+
+    @Test
+    void exportWritesTheKeyScenesShowPicksInTheFilesOrder(@TempDir Path dir) throws IOException {
+        Path file = scenes(dir);
+        assertEquals(ExitCodes.OK, cli.run("show", file, "--key-scenes", "3", "--metric", "ball-goal"), cli.err());
+        List<String> shown = new ArrayList<>();
+        java.util.regex.Matcher cycles = java.util.regex.Pattern.compile("Scene cycle (\\d+)").matcher(cli.out());
+        while (cycles.find()) {
+            shown.add(cycles.group(1));
+        }
+        assertTrue(shown.size() >= 2, cli.out());
+        Path table = dir.resolve("key.csv");
+        assertEquals(ExitCodes.OK, cli.run("export", "--format", "csv", file, "--key-scenes", "3", "--metric", "ball-goal",
+                "-o", table), cli.err());
+        List<String> lines = Files.readAllLines(table);
+        assertTrue(lines.get(0).endsWith(",influence,action"), lines.get(0));
+        List<String> exported = lines.subList(1, lines.size()).stream().map(line -> line.split(",")[0]).toList();
+        assertEquals(shown.stream().sorted(java.util.Comparator.comparingInt(Integer::parseInt)).toList(), exported,
+                "the same scenes, in the file's order");
+        assertEquals(ExitCodes.USAGE, cli.run("export", "--format", "csv", file, "--key-scenes", "0", "-o", dir.resolve("y.csv")));
+        assertTrue(cli.err().contains("--key-scenes"), cli.err());
+        assertTrue(Files.notExists(dir.resolve("y.csv")), "nothing written on a usage error");
+    }
 }

@@ -3,6 +3,7 @@ package org.scenes.match;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
+import java.util.function.UnaryOperator;
 import org.scenes.scene.Scene;
 
 /**
@@ -26,12 +27,26 @@ public final class Recognizer {
     private final List<Scene> decoded;
     /** The knowledge base split by see age, or null when all its scenes have one age. */
     private final java.util.NavigableMap<Integer, AgePartition> byAge;
+    /** The second orientation queries are matched in (see {@link SceneTransform#queryImage}), or null. */
+    private final UnaryOperator<Scene> queryImage;
 
     public Recognizer(KnowledgeBase knowledge, Supplier<SceneMetric> metricFactory, int k) {
-        this(knowledge, metricFactory, k, true);
+        this(knowledge, metricFactory, k, null);
     }
 
-    private Recognizer(KnowledgeBase knowledge, Supplier<SceneMetric> metricFactory, int k, boolean splitByAge) {
+    /**
+     * @param queryImage null, or an involution (the mirror image): each query is then matched as it
+     *                   is and as its image, and a stored scene found for the image is returned as
+     *                   its own image, whose actions suit the query; as if the knowledge base held
+     *                   the images of its scenes too, without storing them
+     */
+    public Recognizer(KnowledgeBase knowledge, Supplier<SceneMetric> metricFactory, int k, UnaryOperator<Scene> queryImage) {
+        this(knowledge, metricFactory, k, true, queryImage);
+    }
+
+    private Recognizer(KnowledgeBase knowledge, Supplier<SceneMetric> metricFactory, int k, boolean splitByAge,
+                       UnaryOperator<Scene> queryImage) {
+        this.queryImage = queryImage;
         if (k < 1) {
             throw new IllegalArgumentException("k must be at least 1, not " + k);
         }
@@ -84,7 +99,7 @@ public final class Recognizer {
             List<Scene> scenes = new ArrayList<>(members.size());
             members.forEach(i -> scenes.add(knowledge.scene(i)));
             partitions.put(age, new AgePartition(new Recognizer(KnowledgeBase.of(knowledge.grid(), scenes),
-                    metricFactory, k, false), members.stream().mapToInt(Integer::intValue).toArray()));
+                    metricFactory, k, false, null), members.stream().mapToInt(Integer::intValue).toArray()));
         });
         return partitions;
     }
@@ -109,8 +124,33 @@ public final class Recognizer {
         return metrics.get();
     }
 
-    /** The min(k, size) stored scenes nearest to the query, nearest first, ties by index. */
+    /**
+     * The min(k, size) stored scenes nearest to the query, nearest first, ties by index. With a
+     * query image, the k nearest of the query's and its image's neighbours (those of the image
+     * returned as images, with their stored index); on equal distance the query's own come first.
+     */
     public List<Neighbour> nearest(Scene query) {
+        List<Neighbour> direct = nearestAsIs(query);
+        if (queryImage == null) {
+            return direct;
+        }
+        List<Neighbour> mirrored = nearestAsIs(queryImage.apply(query));
+        List<Neighbour> merged = new ArrayList<>(direct.size());
+        int d = 0;
+        int m = 0;
+        while (merged.size() < direct.size()) {
+            if (m < mirrored.size() && (d == direct.size()
+                    || Double.compare(mirrored.get(m).distance(), direct.get(d).distance()) < 0)) {
+                Neighbour found = mirrored.get(m++);
+                merged.add(new Neighbour(queryImage.apply(found.scene()), found.index(), found.distance()));
+            } else {
+                merged.add(direct.get(d++));
+            }
+        }
+        return merged;
+    }
+
+    private List<Neighbour> nearestAsIs(Scene query) {
         if (byAge != null) {
             return nearestOfAge(query);
         }

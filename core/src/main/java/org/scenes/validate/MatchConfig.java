@@ -6,7 +6,9 @@ import java.util.TreeMap;
 import java.util.function.Supplier;
 import org.scenes.match.ActionSelector;
 import org.scenes.match.ActionWeights;
+import org.scenes.match.KnowledgeBase;
 import org.scenes.match.ObjectWeights;
+import org.scenes.match.Recognizer;
 import org.scenes.match.SceneMetric;
 import org.scenes.match.SceneTransform;
 import org.scenes.plugin.PluginConfig;
@@ -94,6 +96,12 @@ public record MatchConfig(String metric, Map<String, String> metricOptions, Obje
     public Supplier<ActionSelector> selectorFactory(PluginRegistry registry) {
         PluginConfig config = base().withOptions(selectorOptions);
         return () -> registry.selector(selector, config);
+    }
+
+    /** The recognizer of this configuration on a knowledge base (with the transforms' query image, if any). */
+    public Recognizer recognizer(KnowledgeBase knowledge, PluginRegistry registry, int neighbours) {
+        return new Recognizer(knowledge, metricFactory(registry), neighbours,
+                SceneTransform.queryImage(transformFactory(registry).get()));
     }
 
     /** Fresh transforms for one sequence of scenes. */

@@ -202,7 +202,7 @@ public final class RandomSearch {
             int queries = 0;
             for (int fold = 0; fold < files.size(); fold++) {
                 KnowledgeBase train = knowledge(first, fold);
-                Recognizer recognizer = new Recognizer(train, first.metricFactory(registry), kMax);
+                Recognizer recognizer = first.recognizer(train, registry, kMax);
                 List<Scene> all = sequences.get(fold);
                 List<Scene> test = new ArrayList<>();
                 List<List<Neighbour>> found = new ArrayList<>();

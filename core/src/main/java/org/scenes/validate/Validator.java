@@ -78,7 +78,7 @@ public final class Validator {
     /** A whole run from a configuration: knowledge base from {@code train}, queries from {@code test}. */
     public static ValidationReport run(KnowledgeBase train, List<Scene> test, MatchConfig config,
                                        org.scenes.plugin.PluginRegistry registry, boolean parallel, Runnable progress) {
-        Recognizer recognizer = new Recognizer(train, config.metricFactory(registry), config.k());
+        Recognizer recognizer = config.recognizer(train, registry, config.k());
         return run(recognizer, config.selectorFactory(registry), test, config.seed(), parallel, progress);
     }
 

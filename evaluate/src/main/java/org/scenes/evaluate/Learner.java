@@ -85,7 +85,8 @@ public final class Learner {
 
     /** An imitator on a knowledge base already built (from scene files, say). */
     public static Imitator of(KnowledgeBase knowledge, Matching matching) {
-        Recognizer recognizer = new Recognizer(knowledge, matching.metric(), matching.k());
+        Recognizer recognizer = new Recognizer(knowledge, matching.metric(), matching.k(),
+                SceneTransform.queryImage(matching.transforms().get()));
         return new Imitator(ImitationBrain.factory(recognizer, matching.selector(), matching.transforms()),
                 knowledge.size());
     }

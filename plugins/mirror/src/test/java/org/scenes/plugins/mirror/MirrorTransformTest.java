@@ -2,12 +2,17 @@ package org.scenes.plugins.mirror;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.scenes.match.KnowledgeBase;
+import org.scenes.match.Neighbour;
+import org.scenes.match.Recognizer;
+import org.scenes.match.SceneMetric;
 import org.scenes.match.SceneTransform;
 import org.scenes.plugin.PluginConfig;
+import org.scenes.plugin.PluginException;
 import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.Action;
 import org.scenes.scene.Grid;
@@ -56,5 +61,46 @@ class MirrorTransformTest {
         KnowledgeBase knowledge = KnowledgeBase.builder(GRID).addSequence(List.of(original), List.of(mirror)).build();
         assertEquals(List.of(original, Mirror.of(original)), knowledge.scenes());
         assertEquals(List.of(original, Mirror.of(original)), KnowledgeBase.stored(List.of(original), List.of(mirror)));
+    }
+
+    /** A player that turns to the ball, seen at each of these directions. */
+    private static List<Scene> turnsToTheBall(double... directions) {
+        List<Scene> scenes = new java.util.ArrayList<>();
+        for (double direction : directions) {
+            SeenObject ball = SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, 10, direction, GRID);
+            scenes.add(new Scene(scenes.size(), Observer.UNKNOWN, List.of(ball), List.of(Action.turn(direction))));
+        }
+        return scenes;
+    }
+
+    @Test
+    void matchingBothOrientationsFindsWhatStoringBothFinds() {
+        SceneMetric ballDirection = (a, b) -> Math.abs(a.objects().get(0).direction() - b.objects().get(0).direction());
+        List<Scene> scenes = turnsToTheBall(-40, -25, -10, 5, 18, 33);
+        SceneTransform both = PluginRegistry.load().transform("mirror", PluginConfig.DEFAULT);
+        SceneTransform match = PluginRegistry.load().transform("mirror:match", PluginConfig.DEFAULT);
+        KnowledgeBase stored = KnowledgeBase.builder(GRID).addSequence(scenes, List.of(both)).build();
+        KnowledgeBase alone = KnowledgeBase.builder(GRID).addSequence(scenes, List.of(match)).build();
+        assertEquals(12, stored.size());
+        assertEquals(6, alone.size(), "mirror:match stores the scenes alone");
+        Recognizer storing = new Recognizer(stored, () -> ballDirection, 3);
+        Recognizer matching = new Recognizer(alone, () -> ballDirection, 3,
+                SceneTransform.queryImage(List.of(match)));
+        // queries off the half degrees, so no two stored scenes or images are equally near
+        for (Scene query : turnsToTheBall(-44.3, -37.3, -30.3, -23.3, -2.3, 4.7, 11.7, 25.7, 39.7)) {
+            List<Neighbour> expected = storing.nearest(query);
+            List<Neighbour> got = matching.nearest(query);
+            assertEquals(expected.stream().map(Neighbour::distance).toList(), got.stream().map(Neighbour::distance).toList());
+            assertEquals(expected.stream().map(n -> n.scene().actions()).toList(), got.stream().map(n -> n.scene().actions()).toList(),
+                    "a scene found for the mirrored query comes back mirrored, its turn with it");
+        }
+        assertEquals(List.of(Action.turn(-5)), matching.nearest(turnsToTheBall(-4).get(0)).get(0).scene().actions());
+    }
+
+    @Test
+    void refusesAnUnknownArgumentAndTwoQueryImages() {
+        assertThrows(PluginException.class, () -> PluginRegistry.load().transform("mirror:both", PluginConfig.DEFAULT));
+        SceneTransform match = PluginRegistry.load().transform("mirror:match", PluginConfig.DEFAULT);
+        assertThrows(IllegalArgumentException.class, () -> SceneTransform.queryImage(List.of(match, match)));
     }
 }
