@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
+import org.scenes.convert.LogFormat;
 import org.scenes.proxylog.Direction;
 import org.scenes.proxylog.MessageEscapes;
 import org.scenes.proxylog.ProxyLogLine;
