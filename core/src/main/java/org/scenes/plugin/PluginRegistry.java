@@ -176,7 +176,7 @@ public final class PluginRegistry {
         if (provider == null) {
             throw new PluginException("no " + kind.label() + " named '" + name + "'. Available " + kind.label() + "s: "
                     + String.join(", ", names(kind)) + ". A " + kind.label() + " from another jar needs that jar in a "
-                    + "plugin directory (--plugin-path DIR or " + PLUGIN_PATH_VARIABLE + ").");
+                    + "plugin directory (" + PLUGIN_PATH_VARIABLE + ").");
         }
         return provider;
     }

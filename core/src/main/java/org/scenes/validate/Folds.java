@@ -69,7 +69,7 @@ public final class Folds {
     public static Folds run(List<SceneFile> files, MatchConfig config, PluginRegistry registry, boolean parallel,
                             Runnable progress, Protocol protocol) {
         if (files.size() < 2) {
-            throw new IllegalArgumentException("--folds needs at least two scene files, not " + files.size());
+            throw new IllegalArgumentException("a fold validation needs at least two scene files, not " + files.size());
         }
         Grid grid = Grid.common(files);
         Sequences sequences = sequences(files, config, registry);
