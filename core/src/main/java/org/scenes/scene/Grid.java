@@ -110,12 +110,6 @@ public final class Grid {
         return first;
     }
 
-    /** {@link #common(List, List)} over scene files held in memory, each known by its source log. */
-    public static Grid common(List<SceneFile> files) {
-        return common(files.stream().map(f -> f.header().source().log()).toList(),
-                files.stream().map(SceneFile::grid).toList());
-    }
-
     /** "5x3 [-45,45] bounds 1,5": the form shown in reports and errors. */
     public String describe() {
         StringBuilder text = new StringBuilder().append(columns).append('x').append(rows())
