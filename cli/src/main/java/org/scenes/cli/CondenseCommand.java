@@ -61,14 +61,9 @@ final class CondenseCommand implements Callable<Integer> {
         PluginRegistry registry = top.global.registry();
         config.check(registry);
         List<Scene> scenes = new ArrayList<>();
-        Grid grid = null;
-        for (Path path : train) {
-            SceneFile file = SceneFileReader.read(path);
-            if (grid != null && !grid.equals(file.grid())) {
-                throw new IllegalArgumentException(path + ": grid " + file.grid().describe() + " differs from "
-                        + grid.describe() + " of " + train.get(0) + "; convert them with the same grid");
-            }
-            grid = file.grid();
+        List<SceneFile> files = train.stream().map(SceneFileReader::read).toList();
+        Grid grid = Grid.common(train, files.stream().map(SceneFile::grid).toList());
+        for (SceneFile file : files) {
             // what a knowledge base of these files would store (transforms such as mirror add scenes)
             scenes.addAll(KnowledgeBase.stored(file.scenes(), config.transformFactory(registry).get()));
         }

@@ -17,7 +17,7 @@ final class MatchOptions {
     List<Path> configFiles = new ArrayList<>();
 
     @Option(names = "--metric", paramLabel = "NAME", split = ",",
-            description = "Metric(s) (see 'scenes plugins'); several give one run each. Default: continuous.")
+            description = "Metric(s) (see 'scenes plugins'); several give one run each. Default: ball-goal.")
     List<String> metrics;
 
     @Option(names = "--k", paramLabel = "N", split = ",",

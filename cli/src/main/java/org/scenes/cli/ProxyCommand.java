@@ -13,7 +13,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import org.scenes.logproxy.ClientKind;
-import org.scenes.logproxy.LogFormat;
+import org.scenes.convert.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.ProxyStats;

@@ -2,6 +2,8 @@ package org.scenes.cli;
 
 import java.io.PrintWriter;
 import org.scenes.plugin.PluginException;
+import org.scenes.plugin.PluginRegistry;
+import org.scenes.scene.Grid;
 import org.scenes.scene.SceneFileException;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -74,6 +76,15 @@ final class ScenesCommand implements Runnable {
     }
 
     private static String message(Throwable e) {
+        if (e instanceof Grid.MismatchException) {
+            // core names no flags; these are the ones that set a grid
+            return e.getMessage() + "; convert them with the same --grid and --bounds";
+        }
+        String directories = "(" + PluginRegistry.PLUGIN_PATH_VARIABLE + ").";
+        if (e instanceof PluginException && e.getMessage().endsWith(directories)) {
+            // an unknown plugin: the registry names the variable, the command line adds its option
+            return e.getMessage().replace(directories, "(--plugin-path DIR or " + PluginRegistry.PLUGIN_PATH_VARIABLE + ").");
+        }
         if (e instanceof SceneFileException || e instanceof UsageException || e instanceof PluginException) {
             return e.getMessage();
         }

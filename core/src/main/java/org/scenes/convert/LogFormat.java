@@ -1,42 +1,51 @@
 package org.scenes.convert;
 
+import org.scenes.proxylog.ProxyLogLine;
+
 /**
- * The log formats {@link LogReader} understands, told apart by their first line.
+ * Every log format of the project, each named once: {@link LogReader} reads all three, told apart
+ * by their first line; the logging proxy writes {@link #NATIVE} or {@link #LSF}.
  */
 public enum LogFormat {
     /**
      * The classic logging proxy's {@code .lsf}: one message per line, server messages and the
      * player's commands interleaved, no time and no direction.
      */
-    LSF("lsf"),
+    LSF("lsf", "lsf"),
     /**
-     * The project's own proxy log: first line {@code #scenes-proxy-log 1}, then
-     * {@code <seconds> <c2s|s2c> <escaped message>}; other {@code #} lines are comments.
+     * The project's own (native) proxy log, {@code docs/proxy-log-format.md}: first line
+     * {@link ProxyLogLine#HEADER}, then {@code <seconds> <c2s|s2c> <escaped message>}; other
+     * {@code #} lines are comments. {@link ProxyLogLine} is its codec.
      */
-    PROXY("proxy"),
+    NATIVE("native", "log"),
     /**
      * A timestamped capture of real rcssserver traffic:
      * {@code <unix time> <client->server|server->client> <client port> <message>}.
      */
-    CAPTURE("capture");
-
-    static final String PROXY_MAGIC = "#scenes-proxy-log 1";
+    CAPTURE("capture", null);
 
     private final String label;
+    private final String extension;
 
-    LogFormat(String label) {
+    LogFormat(String label, String extension) {
         this.label = label;
+        this.extension = extension;
     }
 
     public String label() {
         return label;
     }
 
+    /** The file name extension the logging proxy gives this format; null for a capture, which it does not write. */
+    public String extension() {
+        return extension;
+    }
+
     /** The format of a log whose first non-blank line is {@code bytes[0, length)}; null when none fits. */
     static LogFormat detect(byte[] bytes, int length) {
-        String magic = PROXY_MAGIC;
+        String magic = ProxyLogLine.HEADER;
         if (length >= magic.length() && startsWith(bytes, 0, length, magic)) {
-            return PROXY;
+            return NATIVE;
         }
         if (length > 0 && bytes[0] == '(') {
             return LSF;

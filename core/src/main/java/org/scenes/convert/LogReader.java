@@ -9,6 +9,7 @@ import java.util.Arrays;
 import org.scenes.files.Inputs;
 import org.scenes.proxylog.Direction;
 import org.scenes.proxylog.MessageEscapes;
+import org.scenes.proxylog.ProxyLogLine;
 
 /**
  * Streams the messages of one player log, whatever its {@link LogFormat} (detected from the first
@@ -53,11 +54,11 @@ public final class LogReader implements AutoCloseable {
                 if (detected == null) {
                     String first = new String(line, 0, Math.min(lineLength, 60), StandardCharsets.UTF_8);
                     throw new LogException(file, lineNumber, "not a player log (expected an .lsf line '(...)', '"
-                            + LogFormat.PROXY_MAGIC + "' or a capture line '<time> client->server <port> (...)'),"
+                            + ProxyLogLine.HEADER + "' or a capture line '<time> client->server <port> (...)'),"
                             + " found: " + first, null);
                 }
                 this.format = detected;
-                this.firstLinePending = detected != LogFormat.PROXY;
+                this.firstLinePending = detected != LogFormat.NATIVE;
                 return;
             }
         }
@@ -126,7 +127,7 @@ public final class LogReader implements AutoCloseable {
             }
             boolean message = switch (format) {
                 case LSF -> lsf();
-                case PROXY -> proxy();
+                case NATIVE -> proxy();
                 case CAPTURE -> capture();
             };
             if (message) {

@@ -157,11 +157,7 @@ public final class SceneConverter {
         List<VisualObject> objects = see.objects();
         List<SeenObject> seen = new ArrayList<>(objects.size());
         for (VisualObject object : objects) {
-            seen.add(new SeenObject(object.kind(), object.name(), object.team(), object.uniformNumber(),
-                    object.goalie(), relation(object, observer), object.distance(), object.direction(),
-                    object.distanceChange(), object.directionChange(), object.bodyFacing(),
-                    object.headFacing(), object.pointingDirection(), object.mark(),
-                    grid.cell(object.distance(), object.direction())));
+            seen.add(object.seen(relation(object, observer), grid));
         }
         return seen;
     }

@@ -80,7 +80,7 @@ public final class KnowledgeBase {
         if (files.isEmpty()) {
             throw new IllegalArgumentException("a knowledge base needs at least one scene file");
         }
-        Builder builder = builder(Grid.common(files));
+        Builder builder = builder(SceneFile.commonGrid(files));
         for (SceneFile file : files) {
             builder.addSequence(file.scenes(), transforms.get());
         }

@@ -170,12 +170,7 @@ public final class Recognizer {
                 top.offer(metric.distance(query, decoded.get(i)), i);
             }
         }
-        List<Neighbour> result = new ArrayList<>(top.size());
-        for (int slot : top.sortedSlots()) {
-            int index = top.index(slot);
-            result.add(new Neighbour(knowledge.scene(index), index, top.distance(slot)));
-        }
-        return result;
+        return top.neighbours(knowledge::scene);
     }
 
     /** Searches the partition of the query's see age, or of the nearest age stored (the lower on a tie). */
@@ -191,11 +186,5 @@ public final class Recognizer {
             result.add(new Neighbour(neighbour.scene(), partition.indices()[neighbour.index()], neighbour.distance()));
         }
         return result;
-    }
-
-    /** Orders by distance, then index; NaN distances count as farthest. */
-    static int compare(double distanceA, int indexA, double distanceB, int indexB) {
-        int byDistance = Double.compare(distanceA, distanceB);
-        return byDistance != 0 ? byDistance : Integer.compare(indexA, indexB);
     }
 }

@@ -1,5 +1,10 @@
 package org.scenes.match;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.IntFunction;
+import org.scenes.scene.Scene;
+
 /**
  * The k best (distance, index) pairs seen so far, as a bounded max-heap whose root is the worst
  * kept. Equal distances are ordered by index, so a scan in index order keeps the earliest scene,
@@ -59,7 +64,7 @@ public final class TopK {
             }
             return;
         }
-        if (Recognizer.compare(newDistance, newIndex, distance[0], index[0]) >= 0) {
+        if (compare(newDistance, newIndex, distance[0], index[0]) >= 0) {
             return;
         }
         distance[0] = newDistance;
@@ -83,30 +88,33 @@ public final class TopK {
         }
     }
 
-    /** Slots in order nearest first (ties by index). */
-    int[] sortedSlots() {
+    /**
+     * The kept pairs as neighbours, nearest first (ties by index).
+     *
+     * @param scenes the stored scene of each index
+     * @return at most {@link #capacity()} neighbours
+     */
+    public List<Neighbour> neighbours(IntFunction<Scene> scenes) {
         Integer[] order = new Integer[size];
         for (int i = 0; i < size; i++) {
             order[i] = i;
         }
         java.util.Arrays.sort(order, (a, b) -> compare(a, b));
-        int[] slots = new int[size];
-        for (int i = 0; i < size; i++) {
-            slots[i] = order[i];
+        List<Neighbour> result = new ArrayList<>(size);
+        for (int slot : order) {
+            result.add(new Neighbour(scenes.apply(index[slot]), index[slot], distance[slot]));
         }
-        return slots;
+        return result;
     }
 
-    double distance(int slot) {
-        return distance[slot];
-    }
-
-    int index(int slot) {
-        return index[slot];
+    /** Orders by distance, then index; NaN distances count as farthest. */
+    static int compare(double distanceA, int indexA, double distanceB, int indexB) {
+        int byDistance = Double.compare(distanceA, distanceB);
+        return byDistance != 0 ? byDistance : Integer.compare(indexA, indexB);
     }
 
     private int compare(int a, int b) {
-        return Recognizer.compare(distance[a], index[a], distance[b], index[b]);
+        return compare(distance[a], index[a], distance[b], index[b]);
     }
 
     private void swap(int a, int b) {

@@ -25,4 +25,17 @@ public enum PluginKind {
     public Class<? extends NamedProvider> service() {
         return service;
     }
+
+    /**
+     * @param service one of the three service interfaces
+     * @return the kind loaded through it
+     */
+    public static PluginKind of(Class<? extends NamedProvider> service) {
+        for (PluginKind kind : values()) {
+            if (kind.service == service) {
+                return kind;
+            }
+        }
+        throw new IllegalArgumentException(service.getName() + " is not a plugin service interface");
+    }
 }

@@ -143,18 +143,30 @@ public final class PluginRegistry {
     }
 
     public SceneMetric metric(String spec, PluginConfig config) {
-        MetricProvider provider = (MetricProvider) find(PluginKind.METRIC, spec);
+        MetricProvider provider = provider(MetricProvider.class, spec);
         return provider.create(configure(PluginKind.METRIC, provider, spec, config));
     }
 
     public ActionSelector selector(String spec, PluginConfig config) {
-        SelectorProvider provider = (SelectorProvider) find(PluginKind.SELECTOR, spec);
+        SelectorProvider provider = provider(SelectorProvider.class, spec);
         return provider.create(configure(PluginKind.SELECTOR, provider, spec, config));
     }
 
     public SceneTransform transform(String spec, PluginConfig config) {
-        TransformProvider provider = (TransformProvider) find(PluginKind.TRANSFORM, spec);
+        TransformProvider provider = provider(TransformProvider.class, spec);
         return provider.create(configure(PluginKind.TRANSFORM, provider, spec, config));
+    }
+
+    /**
+     * The provider of one service interface that a spec names, typed: no cast at the caller.
+     *
+     * @param service {@link MetricProvider}, {@link SelectorProvider} or {@link TransformProvider}
+     * @param spec the provider's name, optionally followed by {@code :argument}
+     * @return the provider
+     * @throws PluginException when no provider of that kind has the name
+     */
+    public <P extends NamedProvider> P provider(Class<P> service, String spec) {
+        return service.cast(find(PluginKind.of(service), spec));
     }
 
     /** The provider a spec names; fails with the list of available names. */
@@ -164,7 +176,7 @@ public final class PluginRegistry {
         if (provider == null) {
             throw new PluginException("no " + kind.label() + " named '" + name + "'. Available " + kind.label() + "s: "
                     + String.join(", ", names(kind)) + ". A " + kind.label() + " from another jar needs that jar in a "
-                    + "plugin directory (--plugin-path DIR or " + PLUGIN_PATH_VARIABLE + ").");
+                    + "plugin directory (" + PLUGIN_PATH_VARIABLE + ").");
         }
         return provider;
     }

@@ -103,6 +103,45 @@ public record ProxyLogLine(long micros, Direction direction, byte[] message) {
         return out.toString();
     }
 
+    /**
+     * Writes one message line as {@link #format()} does, without the line break and without
+     * allocating: the form the logging proxy's writer thread gives every datagram.
+     *
+     * @param target room for the line: 28 bytes plus {@link MessageEscapes#maxEscapedLength} of the message
+     * @return the end of the line in {@code target}
+     */
+    public static int write(long micros, Direction direction, byte[] message, int offset, int length, byte[] target) {
+        int end = writeSeconds(target, micros);
+        target[end++] = ' ';
+        String token = direction.token();
+        for (int i = 0; i < token.length(); i++) {
+            target[end++] = (byte) token.charAt(i);
+        }
+        target[end++] = ' ';
+        return MessageEscapes.escape(message, offset, length, target, end);
+    }
+
+    /** Seconds with six fraction digits, written from the start of {@code target}; returns the end. */
+    static int writeSeconds(byte[] target, long micros) {
+        long seconds = micros / 1_000_000L;
+        int digits = 1;
+        for (long rest = seconds / 10; rest > 0; rest /= 10) {
+            digits++;
+        }
+        for (int i = digits - 1; i >= 0; i--) {
+            target[i] = (byte) ('0' + seconds % 10);
+            seconds /= 10;
+        }
+        int end = digits;
+        target[end++] = '.';
+        long fraction = micros % 1_000_000L;
+        for (int i = 5; i >= 0; i--) {
+            target[end + i] = (byte) ('0' + fraction % 10);
+            fraction /= 10;
+        }
+        return end + 6;
+    }
+
     /** Appends microseconds as seconds with exactly 6 fraction digits. */
     public static void appendSeconds(StringBuilder out, long micros) {
         out.append(micros / 1_000_000L).append('.');

@@ -103,6 +103,7 @@ public final class Grid {
      * the first source whose grid differs is named beside the first source's.
      *
      * @param sources what the user knows each grid by (a file name), in the order of {@code grids}
+     * @throws MismatchException when two grids differ: a fault of the data, not of the call
      */
     public static Grid common(List<?> sources, List<Grid> grids) {
         if (grids.isEmpty() || sources.size() != grids.size()) {
@@ -111,17 +112,11 @@ public final class Grid {
         Grid first = grids.get(0);
         for (int i = 1; i < grids.size(); i++) {
             if (!grids.get(i).equals(first)) {
-                throw new IllegalArgumentException(sources.get(i) + ": grid " + grids.get(i).describe() + " differs from "
-                        + first.describe() + " of " + sources.get(0) + "; convert them with the same --grid and --bounds");
+                throw new MismatchException(sources.get(i) + ": grid " + grids.get(i).describe() + " differs from "
+                        + first.describe() + " of " + sources.get(0));
             }
         }
         return first;
-    }
-
-    /** {@link #common(List, List)} over scene files held in memory, each known by its source log. */
-    public static Grid common(List<SceneFile> files) {
-        return common(files.stream().map(f -> f.header().source().log()).toList(),
-                files.stream().map(SceneFile::grid).toList());
     }
 
     /** "5x3 [-45,45] bounds 1,5": the form shown in reports and errors. */
@@ -152,5 +147,12 @@ public final class Grid {
     @Override
     public String toString() {
         return "Grid " + describe();
+    }
+
+    /** Scenes made with different grids were to be matched together; the message names both sources. */
+    public static final class MismatchException extends RuntimeException {
+        MismatchException(String message) {
+            super(message);
+        }
     }
 }

@@ -11,4 +11,10 @@ public record SceneFile(SceneFileHeader header, List<Scene> scenes) {
     public Grid grid() {
         return header.grid();
     }
+
+    /** {@link Grid#common(List, List)} over scene files held in memory, each known by its source log. */
+    public static Grid commonGrid(List<SceneFile> files) {
+        return Grid.common(files.stream().map(f -> f.header().source().log()).toList(),
+                files.stream().map(SceneFile::grid).toList());
+    }
 }

@@ -69,9 +69,9 @@ public final class Folds {
     public static Folds run(List<SceneFile> files, MatchConfig config, PluginRegistry registry, boolean parallel,
                             Runnable progress, Protocol protocol) {
         if (files.size() < 2) {
-            throw new IllegalArgumentException("--folds needs at least two scene files, not " + files.size());
+            throw new IllegalArgumentException("a fold validation needs at least two scene files, not " + files.size());
         }
-        Grid grid = Grid.common(files);
+        Grid grid = SceneFile.commonGrid(files);
         Sequences sequences = sequences(files, config, registry);
         List<ValidationReport> reports = new ArrayList<>();
         for (int i = 0; i < files.size(); i++) {
@@ -114,7 +114,7 @@ public final class Folds {
 
     /** The queries and stored scenes of every file; all files must share one grid. */
     public static Sequences sequences(List<SceneFile> files, MatchConfig config, PluginRegistry registry) {
-        Grid.common(files);
+        SceneFile.commonGrid(files);
         List<List<Scene>> queries = new ArrayList<>();
         List<List<Scene>> stored = new ArrayList<>();
         for (SceneFile file : files) {

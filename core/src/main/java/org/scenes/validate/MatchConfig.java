@@ -33,7 +33,7 @@ public record MatchConfig(String metric, Map<String, String> metricOptions, Obje
                           ActionWeights actionWeights, int k, String selector, Map<String, String> selectorOptions,
                           List<String> transforms, long seed) {
 
-    public static final MatchConfig DEFAULT = new MatchConfig("continuous", Map.of(), ObjectWeights.DEFAULT,
+    public static final MatchConfig DEFAULT = new MatchConfig("ball-goal", Map.of(), ObjectWeights.DEFAULT,
             ActionWeights.DEFAULT, 1, "first-valid", Map.of(), List.of(), 1L);
 
     public MatchConfig {

@@ -173,7 +173,7 @@ class SceneConverterTest {
                 "0.100000 s2c (see 0 ((b) 10 0))", "0.110000 c2s (say \"a\\\\b\\x41\")", "0.120000 c2s (dash 50)",
                 "0.130000 s2c", "0.200000 s2c (see 1 ((b) 9 0))");
         try (LogReader reader = LogReader.open(file)) {
-            assertEquals(LogFormat.PROXY, reader.format());
+            assertEquals(LogFormat.NATIVE, reader.format());
             assertTrue(reader.next());
             assertEquals("(init Carleton (version 9))", reader.text());
             assertEquals(Direction.CLIENT_TO_SERVER, reader.direction());

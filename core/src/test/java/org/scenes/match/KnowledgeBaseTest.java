@@ -112,7 +112,7 @@ class KnowledgeBaseTest {
 
         Grid other = Grid.of(3, 2);
         Path c = write(dir.resolve("c.json"), other, second.stream().map(s -> s.regrid(other)).toList());
-        IllegalArgumentException mixed = assertThrows(IllegalArgumentException.class,
+        Grid.MismatchException mixed = assertThrows(Grid.MismatchException.class,
                 () -> KnowledgeBase.load(List.of(a, c), List::of));
         assertTrue(mixed.getMessage().startsWith(c.toString()), mixed.getMessage());
     }

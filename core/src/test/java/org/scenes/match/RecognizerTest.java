@@ -63,8 +63,8 @@ class RecognizerTest {
                 new org.scenes.scene.SceneSource("a", TestScenes.OBSERVER)), List.of());
         org.scenes.scene.SceneFile b = new org.scenes.scene.SceneFile(org.scenes.scene.SceneFileHeader.of(Grid.of(3, 2),
                 new org.scenes.scene.SceneSource("b", TestScenes.OBSERVER)), List.of());
-        IllegalArgumentException error = assertThrows(IllegalArgumentException.class,
+        Grid.MismatchException error = assertThrows(Grid.MismatchException.class,
                 () -> KnowledgeBase.fromFiles(List.of(a, b), List::of));
-        assertEquals(true, error.getMessage().startsWith("b: grid 3x2") && error.getMessage().contains("of a;"), error.getMessage());
+        assertEquals("b: grid 3x2 [-45,45] bounds 2 differs from 5x3 [-45,45] bounds 1,5 of a", error.getMessage());
     }
 }

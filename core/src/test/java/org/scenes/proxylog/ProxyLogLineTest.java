@@ -44,4 +44,21 @@ class ProxyLogLineTest {
         assertTrue(ProxyLogLine.isComment(ProxyLogLine.HEADER));
         assertTrue(ProxyLogLine.isComment("# team Carleton unum 3 side l"));
     }
+
+    @Test
+    void theAllocationFreeWriterWritesWhatFormatWrites() {
+        byte[] message = "(see 0 ((b) 1 2))\n\u0000x".getBytes(StandardCharsets.UTF_8);
+        long[] samples = {0, 1, 999_999, 1_000_000, 9_000_042, 10_500_000, 3_600_123_456L, Long.MAX_VALUE / 1000};
+        for (long micros : samples) {
+            for (Direction direction : Direction.values()) {
+                byte[] target = new byte[28 + MessageEscapes.maxEscapedLength(message.length + 2)];
+                // written from an offset inside a larger buffer, as the proxy hands datagrams over
+                byte[] data = new byte[message.length + 2];
+                System.arraycopy(message, 0, data, 1, message.length);
+                int end = ProxyLogLine.write(micros, direction, data, 1, message.length, target);
+                assertEquals(new ProxyLogLine(micros, direction, message).format(),
+                        new String(target, 0, end, StandardCharsets.UTF_8));
+            }
+        }
+    }
 }

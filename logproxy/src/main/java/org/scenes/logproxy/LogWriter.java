@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
+import org.scenes.convert.LogFormat;
 import org.scenes.proxylog.Direction;
 import org.scenes.proxylog.MessageEscapes;
 import org.scenes.proxylog.ProxyLogLine;
@@ -142,16 +143,9 @@ final class LogWriter implements Runnable {
                 log.pendingIdentity = true;
             }
         }
-        int end = 0;
-        if (format == LogFormat.NATIVE) {
-            end = writeSeconds(line, nanos / 1000);
-            line[end++] = ' ';
-            line[end++] = direction == Direction.CLIENT_TO_SERVER ? (byte) 'c' : (byte) 's';
-            line[end++] = '2';
-            line[end++] = direction == Direction.CLIENT_TO_SERVER ? (byte) 's' : (byte) 'c';
-            line[end++] = ' ';
-        }
-        end = MessageEscapes.escape(data, offset, length, line, end);
+        int end = format == LogFormat.NATIVE
+                ? ProxyLogLine.write(nanos / 1000, direction, data, offset, length, line)
+                : MessageEscapes.escape(data, offset, length, line, 0);
         line[end++] = '\n';
         write(log, line, end);
         log.messages++;
@@ -169,27 +163,6 @@ final class LogWriter implements Runnable {
         }
         byte[] comment = ("# " + text.replace('\n', ' ').replace('\r', ' ') + "\n").getBytes(StandardCharsets.UTF_8);
         write(log, comment, comment.length);
-    }
-
-    /** Seconds with six fraction digits, written without allocating; returns the end. */
-    static int writeSeconds(byte[] target, long micros) {
-        long seconds = micros / 1_000_000L;
-        int digits = 1;
-        for (long rest = seconds / 10; rest > 0; rest /= 10) {
-            digits++;
-        }
-        for (int i = digits - 1; i >= 0; i--) {
-            target[i] = (byte) ('0' + seconds % 10);
-            seconds /= 10;
-        }
-        int end = digits;
-        target[end++] = '.';
-        long fraction = micros % 1_000_000L;
-        for (int i = 5; i >= 0; i--) {
-            target[end + i] = (byte) ('0' + fraction % 10);
-            fraction /= 10;
-        }
-        return end + 6;
     }
 
     private void write(SessionLog log, byte[] bytes, int length) {

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.function.Consumer;
+import org.scenes.convert.LogFormat;
 
 /**
  * Everything the proxy needs.
@@ -38,6 +39,10 @@ public record ProxyConfig(InetAddress bindAddress, List<Route> routes, Path outD
         }
         if (endGrace.isNegative() || endGrace.isZero()) {
             throw new IllegalArgumentException("end grace must be positive: " + endGrace);
+        }
+        if (format.extension() == null) {
+            throw new IllegalArgumentException("the proxy writes " + LogFormat.NATIVE.label() + " or " + LogFormat.LSF.label()
+                    + " logs, not " + format.label());
         }
         if (maxClients < 1) {
             throw new IllegalArgumentException("max clients must be positive: " + maxClients);

@@ -21,7 +21,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import org.scenes.logproxy.ClientKind;
-import org.scenes.logproxy.LogFormat;
+import org.scenes.convert.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.ProxyStats;

@@ -23,7 +23,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 import org.scenes.convert.SceneConverter;
 import org.scenes.files.Inputs;
 import org.scenes.logproxy.ClientKind;
-import org.scenes.logproxy.LogFormat;
+import org.scenes.convert.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.Route;

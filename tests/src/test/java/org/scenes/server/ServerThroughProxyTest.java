@@ -32,7 +32,7 @@ import org.scenes.agent.teacher.Teachers;
 import org.scenes.convert.ConversionReport;
 import org.scenes.convert.SceneConverter;
 import org.scenes.logproxy.ClientKind;
-import org.scenes.logproxy.LogFormat;
+import org.scenes.convert.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.Route;

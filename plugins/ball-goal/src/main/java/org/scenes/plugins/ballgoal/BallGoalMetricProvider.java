@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Map;
 import org.scenes.match.EncodedMetric;
 import org.scenes.match.MetricProvider;
-import org.scenes.match.ObjectSetMetric;
+import org.scenes.match.ObjectSetMetrics;
 import org.scenes.match.PackedMetric;
 import org.scenes.match.SceneMetric;
 import org.scenes.plugin.PluginConfig;
@@ -151,7 +151,7 @@ public final class BallGoalMetricProvider implements MetricProvider {
             if (previous != null) {
                 place(previous, features, 8);
             }
-            features[16] = previous == null ? -1 : ObjectSetMetric.actionClass(previous);
+            features[16] = previous == null ? -1 : ObjectSetMetrics.actionClass(previous);
             return features;
         }
 

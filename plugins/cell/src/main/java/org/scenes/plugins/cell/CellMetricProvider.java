@@ -3,7 +3,7 @@ package org.scenes.plugins.cell;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import org.scenes.match.MetricProvider;
-import org.scenes.match.ObjectSetMetric;
+import org.scenes.match.ObjectSetMetrics;
 import org.scenes.match.SceneMetric;
 import org.scenes.plugin.PluginConfig;
 
@@ -21,7 +21,7 @@ public final class CellMetricProvider implements MetricProvider {
 
     @Override
     public Map<String, String> options() {
-        Map<String, String> options = new LinkedHashMap<>(ObjectSetMetric.options(false));
+        Map<String, String> options = new LinkedHashMap<>(ObjectSetMetrics.options(false));
         options.remove("space");
         options.remove("log-distance");
         options.remove("distance-weight");
@@ -36,6 +36,6 @@ public final class CellMetricProvider implements MetricProvider {
         Map<String, String> options = new LinkedHashMap<>(config.options());
         options.putIfAbsent("penalty", "1");
         options.putIfAbsent("penalty-scale", "1");
-        return ObjectSetMetric.create(config.withOptions(options), ObjectSetMetric.Space.CELL, 0);
+        return ObjectSetMetrics.cells(config.withOptions(options));
     }
 }

@@ -2,7 +2,7 @@ package org.scenes.plugins.continuous;
 
 import java.util.Map;
 import org.scenes.match.MetricProvider;
-import org.scenes.match.ObjectSetMetric;
+import org.scenes.match.ObjectSetMetrics;
 import org.scenes.match.SceneMetric;
 import org.scenes.plugin.PluginConfig;
 
@@ -20,11 +20,11 @@ public final class ContinuousMetricProvider implements MetricProvider {
 
     @Override
     public Map<String, String> options() {
-        return ObjectSetMetric.options(false);
+        return ObjectSetMetrics.options(false);
     }
 
     @Override
     public SceneMetric create(PluginConfig config) {
-        return ObjectSetMetric.create(config, ObjectSetMetric.Space.CARTESIAN, 0);
+        return ObjectSetMetrics.cartesian(config, 0);
     }
 }

@@ -4,10 +4,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
 import org.scenes.match.EncodedMetric;
-import org.scenes.match.KnowledgeBase;
 import org.scenes.match.Neighbour;
-import org.scenes.match.ObjectSetMetric;
-import org.scenes.match.Recognizer;
+import org.scenes.match.NearestScenes;
+import org.scenes.match.ObjectSetMetrics;
 import org.scenes.match.SceneMetric;
 import org.scenes.scene.Grid;
 import org.scenes.scene.Scene;
@@ -59,19 +58,19 @@ public final class Condenser {
     }
 
     private List<Scene> edit(Grid grid, List<Scene> scenes) {
-        Recognizer recognizer = new Recognizer(KnowledgeBase.of(grid, scenes), metrics, editK + 1);
+        NearestScenes search = NearestScenes.of(grid, scenes, metrics, editK + 1);
         List<Scene> kept = new ArrayList<>(scenes.size());
         for (int i = 0; i < scenes.size(); i++) {
             Scene scene = scenes.get(i);
-            int own = ObjectSetMetric.actionClass(scene);
+            int own = ObjectSetMetrics.actionClass(scene);
             int agree = 0;
             int others = 0;
-            for (Neighbour neighbour : recognizer.nearest(scene)) {
+            for (Neighbour neighbour : search.nearest(scene)) {
                 if (neighbour.index() == i || others == editK) {
                     continue;
                 }
                 others++;
-                agree += ObjectSetMetric.actionClass(neighbour.scene()) == own ? 1 : 0;
+                agree += ObjectSetMetrics.actionClass(neighbour.scene()) == own ? 1 : 0;
             }
             if (others == 0 || 2 * agree >= others) {
                 kept.add(scene);
@@ -89,7 +88,7 @@ public final class Condenser {
         int[] classes = new int[scenes.size()];
         for (int i = 0; i < forms.length; i++) {
             forms[i] = fast == null ? scenes.get(i) : fast.encode(scenes.get(i));
-            classes[i] = ObjectSetMetric.actionClass(scenes.get(i));
+            classes[i] = ObjectSetMetrics.actionClass(scenes.get(i));
         }
         boolean[] kept = new boolean[forms.length];
         List<Integer> store = new ArrayList<>();

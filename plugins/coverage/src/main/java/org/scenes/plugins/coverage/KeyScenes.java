@@ -4,10 +4,9 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.function.Supplier;
-import org.scenes.match.KnowledgeBase;
 import org.scenes.match.Neighbour;
-import org.scenes.match.ObjectSetMetric;
-import org.scenes.match.Recognizer;
+import org.scenes.match.NearestScenes;
+import org.scenes.match.ObjectSetMetrics;
 import org.scenes.match.SceneMetric;
 import org.scenes.scene.ActionType;
 import org.scenes.scene.Grid;
@@ -97,16 +96,16 @@ public final class KeyScenes {
     public static List<Ranked> rank(Grid grid, List<Scene> scenes, Supplier<SceneMetric> metrics, int top) {
         int[] influence = new int[scenes.size()];
         if (scenes.size() > 2) {
-            Recognizer recognizer = new Recognizer(KnowledgeBase.of(grid, scenes), metrics, 3);
+            NearestScenes search = NearestScenes.of(grid, scenes, metrics, 3);
             for (int i = 0; i < scenes.size(); i++) {
                 List<Neighbour> others = new ArrayList<>(2);
-                for (Neighbour neighbour : recognizer.nearest(scenes.get(i))) {
+                for (Neighbour neighbour : search.nearest(scenes.get(i))) {
                     if (neighbour.index() != i && others.size() < 2) {
                         others.add(neighbour);
                     }
                 }
-                if (others.size() == 2 && ObjectSetMetric.actionClass(others.get(0).scene())
-                        != ObjectSetMetric.actionClass(others.get(1).scene())) {
+                if (others.size() == 2 && ObjectSetMetrics.actionClass(others.get(0).scene())
+                        != ObjectSetMetrics.actionClass(others.get(1).scene())) {
                     influence[others.get(0).index()]++;
                 }
             }

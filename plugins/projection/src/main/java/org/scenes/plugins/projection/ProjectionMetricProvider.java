@@ -3,7 +3,7 @@ package org.scenes.plugins.projection;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import org.scenes.match.MetricProvider;
-import org.scenes.match.ObjectSetMetric;
+import org.scenes.match.ObjectSetMetrics;
 import org.scenes.match.SceneMetric;
 import org.scenes.plugin.PluginConfig;
 
@@ -25,13 +25,13 @@ public final class ProjectionMetricProvider implements MetricProvider {
 
     @Override
     public Map<String, String> options() {
-        Map<String, String> options = new LinkedHashMap<>(ObjectSetMetric.options(true));
+        Map<String, String> options = new LinkedHashMap<>(ObjectSetMetrics.options(true));
         options.put("space", "cartesian or polar (default cartesian)");
         return options;
     }
 
     @Override
     public SceneMetric create(PluginConfig config) {
-        return ObjectSetMetric.create(config, ObjectSetMetric.Space.CARTESIAN, 1);
+        return ObjectSetMetrics.cartesian(config, 1);
     }
 }
