@@ -50,11 +50,20 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * @param projectCycles objects moved this many cycles forward (negative: back) by their changes
      * @param memoryWeight weight of the distance between remembered previous scenes
      * @param memoryActionWeight cost when the remembered previous actions differ in type
+     * @param memoryDepth how many previous actions that cost compares (1 to {@link Scene#MAX_MEMORY})
+     * @param memoryDecay the i-th action back costs {@code memoryActionWeight · memoryDecay^(i-1)}
      */
     public record Settings(ObjectWeights weights, Matching matching, Space space, boolean logDistance,
                            double distanceWeight, double directionWeight, double rowWeight, double penalty, double penaltyScale,
-                           double projectCycles, double memoryWeight, double memoryActionWeight) {
+                           double projectCycles, double memoryWeight, double memoryActionWeight, int memoryDepth,
+                           double memoryDecay) {
         public Settings {
+            if (memoryDepth < 1 || memoryDepth > Scene.MAX_MEMORY) {
+                throw new PluginException("memory-depth must be a whole number from 1 to " + Scene.MAX_MEMORY + ", not " + memoryDepth);
+            }
+            if (!(memoryDecay >= 0) || Double.isInfinite(memoryDecay)) {
+                throw new PluginException("memory-decay must be finite and not negative, not " + memoryDecay);
+            }
             for (double value : new double[] {distanceWeight, directionWeight, rowWeight, penalty, memoryWeight, memoryActionWeight}) {
                 if (!(value >= 0) || Double.isInfinite(value)) {
                     throw new PluginException("metric weights and penalties must be finite and not negative");
@@ -78,6 +87,9 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         options.put("penalty-scale", "distance at which the unmatched penalty halves (default 10)");
         options.put("memory", "weight of the remembered previous scene (needs the memory transform; default 0)");
         options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
+        options.put("memory-depth", "previous actions memory-action compares, 1 to " + Scene.MAX_MEMORY
+                + " (default 1); the i-th back costs memory-action · memory-decay^(i-1)");
+        options.put("memory-decay", "factor of each further action back (default 0.5)");
         options.put("index", "true (default) to search an exact index when every weighted group holds at most one object"
                 + " per scene (ball, goals); false to scan every scene");
         if (projection) {
@@ -123,7 +135,16 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 config.doubleOption("row-weight", 0),
                 config.doubleOption("penalty", 10), config.doubleOption("penalty-scale", 10),
                 config.doubleOption("cycles", defaultProjection), config.doubleOption("memory", 0),
-                config.doubleOption("memory-action", 0));
+                config.doubleOption("memory-action", 0), memoryDepth(config), config.doubleOption("memory-decay", 0.5));
+    }
+
+    private static int memoryDepth(PluginConfig config) {
+        double depth = config.doubleOption("memory-depth", 1);
+        if (depth != Math.rint(depth) || depth < 1 || depth > Scene.MAX_MEMORY) {
+            throw new PluginException("option memory-depth must be a whole number from 1 to " + Scene.MAX_MEMORY
+                    + ", not " + config.option("memory-depth", ""));
+        }
+        return (int) depth;
     }
 
     // groups: ball, own goal, opponent goal, goal of unknown side, flags, lines, all players,
@@ -137,7 +158,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * floats: a and b; the penalty unless it follows from them (see {@link #penalty}); and,
      * with a row weight, the weighted row.
      */
-    public record Encoded(float[][] groups, Encoded previous, int previousAction) {
+    public record Encoded(float[][] groups, Encoded previous, int previousAction, int[] earlierActions) {
     }
 
     private final Settings settings;
@@ -244,7 +265,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
 
     Encoded encode(Scene scene, boolean withMemory) {
         if (scene == null) {
-            return new Encoded(new float[GROUPS][0], null, -1);
+            return new Encoded(new float[GROUPS][0], null, -1, NO_ACTIONS);
         }
         List<List<Placed>> groups = new ArrayList<>(GROUPS);
         for (int group = 0; group < GROUPS; group++) {
@@ -281,7 +302,23 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         boolean remember = withMemory && (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0);
         Encoded previous = remember && settings.memoryWeight() > 0 ? encode(scene.previous(), false) : null;
         int previousAction = remember && scene.previous() != null ? actionClass(scene.previous()) : -1;
-        return new Encoded(packed, previous, previousAction);
+        return new Encoded(packed, previous, previousAction, remember ? earlierActions(scene) : NO_ACTIONS);
+    }
+
+    private static final int[] NO_ACTIONS = new int[0];
+
+    /** The action classes 2 .. memory-depth scenes back (-1 past the start of the remembered chain). */
+    private int[] earlierActions(Scene scene) {
+        if (settings.memoryDepth() < 2 || settings.memoryActionWeight() == 0) {
+            return NO_ACTIONS;
+        }
+        int[] classes = new int[settings.memoryDepth() - 1];
+        Scene earlier = scene.previous() == null ? null : scene.previous().previous();
+        for (int i = 0; i < classes.length; i++) {
+            classes[i] = earlier == null ? -1 : actionClass(earlier);
+            earlier = earlier == null ? null : earlier.previous();
+        }
+        return classes;
     }
 
     /** Objects per group as {@link #encode} stores them, without placing them. */
@@ -366,8 +403,19 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             workspace = new Assignment.Workspace();
         }
         double total = 0;
-        if (settings.memoryActionWeight() > 0 && query.previousAction() != stored.previousAction()) {
-            total += settings.memoryActionWeight();
+        if (settings.memoryActionWeight() > 0) {
+            if (query.previousAction() != stored.previousAction()) {
+                total += settings.memoryActionWeight();
+            }
+            int[] a = query.earlierActions();
+            int[] b = stored.earlierActions();
+            double cost = settings.memoryActionWeight();
+            for (int i = 0; i < a.length && i < b.length; i++) {
+                cost *= settings.memoryDecay();
+                if (a[i] != b[i]) {
+                    total += cost;
+                }
+            }
         }
         total = groupsDistance(query, stored, total, bound, 1);
         if (total > bound) {
@@ -381,7 +429,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         return total;
     }
 
-    private static final Encoded EMPTY = new Encoded(new float[GROUPS][0], null, -1);
+    private static final Encoded EMPTY = new Encoded(new float[GROUPS][0], null, -1, NO_ACTIONS);
 
     private double groupsDistance(Encoded query, Encoded stored, double total, double bound, double scale) {
         for (int group = 0; group < GROUPS; group++) {
@@ -538,7 +586,8 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      */
     @Override
     public PackedScenes pack(List<Scene> scenes) {
-        if (indexed) {
+        // the index compares one previous action only
+        if (indexed && (settings.memoryDepth() == 1 || settings.memoryActionWeight() == 0)) {
             LowDimensionalIndex index = LowDimensionalIndex.build(this, scenes);
             if (index != null) {
                 return index;

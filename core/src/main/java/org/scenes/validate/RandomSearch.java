@@ -55,6 +55,8 @@ public final class RandomSearch {
     private static final int ETA = 3;
     /** Queries per fold at the first rung, at least, so that small samples still rank. */
     private static final int FIRST_RUNG_QUERIES = 150;
+    /** 200 configurations: 200, 67, 23, 8, 3; the last rung, on every query, is the dearest. */
+    private static final int MAX_RUNGS = 5;
 
     private final List<SceneFile> files;
     private final PluginRegistry registry;
@@ -138,23 +140,30 @@ public final class RandomSearch {
         return new Result(winner, objective.of(pooled), figures, table);
     }
 
-    /** Scores a bracket rung by rung; the rows of every rung, the last rung's last. */
+    /**
+     * Scores a bracket rung by rung; the rows of every rung, the last rung's last. A rung with a
+     * ETA-th of the next one's budget scores on a ETA-th of its queries: every stride-th query
+     * (at least {@link #FIRST_RUNG_QUERIES} per fold) of a subset of the folds (at least two, the
+     * same seeded order for every rung), since each fold costs a knowledge-base pack or index per
+     * configuration; the last rung scores every query of every fold.
+     */
     private List<Tried> halve(List<MatchConfig> candidates, long seed, int firstId, Progress progress, double[] best) {
         int longest = files.stream().mapToInt(f -> f.scenes().size()).max().orElse(1);
-        int rungs = 1;
-        for (int n = candidates.size(); n > ETA && rungs < 4; n = (n + ETA - 1) / ETA) {
-            rungs++;
-        }
+        int rungs = rungs(candidates.size());
+        List<Integer> foldOrder = foldOrder(files.size(), seed);
         List<Tried> rows = new ArrayList<>();
         List<MatchConfig> alive = candidates;
         for (int rung = 0; rung < rungs; rung++) {
-            int stride = 1;
+            int share = 1;
             for (int r = rung; r < rungs - 1; r++) {
-                stride *= ETA;
+                share *= ETA;
             }
-            stride = Math.max(1, Math.min(stride, longest / FIRST_RUNG_QUERIES));
+            int stride = Math.max(1, Math.min(share, longest / FIRST_RUNG_QUERIES));
+            // what the stride could not take off the budget comes off the folds
+            int folds = Math.max(Math.min(2, files.size()), (int) Math.ceil(files.size() * (double) stride / share));
             boolean last = rung == rungs - 1;
-            Map<MatchConfig, double[]> scores = score(alive, stride, seed, rung, progress, best);
+            Map<MatchConfig, double[]> scores = score(alive, stride, foldOrder.subList(0, last ? files.size() : folds),
+                    rung, progress, best);
             List<MatchConfig> ranked = new ArrayList<>(alive);
             // best first; ties keep the earlier (simpler, or seeded) configuration
             ranked.sort(Comparator.comparingDouble((MatchConfig c) -> -scores.get(c)[0]));
@@ -170,12 +179,28 @@ public final class RandomSearch {
         return rows;
     }
 
-    private static int planned(int bracket) {
-        int planned = 0;
+    /** The folds in a seeded order: each rung scores the first ones. */
+    static List<Integer> foldOrder(int folds, long seed) {
+        List<Integer> order = new ArrayList<>();
+        for (int i = 0; i < folds; i++) {
+            order.add(i);
+        }
+        java.util.Collections.shuffle(order, new java.util.Random(seed));
+        return order;
+    }
+
+    /** Rungs of a bracket: until a ETA-th of the candidates is at most ETA, at most {@link #MAX_RUNGS}. */
+    private static int rungs(int candidates) {
         int rungs = 1;
-        for (int n = bracket; n > ETA && rungs < 4; n = (n + ETA - 1) / ETA) {
+        for (int n = candidates; n > ETA && rungs < MAX_RUNGS; n = (n + ETA - 1) / ETA) {
             rungs++;
         }
+        return rungs;
+    }
+
+    private static int planned(int bracket) {
+        int planned = 0;
+        int rungs = rungs(bracket);
         for (int n = bracket, r = 0; r < rungs; r++, n = Math.max(1, (n + ETA - 1) / ETA)) {
             planned += n;
         }
@@ -187,7 +212,7 @@ public final class RandomSearch {
      * direction, macro F1, queries}. Configurations sharing metric and transforms share one
      * neighbour search per fold, at their largest k.
      */
-    private Map<MatchConfig, double[]> score(List<MatchConfig> configs, int stride, long seed, int rung,
+    private Map<MatchConfig, double[]> score(List<MatchConfig> configs, int stride, List<Integer> folds, int rung,
                                              Progress progress, double[] best) {
         Map<String, List<MatchConfig>> groups = new LinkedHashMap<>();
         for (MatchConfig config : configs) {
@@ -200,7 +225,7 @@ public final class RandomSearch {
             MatchConfig first = group.get(0);
             List<List<Scene>> sequences = sequences(first);
             int queries = 0;
-            for (int fold = 0; fold < files.size(); fold++) {
+            for (int fold : folds) {
                 KnowledgeBase train = knowledge(first, fold);
                 Recognizer recognizer = new Recognizer(train, first.metricFactory(registry), kMax);
                 List<Scene> all = sequences.get(fold);
