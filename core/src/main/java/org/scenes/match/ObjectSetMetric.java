@@ -158,7 +158,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * floats: a and b; the penalty unless it follows from them (see {@link #penalty}); and,
      * with a row weight, the weighted row.
      */
-    public record Encoded(float[][] groups, Encoded previous, int previousAction, int[] earlierActions) {
+    public record Encoded(float[][] groups, Encoded previous, int[] actions) {
     }
 
     private final Settings settings;
@@ -265,7 +265,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
 
     Encoded encode(Scene scene, boolean withMemory) {
         if (scene == null) {
-            return new Encoded(new float[GROUPS][0], null, -1, NO_ACTIONS);
+            return new Encoded(new float[GROUPS][0], null, NO_ACTIONS);
         }
         List<List<Placed>> groups = new ArrayList<>(GROUPS);
         for (int group = 0; group < GROUPS; group++) {
@@ -301,19 +301,18 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         }
         boolean remember = withMemory && (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0);
         Encoded previous = remember && settings.memoryWeight() > 0 ? encode(scene.previous(), false) : null;
-        int previousAction = remember && scene.previous() != null ? actionClass(scene.previous()) : -1;
-        return new Encoded(packed, previous, previousAction, remember ? earlierActions(scene) : NO_ACTIONS);
+        return new Encoded(packed, previous, remember ? rememberedActions(scene) : NO_ACTIONS);
     }
 
     private static final int[] NO_ACTIONS = new int[0];
 
-    /** The action classes 2 .. memory-depth scenes back (-1 past the start of the remembered chain). */
-    private int[] earlierActions(Scene scene) {
-        if (settings.memoryDepth() < 2 || settings.memoryActionWeight() == 0) {
+    /** The action classes 1 .. memory-depth scenes back (-1 past the start of the remembered chain). */
+    int[] rememberedActions(Scene scene) {
+        if (settings.memoryActionWeight() == 0) {
             return NO_ACTIONS;
         }
-        int[] classes = new int[settings.memoryDepth() - 1];
-        Scene earlier = scene.previous() == null ? null : scene.previous().previous();
+        int[] classes = new int[settings.memoryDepth()];
+        Scene earlier = scene.previous();
         for (int i = 0; i < classes.length; i++) {
             classes[i] = earlier == null ? -1 : actionClass(earlier);
             earlier = earlier == null ? null : earlier.previous();
@@ -404,18 +403,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         }
         double total = 0;
         if (settings.memoryActionWeight() > 0) {
-            if (query.previousAction() != stored.previousAction()) {
-                total += settings.memoryActionWeight();
-            }
-            int[] a = query.earlierActions();
-            int[] b = stored.earlierActions();
-            double cost = settings.memoryActionWeight();
-            for (int i = 0; i < a.length && i < b.length; i++) {
-                cost *= settings.memoryDecay();
-                if (a[i] != b[i]) {
-                    total += cost;
-                }
-            }
+            total = actionsDistance(query.actions(), stored.actions(), 0);
         }
         total = groupsDistance(query, stored, total, bound, 1);
         if (total > bound) {
@@ -429,7 +417,28 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         return total;
     }
 
-    private static final Encoded EMPTY = new Encoded(new float[GROUPS][0], null, -1, NO_ACTIONS);
+    /**
+     * The memory-action cost of two scenes' remembered action classes, the stored ones from
+     * {@code at}: the i-th back costs memory-action · memory-decay^(i-1) when they differ. The one
+     * sum every path computes, so distances are identical.
+     */
+    double actionsDistance(int[] query, int[] stored, int at) {
+        double total = 0;
+        double cost = settings.memoryActionWeight();
+        for (int i = 0; i < query.length && at + i < stored.length; i++) {
+            if (query[i] != stored[at + i]) {
+                total += cost;
+            }
+            cost *= settings.memoryDecay();
+        }
+        return total;
+    }
+
+    int memoryDepth() {
+        return settings.memoryActionWeight() > 0 ? settings.memoryDepth() : 0;
+    }
+
+    private static final Encoded EMPTY = new Encoded(new float[GROUPS][0], null, NO_ACTIONS);
 
     private double groupsDistance(Encoded query, Encoded stored, double total, double bound, double scale) {
         for (int group = 0; group < GROUPS; group++) {
@@ -579,7 +588,8 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     /**
      * The knowledge base in one flat float array, scene after scene, each scene's groups in
      * order, each group's objects nearest first; per scene its start and its objects per group:
-     * no object per scene or per object. Not for memory terms, which compare previous scenes too.
+     * no object per scene or per object; with memory-action, each scene's remembered action
+     * classes too. Not for the memory weight, which compares previous scenes' objects.
      * Configurations whose weighted groups hold at most one object per scene (ball, goals), with
      * or without memory terms, get the exact {@link LowDimensionalIndex} instead (unless
      * {@code index=false}).
@@ -593,7 +603,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 return index;
             }
         }
-        if (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0) {
+        if (settings.memoryWeight() > 0) {
             return null;
         }
         return PackedObjectSets.pack(this, scenes);

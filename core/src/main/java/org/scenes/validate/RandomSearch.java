@@ -25,10 +25,11 @@ import org.scenes.scene.SceneFile;
  * The wide search of {@code scenes tune --search random}: seeded random configurations over
  * every object class (ball, goals, flags, lines, players by relation), the three object-set
  * metrics and {@code ball-goal}, both matchings, both spaces, penalties and rows, memory of the
- * previous scene and action, k and selectors with vote weights; scored by cross-validation on
- * the training files only and narrowed by successive halving: every configuration is scored on
- * a sample of each fold's queries, the best third goes on to three times as many, until the
- * last rung scores the survivors on every query. Configurations that differ only in k and
+ * previous scene and of one to four previous actions (with decay), k and selectors with vote
+ * weights; scored by cross-validation on the training files only and narrowed by successive
+ * halving: every configuration is scored on a sample of the queries of a subset of the folds,
+ * the best third goes on to three times as many, until the last rung scores the survivors on
+ * every query of every fold. Configurations that differ only in k and
  * selector share one neighbour search (the k nearest are the first k of the largest k's),
  * knowledge bases are built once per fold and transform, and configurations are scored on all
  * cores. Whatever the threads, results are those of one sequential run.
@@ -344,8 +345,11 @@ public final class RandomSearch {
     }
 
     private static MatchConfig randomMetric(MatchConfig start, SplittableRandom random) {
-        double memory = pick(random, 0, 0, 0, 0.1, 0.3, 1);
+        double memory = pick(random, 0, 0, 0, 0.03, 0.1, 0.3, 1);
         double memoryAction = pick(random, 0, 0, 10, 100, 100, 1000);
+        // deeper memory of actions: 2 to 4 actions back, each further one weighing decay times the last
+        int depth = memoryAction > 0 && random.nextInt(3) == 0 ? 2 + random.nextInt(3) : 1;
+        double decay = pick(random, 0.3, 0.5, 1);
         int family = random.nextInt(20);
         if (family < 3) {
             Map<String, String> options = new HashMap<>();
@@ -385,7 +389,7 @@ public final class RandomSearch {
         if (polar) {
             options.put("space", "polar");
             options.put("distance-weight", format(pick(random, 1, 3, 10, 30, 100)));
-            options.put("direction-weight", format(pick(random, 0.3, 1, 3, 10, 30)));
+            options.put("direction-weight", format(pick(random, 0.3, 1, 3, 10, 30, 100)));
         }
         if (!name.equals("cell") && random.nextInt(10) < 7) {
             options.put("log-distance", "true");
@@ -399,8 +403,17 @@ public final class RandomSearch {
         if (name.equals("projection")) {
             options.put("cycles", format(pick(random, -1, 1, 2)));
         }
-        MatchConfig config = start.withMetric(name, options).withObjectWeights(ObjectWeights.of(weights));
-        return Tuner.withMemory(config, memory, memoryAction);
+        MatchConfig config = Tuner.withMemory(start.withMetric(name, options).withObjectWeights(ObjectWeights.of(weights)),
+                memory, memoryAction);
+        return depth == 1 ? config : withMemoryDepth(config, depth, decay);
+    }
+
+    /** Memory of {@code depth} actions back, which needs the transform that carries them. */
+    static MatchConfig withMemoryDepth(MatchConfig config, int depth, double decay) {
+        Map<String, String> options = new HashMap<>(config.metricOptions());
+        options.put("memory-depth", Integer.toString(depth));
+        options.put("memory-decay", format(decay));
+        return config.withMetric(config.metric(), options).withTransforms(List.of("long-memory"));
     }
 
     private static double pick(SplittableRandom random, double... values) {
