@@ -50,21 +50,22 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * @param projectCycles objects moved this many cycles forward (negative: back) by their changes
      * @param memoryWeight weight of the distance between remembered previous scenes
      * @param memoryActionWeight cost when the remembered previous actions differ in type
+     * @param memoryDepth how many previous actions that cost compares (1 to {@link Scene#MAX_MEMORY})
+     * @param memoryDecay the i-th action back costs {@code memoryActionWeight · memoryDecay^(i-1)}
      * @param nearestPlayers compare only the nearest player of each player class (all players,
      *        teammates, opponents, unknown), so every group holds at most one object
      */
     public record Settings(ObjectWeights weights, Matching matching, Space space, boolean logDistance,
                            double distanceWeight, double directionWeight, double rowWeight, double penalty, double penaltyScale,
-                           double projectCycles, double memoryWeight, double memoryActionWeight, boolean nearestPlayers) {
-        /** Settings comparing every player. */
-        public Settings(ObjectWeights weights, Matching matching, Space space, boolean logDistance,
-                        double distanceWeight, double directionWeight, double rowWeight, double penalty, double penaltyScale,
-                        double projectCycles, double memoryWeight, double memoryActionWeight) {
-            this(weights, matching, space, logDistance, distanceWeight, directionWeight, rowWeight, penalty, penaltyScale,
-                    projectCycles, memoryWeight, memoryActionWeight, false);
-        }
-
+                           double projectCycles, double memoryWeight, double memoryActionWeight, int memoryDepth,
+                           double memoryDecay, boolean nearestPlayers) {
         public Settings {
+            if (memoryDepth < 1 || memoryDepth > Scene.MAX_MEMORY) {
+                throw new PluginException("memory-depth must be a whole number from 1 to " + Scene.MAX_MEMORY + ", not " + memoryDepth);
+            }
+            if (!(memoryDecay >= 0) || Double.isInfinite(memoryDecay)) {
+                throw new PluginException("memory-decay must be finite and not negative, not " + memoryDecay);
+            }
             for (double value : new double[] {distanceWeight, directionWeight, rowWeight, penalty, memoryWeight, memoryActionWeight}) {
                 if (!(value >= 0) || Double.isInfinite(value)) {
                     throw new PluginException("metric weights and penalties must be finite and not negative");
@@ -90,6 +91,9 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
         options.put("nearest-players", "true to compare only the nearest player of each weighted player class"
                 + " (teammates, opponents, unknown, all players), which the exact index then serves (default false)");
+        options.put("memory-depth", "previous actions memory-action compares, 1 to " + Scene.MAX_MEMORY
+                + " (default 1); the i-th back costs memory-action · memory-decay^(i-1)");
+        options.put("memory-decay", "factor of each further action back (default 0.5)");
         options.put("index", "true (default) to search an exact index when every weighted group holds at most one object"
                 + " per scene (ball, goals, nearest players); false to scan every scene");
         if (projection) {
@@ -131,7 +135,8 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 config.doubleOption("row-weight", 0),
                 config.doubleOption("penalty", 10), config.doubleOption("penalty-scale", 10),
                 config.doubleOption("cycles", defaultProjection), config.doubleOption("memory", 0),
-                config.doubleOption("memory-action", 0), flag(config, "nearest-players"));
+                config.doubleOption("memory-action", 0), memoryDepth(config), config.doubleOption("memory-decay", 0.5),
+                flag(config, "nearest-players"));
     }
 
     /** A true/false option, false by default. */
@@ -141,6 +146,15 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             throw new PluginException("option " + name + "=" + value + " must be true or false");
         }
         return value.equals("true");
+    }
+
+    private static int memoryDepth(PluginConfig config) {
+        double depth = config.doubleOption("memory-depth", 1);
+        if (depth != Math.rint(depth) || depth < 1 || depth > Scene.MAX_MEMORY) {
+            throw new PluginException("option memory-depth must be a whole number from 1 to " + Scene.MAX_MEMORY
+                    + ", not " + config.option("memory-depth", ""));
+        }
+        return (int) depth;
     }
 
     // groups: ball, own goal, opponent goal, goal of unknown side, flags, lines, all players,
@@ -159,7 +173,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * floats: a and b; the penalty unless it follows from them (see {@link #penalty}); and,
      * with a row weight, the weighted row.
      */
-    public record Encoded(float[][] groups, Encoded previous, int previousAction) {
+    public record Encoded(float[][] groups, Encoded previous, int[] actions) {
     }
 
     private final Settings settings;
@@ -266,7 +280,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
 
     Encoded encode(Scene scene, boolean withMemory) {
         if (scene == null) {
-            return new Encoded(new float[GROUPS][0], null, -1);
+            return new Encoded(new float[GROUPS][0], null, NO_ACTIONS);
         }
         List<List<Placed>> groups = new ArrayList<>(GROUPS);
         for (int group = 0; group < GROUPS; group++) {
@@ -303,8 +317,23 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         }
         boolean remember = withMemory && (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0);
         Encoded previous = remember && settings.memoryWeight() > 0 ? encode(scene.previous(), false) : null;
-        int previousAction = remember && scene.previous() != null ? actionClass(scene.previous()) : -1;
-        return new Encoded(packed, previous, previousAction);
+        return new Encoded(packed, previous, remember ? rememberedActions(scene) : NO_ACTIONS);
+    }
+
+    private static final int[] NO_ACTIONS = new int[0];
+
+    /** The action classes 1 .. memory-depth scenes back (-1 past the start of the remembered chain). */
+    int[] rememberedActions(Scene scene) {
+        if (settings.memoryActionWeight() == 0) {
+            return NO_ACTIONS;
+        }
+        int[] classes = new int[settings.memoryDepth()];
+        Scene earlier = scene.previous();
+        for (int i = 0; i < classes.length; i++) {
+            classes[i] = earlier == null ? -1 : actionClass(earlier);
+            earlier = earlier == null ? null : earlier.previous();
+        }
+        return classes;
     }
 
     /** Objects per group as {@link #encode} stores them, without placing them. */
@@ -394,8 +423,8 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             workspace = new Assignment.Workspace();
         }
         double total = 0;
-        if (settings.memoryActionWeight() > 0 && query.previousAction() != stored.previousAction()) {
-            total += settings.memoryActionWeight();
+        if (settings.memoryActionWeight() > 0) {
+            total = actionsDistance(query.actions(), stored.actions(), 0);
         }
         total = groupsDistance(query, stored, total, bound, 1);
         if (total > bound) {
@@ -409,7 +438,28 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         return total;
     }
 
-    private static final Encoded EMPTY = new Encoded(new float[GROUPS][0], null, -1);
+    /**
+     * The memory-action cost of two scenes' remembered action classes, the stored ones from
+     * {@code at}: the i-th back costs memory-action · memory-decay^(i-1) when they differ. The one
+     * sum every path computes, so distances are identical.
+     */
+    double actionsDistance(int[] query, int[] stored, int at) {
+        double total = 0;
+        double cost = settings.memoryActionWeight();
+        for (int i = 0; i < query.length && at + i < stored.length; i++) {
+            if (query[i] != stored[at + i]) {
+                total += cost;
+            }
+            cost *= settings.memoryDecay();
+        }
+        return total;
+    }
+
+    int memoryDepth() {
+        return settings.memoryActionWeight() > 0 ? settings.memoryDepth() : 0;
+    }
+
+    private static final Encoded EMPTY = new Encoded(new float[GROUPS][0], null, NO_ACTIONS);
 
     private double groupsDistance(Encoded query, Encoded stored, double total, double bound, double scale) {
         for (int group = 0; group < GROUPS; group++) {
@@ -559,20 +609,22 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     /**
      * The knowledge base in one flat float array, scene after scene, each scene's groups in
      * order, each group's objects nearest first; per scene its start and its objects per group:
-     * no object per scene or per object. Not for memory terms, which compare previous scenes too.
+     * no object per scene or per object; with memory-action, each scene's remembered action
+     * classes too. Not for the memory weight, which compares previous scenes' objects.
      * Configurations whose weighted groups hold at most one object per scene (ball, goals), with
      * or without memory terms, get the exact {@link LowDimensionalIndex} instead (unless
      * {@code index=false}).
      */
     @Override
     public PackedScenes pack(List<Scene> scenes) {
-        if (indexed) {
+        // the index compares one previous action only
+        if (indexed && (settings.memoryDepth() == 1 || settings.memoryActionWeight() == 0)) {
             LowDimensionalIndex index = LowDimensionalIndex.build(this, scenes);
             if (index != null) {
                 return index;
             }
         }
-        if (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0) {
+        if (settings.memoryWeight() > 0) {
             return null;
         }
         return PackedObjectSets.pack(this, scenes);

@@ -29,8 +29,11 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
     private final int[] starts;
     /** Objects of scene i in weighted group g at {@code counts[i * groups.length + g]}, unsigned. */
     private final byte[] counts;
+    /** With memory-action: scene i's remembered action classes at {@code actions[i * depth ..]}; else empty. */
+    private final int[] actions;
+    private final int depth;
 
-    private PackedObjectSets(ObjectSetMetric metric, int[] groups, float[][] chunks, int[] starts, byte[] counts) {
+    private PackedObjectSets(ObjectSetMetric metric, int[] groups, float[][] chunks, int[] starts, byte[] counts, int[] actions) {
         this.metric = metric;
         this.stride = metric.stride();
         this.size = starts.length;
@@ -39,6 +42,8 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
         this.chunks = chunks;
         this.starts = starts;
         this.counts = counts;
+        this.actions = actions;
+        this.depth = metric.memoryDepth();
     }
 
     /**
@@ -93,7 +98,12 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
                 at += objects.length;
             }
         }
-        return new PackedObjectSets(metric, groups, chunks, starts, counts);
+        int depth = metric.memoryDepth();
+        int[] actions = new int[n * depth];
+        for (int i = 0; depth > 0 && i < n; i++) {
+            System.arraycopy(metric.rememberedActions(scenes.get(i)), 0, actions, i * depth, depth);
+        }
+        return new PackedObjectSets(metric, groups, chunks, starts, counts, actions);
     }
 
     /** Bytes of the packed arrays (the floats with the chunks' unused ends, the starts and the counts). */
@@ -102,12 +112,13 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
         for (float[] chunk : chunks) {
             floats += chunk.length;
         }
-        return 4 * floats + 4L * starts.length + counts.length;
+        return 4 * floats + 4L * starts.length + counts.length + 4L * actions.length;
     }
 
     @Override
     public void scan(Scene query, TopK top) {
         float[][] encoded = metric.encode(query, false).groups();
+        int[] remembered = depth > 0 ? metric.rememberedActions(query) : null;
         float[][] q = new float[groups.length][];
         int[] qn = new int[groups.length];
         for (int g = 0; g < groups.length; g++) {
@@ -123,7 +134,7 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
                 }
             }
             for (int i = 0; i < size; i++) {
-                offerGreedy(q, qn, i, top, lead);
+                offerGreedy(q, qn, remembered, i, top, lead);
             }
             return;
         }
@@ -141,7 +152,7 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
             }
             heap[0] = heap[--left];
             siftDown(heap, 0, left);
-            offer(q, qn, (int) key, top, scratch);
+            offer(q, qn, remembered, (int) key, top, scratch);
         }
     }
 
@@ -172,7 +183,7 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
      * without computing the small groups before it. A kept scene's total is summed in group
      * order from the same group distances, as the exhaustive path sums them.
      */
-    private void offerGreedy(float[][] q, int[] qn, int i, TopK top, int lead) {
+    private void offerGreedy(float[][] q, int[] qn, int[] remembered, int i, TopK top, int lead) {
         double bound = top.bound();
         int first = i * groups.length;
         float[] data = chunks[starts[i] >>> CHUNK_BITS];
@@ -187,7 +198,7 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
         if (leadWeight * leadDistance > bound) {
             return;
         }
-        double total = 0;
+        double total = remembered == null ? 0 : metric.actionsDistance(remembered, actions, i * depth);
         for (int g = 0; g < groups.length; g++) {
             int m = counts[first + g] & 0xFF;
             double weight = weights[g];
@@ -202,9 +213,10 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
     }
 
     /** The exact distance of scene i, offered unless it is found to exceed the bound on the way. */
-    private void offer(float[][] q, int[] qn, int i, TopK top, Assignment.Workspace scratch) {
+    private void offer(float[][] q, int[] qn, int[] remembered, int i, TopK top, Assignment.Workspace scratch) {
         double bound = top.bound();
-        double total = 0;
+        // the lower bounds leave the action cost out: still bounds, as it is not negative
+        double total = remembered == null ? 0 : metric.actionsDistance(remembered, actions, i * depth);
         float[] data = chunks[starts[i] >>> CHUNK_BITS];
         int at = starts[i] & IN_CHUNK;
         int first = i * groups.length;

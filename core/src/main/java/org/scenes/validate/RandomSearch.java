@@ -25,10 +25,11 @@ import org.scenes.scene.SceneFile;
  * The wide search of {@code scenes tune --search random}: seeded random configurations over
  * every object class (ball, goals, flags, lines, players by relation), the three object-set
  * metrics and {@code ball-goal}, both matchings, both spaces, penalties and rows, memory of the
- * previous scene and action, k and selectors with vote weights; scored by cross-validation on
- * the training files only and narrowed by successive halving: every configuration is scored on
- * a sample of each fold's queries, the best third goes on to three times as many, until the
- * last rung scores the survivors on every query. Configurations that differ only in k and
+ * previous scene and of one to four previous actions (with decay), k and selectors with vote
+ * weights; scored by cross-validation on the training files only and narrowed by successive
+ * halving: every configuration is scored on a sample of the queries of a subset of the folds,
+ * the best third goes on to three times as many, until the last rung scores the survivors on
+ * every query of every fold. Configurations that differ only in k and
  * selector share one neighbour search (the k nearest are the first k of the largest k's),
  * knowledge bases are built once per fold and transform, and configurations are scored on all
  * cores. Whatever the threads, results are those of one sequential run.
@@ -55,6 +56,8 @@ public final class RandomSearch {
     private static final int ETA = 3;
     /** Queries per fold at the first rung, at least, so that small samples still rank. */
     private static final int FIRST_RUNG_QUERIES = 150;
+    /** 200 configurations: 200, 67, 23, 8, 3; the last rung, on every query, is the dearest. */
+    private static final int MAX_RUNGS = 5;
 
     private final List<SceneFile> files;
     private final PluginRegistry registry;
@@ -138,23 +141,30 @@ public final class RandomSearch {
         return new Result(winner, objective.of(pooled), figures, table);
     }
 
-    /** Scores a bracket rung by rung; the rows of every rung, the last rung's last. */
+    /**
+     * Scores a bracket rung by rung; the rows of every rung, the last rung's last. A rung with a
+     * ETA-th of the next one's budget scores on a ETA-th of its queries: every stride-th query
+     * (at least {@link #FIRST_RUNG_QUERIES} per fold) of a subset of the folds (at least two, the
+     * same seeded order for every rung), since each fold costs a knowledge-base pack or index per
+     * configuration; the last rung scores every query of every fold.
+     */
     private List<Tried> halve(List<MatchConfig> candidates, long seed, int firstId, Progress progress, double[] best) {
         int longest = files.stream().mapToInt(f -> f.scenes().size()).max().orElse(1);
-        int rungs = 1;
-        for (int n = candidates.size(); n > ETA && rungs < 4; n = (n + ETA - 1) / ETA) {
-            rungs++;
-        }
+        int rungs = rungs(candidates.size());
+        List<Integer> foldOrder = foldOrder(files.size(), seed);
         List<Tried> rows = new ArrayList<>();
         List<MatchConfig> alive = candidates;
         for (int rung = 0; rung < rungs; rung++) {
-            int stride = 1;
+            int share = 1;
             for (int r = rung; r < rungs - 1; r++) {
-                stride *= ETA;
+                share *= ETA;
             }
-            stride = Math.max(1, Math.min(stride, longest / FIRST_RUNG_QUERIES));
+            int stride = Math.max(1, Math.min(share, longest / FIRST_RUNG_QUERIES));
+            // what the stride could not take off the budget comes off the folds
+            int folds = Math.max(Math.min(2, files.size()), (int) Math.ceil(files.size() * (double) stride / share));
             boolean last = rung == rungs - 1;
-            Map<MatchConfig, double[]> scores = score(alive, stride, seed, rung, progress, best);
+            Map<MatchConfig, double[]> scores = score(alive, stride, foldOrder.subList(0, last ? files.size() : folds),
+                    rung, progress, best);
             List<MatchConfig> ranked = new ArrayList<>(alive);
             // best first; ties keep the earlier (simpler, or seeded) configuration
             ranked.sort(Comparator.comparingDouble((MatchConfig c) -> -scores.get(c)[0]));
@@ -170,12 +180,28 @@ public final class RandomSearch {
         return rows;
     }
 
-    private static int planned(int bracket) {
-        int planned = 0;
+    /** The folds in a seeded order: each rung scores the first ones. */
+    static List<Integer> foldOrder(int folds, long seed) {
+        List<Integer> order = new ArrayList<>();
+        for (int i = 0; i < folds; i++) {
+            order.add(i);
+        }
+        java.util.Collections.shuffle(order, new java.util.Random(seed));
+        return order;
+    }
+
+    /** Rungs of a bracket: until a ETA-th of the candidates is at most ETA, at most {@link #MAX_RUNGS}. */
+    private static int rungs(int candidates) {
         int rungs = 1;
-        for (int n = bracket; n > ETA && rungs < 4; n = (n + ETA - 1) / ETA) {
+        for (int n = candidates; n > ETA && rungs < MAX_RUNGS; n = (n + ETA - 1) / ETA) {
             rungs++;
         }
+        return rungs;
+    }
+
+    private static int planned(int bracket) {
+        int planned = 0;
+        int rungs = rungs(bracket);
         for (int n = bracket, r = 0; r < rungs; r++, n = Math.max(1, (n + ETA - 1) / ETA)) {
             planned += n;
         }
@@ -187,7 +213,7 @@ public final class RandomSearch {
      * direction, macro F1, queries}. Configurations sharing metric and transforms share one
      * neighbour search per fold, at their largest k.
      */
-    private Map<MatchConfig, double[]> score(List<MatchConfig> configs, int stride, long seed, int rung,
+    private Map<MatchConfig, double[]> score(List<MatchConfig> configs, int stride, List<Integer> folds, int rung,
                                              Progress progress, double[] best) {
         Map<String, List<MatchConfig>> groups = new LinkedHashMap<>();
         for (MatchConfig config : configs) {
@@ -200,7 +226,7 @@ public final class RandomSearch {
             MatchConfig first = group.get(0);
             List<List<Scene>> sequences = sequences(first);
             int queries = 0;
-            for (int fold = 0; fold < files.size(); fold++) {
+            for (int fold : folds) {
                 KnowledgeBase train = knowledge(first, fold);
                 Recognizer recognizer = first.recognizer(train, registry, kMax);
                 List<Scene> all = sequences.get(fold);
@@ -319,8 +345,11 @@ public final class RandomSearch {
     }
 
     private static MatchConfig randomMetric(MatchConfig start, SplittableRandom random) {
-        double memory = pick(random, 0, 0, 0, 0.1, 0.3, 1);
+        double memory = pick(random, 0, 0, 0, 0.03, 0.1, 0.3, 1);
         double memoryAction = pick(random, 0, 0, 10, 100, 100, 1000);
+        // deeper memory of actions: 2 to 4 actions back, each further one weighing decay times the last
+        int depth = memoryAction > 0 && random.nextInt(3) == 0 ? 2 + random.nextInt(3) : 1;
+        double decay = pick(random, 0.3, 0.5, 1);
         int family = random.nextInt(20);
         if (family < 3) {
             Map<String, String> options = new HashMap<>();
@@ -360,7 +389,7 @@ public final class RandomSearch {
         if (polar) {
             options.put("space", "polar");
             options.put("distance-weight", format(pick(random, 1, 3, 10, 30, 100)));
-            options.put("direction-weight", format(pick(random, 0.3, 1, 3, 10, 30)));
+            options.put("direction-weight", format(pick(random, 0.3, 1, 3, 10, 30, 100)));
         }
         if (!name.equals("cell") && random.nextInt(10) < 7) {
             options.put("log-distance", "true");
@@ -374,8 +403,17 @@ public final class RandomSearch {
         if (name.equals("projection")) {
             options.put("cycles", format(pick(random, -1, 1, 2)));
         }
-        MatchConfig config = start.withMetric(name, options).withObjectWeights(ObjectWeights.of(weights));
-        return Tuner.withMemory(config, memory, memoryAction);
+        MatchConfig config = Tuner.withMemory(start.withMetric(name, options).withObjectWeights(ObjectWeights.of(weights)),
+                memory, memoryAction);
+        return depth == 1 ? config : withMemoryDepth(config, depth, decay);
+    }
+
+    /** Memory of {@code depth} actions back, which needs the transform that carries them. */
+    static MatchConfig withMemoryDepth(MatchConfig config, int depth, double decay) {
+        Map<String, String> options = new HashMap<>(config.metricOptions());
+        options.put("memory-depth", Integer.toString(depth));
+        options.put("memory-decay", format(decay));
+        return config.withMetric(config.metric(), options).withTransforms(List.of("long-memory"));
     }
 
     private static double pick(SplittableRandom random, double... values) {

@@ -2,6 +2,7 @@ package org.scenes.match;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
@@ -9,6 +10,7 @@ import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.scenes.plugin.PluginConfig;
 import org.scenes.scene.Action;
+import org.scenes.scene.Grid;
 import org.scenes.scene.Relation;
 import org.scenes.scene.Scene;
 
@@ -122,6 +124,29 @@ class ObjectSetMetricTest {
         ObjectSetMetric objects = metric(Map.of("memory", "2"), ObjectSetMetric.Space.CARTESIAN);
         double expected = 2 * objects.distance(before, TestScenes.scene(1, null, TestScenes.ball(5, -10)));
         assertEquals(expected, objects.distance(now.withPrevious(before), now.withPrevious(now)), 1e-9);
+    }
+
+    @Test
+    void deeperMemoryWeighsEarlierActionsWithDecay() {
+        Scene third = TestScenes.scene(1, Action.dash(50), TestScenes.ball(5, 0));
+        Scene thirdOther = TestScenes.scene(1, Action.kick(50, 0), TestScenes.ball(5, 0));
+        Scene second = TestScenes.scene(2, Action.turn(-30), TestScenes.ball(5, -30));
+        Scene now = TestScenes.scene(3, Action.turn(-10), TestScenes.ball(5, -10));
+        Scene a = now.withHistory(second.withHistory(third));
+        Scene b = now.withHistory(second.withHistory(thirdOther));
+        ObjectSetMetric oneBack = metric(Map.of("memory-action", "8"), ObjectSetMetric.Space.CARTESIAN);
+        assertEquals(0, oneBack.distance(a, b), 1e-12, "depth 1 compares the previous action only");
+        ObjectSetMetric twoBack = metric(Map.of("memory-action", "8", "memory-depth", "2", "memory-decay", "0.25"),
+                ObjectSetMetric.Space.CARTESIAN);
+        assertEquals(2, twoBack.distance(a, b), 1e-12, "the action two back costs 8 · 0.25");
+        assertEquals(2, twoBack.distance(a, now.withHistory(second)), 1e-12, "a chain that ends differs from any action");
+        assertThrows(org.scenes.plugin.PluginException.class,
+                () -> metric(Map.of("memory-depth", "0"), ObjectSetMetric.Space.CARTESIAN));
+        // the exact index compares one action back only, so deeper memory scans: same neighbours as the plain scan
+        List<Scene> stored = List.of(b, a, now.withHistory(second));
+        List<Neighbour> nearest = new Recognizer(KnowledgeBase.of(Grid.DEFAULT, stored), () -> twoBack, 3).nearest(a);
+        assertEquals(List.of(1, 0, 2), nearest.stream().map(Neighbour::index).toList());
+        assertEquals(2, nearest.get(1).distance(), 1e-12);
     }
 
     @Test

@@ -1,6 +1,7 @@
 package org.scenes.match;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -135,6 +136,31 @@ class PackedScanTest {
         check(Map.of("matching", "optimal", "memory", "0.5", "memory-action", "3"), ObjectSetMetric.Space.CARTESIAN, 0,
                 ObjectWeights.DEFAULT, remembered, rememberedQueries);
         check(Map.of("memory", "0.5", "memory-action", "3"), ObjectSetMetric.Space.CARTESIAN, 0,
+                ObjectWeights.DEFAULT, remembered, rememberedQueries);
+    }
+
+    @Test
+    @RequiresSharedData
+    void memoryOfActionsPackedAsExhaustive() {
+        // chains of up to three earlier scenes, so that memory-depth has actions to compare
+        List<Scene> remembered = new ArrayList<>();
+        for (int i = 0; i < 600; i++) {
+            Scene chain = null;
+            for (int j = Math.max(0, i - 2); j <= i; j++) {
+                chain = stored.get(j).withHistory(chain);
+            }
+            remembered.add(stored.get(i + 1).withHistory(chain));
+        }
+        List<Scene> rememberedQueries = new ArrayList<>();
+        for (int q = 0; q < queries.size(); q++) {
+            rememberedQueries.add(queries.get(q).withHistory(remembered.get(q * 7 % remembered.size())));
+        }
+        assertInstanceOf(PackedObjectSets.class,
+                metric(Map.of("memory-action", "3"), ObjectSetMetric.Space.CARTESIAN, 0).pack(remembered));
+        check(Map.of("memory-action", "3"), ObjectSetMetric.Space.CARTESIAN, 0, ObjectWeights.DEFAULT, remembered, rememberedQueries);
+        check(Map.of("memory-action", "30", "memory-depth", "3", "memory-decay", "0.5", "space", "polar"),
+                ObjectSetMetric.Space.CARTESIAN, 0, ObjectWeights.DEFAULT, remembered, rememberedQueries);
+        check(Map.of("matching", "optimal", "memory-action", "3", "memory-depth", "4"), ObjectSetMetric.Space.CARTESIAN, 0,
                 ObjectWeights.DEFAULT, remembered, rememberedQueries);
     }
 

@@ -1,5 +1,6 @@
 package org.scenes.plugins.memory;
 
+import java.util.List;
 import org.scenes.match.SceneTransform;
 import org.scenes.match.TransformProvider;
 import org.scenes.plugin.PluginConfig;
@@ -23,17 +24,34 @@ public final class MemoryTransformProvider implements TransformProvider {
 
     @Override
     public SceneTransform create(PluginConfig config) {
-        return new Memory();
+        return new Memory(false);
     }
 
-    /** Remembers the last scene it saw; a new instance for each player's sequence. */
+    /**
+     * Remembers the last scene it saw, and with {@code chain} the actions of the scenes before
+     * that (objects dropped); a new instance for each player's sequence.
+     */
     static final class Memory implements SceneTransform {
+        private final boolean chain;
         private Scene last;
+        /** the scenes before {@code last}, actions and see ages only */
+        private Scene earlier;
+
+        Memory(boolean chain) {
+            this.chain = chain;
+        }
 
         @Override
         public Scene apply(Scene scene) {
-            Scene remembered = scene.withPrevious(last);
-            last = scene.withPrevious(null);
+            if (!chain) {
+                Scene remembered = scene.withPrevious(last);
+                last = scene.withPrevious(null);
+                return remembered;
+            }
+            Scene remembered = scene.withHistory(last);
+            // the constructor cuts each chain after Scene.MAX_MEMORY scenes
+            last = scene.withHistory(earlier);
+            earlier = new Scene(scene.cycle(), scene.observer(), List.of(), scene.actions(), earlier, scene.seeAge());
             return remembered;
         }
     }

@@ -2,6 +2,7 @@ package org.scenes.plugins.memory;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -10,7 +11,11 @@ import org.scenes.plugin.PluginConfig;
 import org.scenes.plugin.PluginRegistry;
 import org.scenes.scene.Action;
 import org.scenes.scene.Observer;
+import org.scenes.scene.Grid;
+import org.scenes.scene.ObjectKind;
+import org.scenes.scene.Relation;
 import org.scenes.scene.Scene;
+import org.scenes.scene.SeenObject;
 
 class MemoryTransformTest {
     private static Scene scene(int cycle, Action action) {
@@ -30,5 +35,23 @@ class MemoryTransformTest {
         assertNull(third.previous().previous(), "one step of memory, not a chain");
         SceneTransform fresh = PluginRegistry.load().transform("memory", PluginConfig.DEFAULT);
         assertNull(fresh.apply(scene(9, Action.dash(1))).previous(), "a new sequence starts without memory");
+    }
+
+    @Test
+    void longMemoryRemembersThePreviousSceneAndTheActionsBefore() {
+        SceneTransform memory = PluginRegistry.load().transform("long-memory", PluginConfig.DEFAULT);
+        Scene last = null;
+        for (int cycle = 1; cycle <= 12; cycle++) {
+            last = memory.apply(new Scene(cycle, Observer.UNKNOWN,
+                    List.of(SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, 5, 10, Grid.DEFAULT)),
+                    List.of(Action.dash(cycle))));
+        }
+        assertEquals(Scene.MAX_MEMORY, last.memoryDepth(), "a chain cut at the longest memory");
+        assertEquals(11, last.previous().cycle());
+        assertEquals(1, last.previous().objects().size(), "the previous scene keeps its objects");
+        Scene earlier = last.previous().previous();
+        assertEquals(10, earlier.cycle());
+        assertEquals(Action.dash(10), earlier.primaryAction());
+        assertTrue(earlier.objects().isEmpty(), "earlier scenes keep their actions only");
     }
 }
