@@ -11,14 +11,14 @@ import me.tongfei.progressbar.ConsoleProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.agent.sim.SyntheticScenes;
-import org.scenes.match.KnowledgeBase;
-import org.scenes.match.Recognizer;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginKind;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Scene;
-import org.scenes.validate.MatchConfig;
+import org.scenes.api.Grid;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginKind;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Scene;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
+import org.scenes.internal.validate.MatchConfig;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -167,11 +167,11 @@ final class BenchCommand implements Callable<Integer> {
     }
 
     /** Every scene of the --queries files (transformed as the knowledge base), or stored scenes spread over it. */
-    private List<Scene> queries(KnowledgeBase knowledge, java.util.function.Supplier<List<org.scenes.match.SceneTransform>> transforms) {
+    private List<Scene> queries(KnowledgeBase knowledge, java.util.function.Supplier<List<org.scenes.api.SceneTransform>> transforms) {
         if (queryFiles != null) {
             List<Scene> all = new ArrayList<>();
             for (Path file : queryFiles) {
-                all.addAll(KnowledgeBase.transform(org.scenes.scene.SceneFileReader.read(file).scenes(), transforms.get()));
+                all.addAll(KnowledgeBase.transform(org.scenes.internal.scene.SceneFileReader.read(file).scenes(), transforms.get()));
             }
             return all;
         }

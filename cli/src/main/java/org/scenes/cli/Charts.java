@@ -29,8 +29,8 @@ import org.jfree.chart.title.TextTitle;
 import org.jfree.chart.ui.TextAnchor;
 import org.jfree.data.category.DefaultCategoryDataset;
 import org.jfree.svg.SVGGraphics2D;
-import org.scenes.files.AtomicOutput;
-import org.scenes.validate.ValidationReport;
+import org.scenes.internal.files.AtomicOutput;
+import org.scenes.internal.validate.ValidationReport;
 
 /**
  * Bar charts of validation figures per configuration: horizontal bars (labels on one line, never

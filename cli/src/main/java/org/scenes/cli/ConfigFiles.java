@@ -13,11 +13,11 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.scenes.files.AtomicOutput;
-import org.scenes.files.Inputs;
-import org.scenes.match.ActionWeights;
-import org.scenes.match.ObjectWeights;
-import org.scenes.validate.MatchConfig;
+import org.scenes.api.ActionWeights;
+import org.scenes.api.ObjectWeights;
+import org.scenes.internal.files.AtomicOutput;
+import org.scenes.internal.files.Inputs;
+import org.scenes.internal.validate.MatchConfig;
 
 /** Reads and writes the matching configuration files of {@code scenes tune} and {@code --config}. */
 final class ConfigFiles {

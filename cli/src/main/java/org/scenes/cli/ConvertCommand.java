@@ -13,13 +13,14 @@ import java.util.stream.Collectors;
 import me.tongfei.progressbar.ConsoleProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
-import org.scenes.convert.ConversionReport;
-import org.scenes.convert.DropReason;
-import org.scenes.convert.MalformedLine;
-import org.scenes.convert.SceneConverter;
-import org.scenes.files.AtomicOutput;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Scene;
+import org.scenes.api.Grid;
+import org.scenes.api.Scene;
+import org.scenes.internal.convert.ConversionReport;
+import org.scenes.internal.convert.DropReason;
+import org.scenes.internal.convert.MalformedLine;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.files.AtomicOutput;
+import org.scenes.internal.scene.LazySceneFileWriter;
 import org.scenes.options.GameLogOptions;
 import org.scenes.options.GridOptions;
 import org.scenes.options.PairingOptions;
@@ -31,7 +32,6 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
-import org.scenes.scene.LazySceneFileWriter;
 
 /** {@code scenes convert}: player logs to scene files, with a summary of what was kept and dropped. */
 @Command(name = "convert", mixinStandardHelpOptions = true,

@@ -12,12 +12,12 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
-import org.scenes.files.AtomicOutput;
-import picocli.CommandLine;
+import org.scenes.internal.files.AtomicOutput;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
+import picocli.CommandLine;
 
 /**
  * {@code scenes demo}: the whole loop on the bundled default, the embedded simulator with Krislet

@@ -4,9 +4,9 @@ import java.io.IOException;
 import java.nio.file.Path;
 import org.jfree.chart.JFreeChart;
 import org.jfree.data.category.DefaultCategoryDataset;
-import org.scenes.experiment.Axis;
-import org.scenes.experiment.ResultTable;
-import org.scenes.experiment.Sweep;
+import org.scenes.internal.experiment.Axis;
+import org.scenes.internal.experiment.ResultTable;
+import org.scenes.internal.experiment.Sweep;
 
 /**
  * The pivot of a sweep's results as grouped bars: a group per row, a bar per column, drawn like

@@ -14,14 +14,15 @@ import java.util.stream.Stream;
 import me.tongfei.progressbar.ConsoleProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
-import org.scenes.experiment.Configuration;
-import org.scenes.experiment.Experiment;
-import org.scenes.experiment.FoldValidation;
-import org.scenes.experiment.ResultTable;
-import org.scenes.experiment.Sweep;
-import org.scenes.files.AtomicOutput;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.SceneFile;
+import org.scenes.api.PluginRegistry;
+import org.scenes.internal.experiment.Configuration;
+import org.scenes.internal.experiment.Experiment;
+import org.scenes.internal.experiment.FoldValidation;
+import org.scenes.internal.experiment.ResultTable;
+import org.scenes.internal.experiment.Sweep;
+import org.scenes.internal.files.AtomicOutput;
+import org.scenes.internal.files.CsvTables;
+import org.scenes.internal.scene.SceneFile;
 import org.scenes.options.SweepOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -29,7 +30,6 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
-import org.scenes.files.CsvTables;
 
 /** {@code scenes experiment}: a parameter sweep described by a Groovy script, validated configuration by configuration. */
 @Command(name = "experiment", mixinStandardHelpOptions = true, sortOptions = false,

@@ -16,23 +16,23 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 import org.apache.commons.csv.CSVPrinter;
-import org.scenes.files.AtomicOutput;
+import org.scenes.api.Action;
+import org.scenes.api.ActionLabel;
+import org.scenes.api.ActionType;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
+import org.scenes.internal.files.AtomicOutput;
+import org.scenes.internal.files.CsvTables;
+import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.plugins.coverage.KeyScenes;
-import org.scenes.scene.Action;
-import org.scenes.scene.ActionType;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Relation;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SceneFileReader;
-import org.scenes.scene.SeenObject;
-import org.scenes.validate.ActionLabel;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
-import org.scenes.files.CsvTables;
 
 /**
  * {@code scenes export}: one row per scene for other learners (Weka, scikit-learn): the nearest

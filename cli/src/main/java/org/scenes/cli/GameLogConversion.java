@@ -7,11 +7,11 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Function;
-import org.scenes.convert.ConversionReport;
-import org.scenes.convert.GameLogConverter;
-import org.scenes.convert.GameSceneFiles;
-import org.scenes.gamelog.GameLogs;
-import org.scenes.scene.Grid;
+import org.scenes.api.Grid;
+import org.scenes.internal.convert.ConversionReport;
+import org.scenes.internal.convert.GameLogConverter;
+import org.scenes.internal.convert.GameSceneFiles;
+import org.scenes.internal.gamelog.GameLogs;
 import org.scenes.options.GameLogOptions;
 
 /**
@@ -77,7 +77,7 @@ final class GameLogConversion {
             ConversionReport r = player.report();
             total.add(r);
             out.printf(Locale.ROOT, "%-14s %8d %8d %8d %8d %8s%n", player.key(), r.sees(), r.scenes(),
-                    r.dropped(org.scenes.convert.DropReason.NO_SEE), r.dropped(org.scenes.convert.DropReason.NO_ACTION),
+                    r.dropped(org.scenes.internal.convert.DropReason.NO_SEE), r.dropped(org.scenes.internal.convert.DropReason.NO_ACTION),
                     r.perCycleLogs() > 0 ? Long.toString(r.cycles()) : "-");
         }
         out.printf(Locale.ROOT, "%-22s %d for %d players%n", "Scenes written", total.scenes(), result.players().size());

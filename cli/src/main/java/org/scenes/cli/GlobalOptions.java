@@ -3,7 +3,7 @@ package org.scenes.cli;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.scenes.plugin.PluginRegistry;
+import org.scenes.api.PluginRegistry;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ScopeType;
 

@@ -2,10 +2,10 @@ package org.scenes.cli;
 
 import java.util.List;
 import java.util.Map;
-import org.scenes.plugin.PluginRegistry;
+import org.scenes.api.PluginRegistry;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.validate.MatchConfig;
 import org.scenes.plugins.coverage.KeyScenes;
-import org.scenes.scene.SceneFile;
-import org.scenes.validate.MatchConfig;
 
 /** The options of {@code --key-scenes N} shared by show and export: by influence (with a metric) or by events. */
 final class KeySceneChoice {

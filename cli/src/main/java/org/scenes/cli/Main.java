@@ -2,7 +2,7 @@ package org.scenes.cli;
 
 import java.io.PrintWriter;
 import java.util.Set;
-import org.scenes.files.AtomicOutput;
+import org.scenes.internal.files.AtomicOutput;
 
 /** Entry point of the {@code scenes} launcher. */
 public final class Main {

@@ -5,9 +5,9 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.scenes.match.ActionWeights;
-import org.scenes.match.ObjectWeights;
-import org.scenes.validate.MatchConfig;
+import org.scenes.api.ActionWeights;
+import org.scenes.api.ObjectWeights;
+import org.scenes.internal.validate.MatchConfig;
 import picocli.CommandLine.Option;
 
 /** How scenes are matched and an action chosen: the options validate, tune and play share. */

@@ -9,11 +9,10 @@ import java.util.concurrent.Callable;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
-import org.scenes.match.KnowledgeBase;
-import org.scenes.match.Recognizer;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.validate.MatchConfig;
-import picocli.CommandLine;
+import org.scenes.api.PluginRegistry;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
+import org.scenes.internal.validate.MatchConfig;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -21,6 +20,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
+import picocli.CommandLine;
 
 /**
  * {@code scenes play}: imitating players, learnt from scene files, play a game in the embedded

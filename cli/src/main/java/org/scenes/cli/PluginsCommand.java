@@ -3,11 +3,11 @@ package org.scenes.cli;
 import java.io.PrintWriter;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.scenes.plugin.PluginInfo;
-import org.scenes.plugin.PluginKind;
+import org.scenes.api.PluginInfo;
+import org.scenes.api.PluginKind;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
 
 /** {@code scenes plugins}: every metric, selector and transform with its description and jar. */

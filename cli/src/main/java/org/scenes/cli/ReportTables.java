@@ -4,10 +4,10 @@ import java.io.PrintWriter;
 import java.util.List;
 import java.util.Map;
 import java.util.function.ToDoubleFunction;
-import org.scenes.scene.ActionType;
-import org.scenes.validate.ActionLabel;
-import org.scenes.validate.Folds;
-import org.scenes.validate.ValidationReport;
+import org.scenes.api.ActionLabel;
+import org.scenes.api.ActionType;
+import org.scenes.internal.validate.Folds;
+import org.scenes.internal.validate.ValidationReport;
 
 /** The terminal form of validation results. */
 final class ReportTables {

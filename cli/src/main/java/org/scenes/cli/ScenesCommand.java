@@ -1,15 +1,15 @@
 package org.scenes.cli;
 
 import java.io.PrintWriter;
-import org.scenes.plugin.PluginException;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Grid;
-import org.scenes.scene.SceneFileException;
-import picocli.CommandLine;
+import org.scenes.api.Grid;
+import org.scenes.api.PluginException;
+import org.scenes.api.PluginRegistry;
+import org.scenes.internal.scene.SceneFileException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.IVersionProvider;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Spec;
+import picocli.CommandLine;
 
 /** The top-level {@code scenes} command; subcommands do the work. */
 @Command(name = "scenes", mixinStandardHelpOptions = true, versionProvider = ScenesCommand.Version.class,

@@ -3,18 +3,18 @@ package org.scenes.cli;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SceneFileReader;
-import org.scenes.scene.VisionTable;
+import org.scenes.api.Grid;
+import org.scenes.api.Scene;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileReader;
+import org.scenes.internal.scene.VisionTable;
+import org.scenes.plugins.coverage.KeyScenes;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.ParentCommand;
-import org.scenes.plugins.coverage.KeyScenes;
-import org.scenes.scene.SceneFile;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
 
 /** {@code scenes show}: scenes as visiontables. */

@@ -7,10 +7,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import org.scenes.files.AtomicOutput;
-import org.scenes.validate.MatchConfig;
-import org.scenes.validate.RandomSearch;
-import org.scenes.files.CsvTables;
+import org.scenes.internal.files.AtomicOutput;
+import org.scenes.internal.files.CsvTables;
+import org.scenes.internal.validate.MatchConfig;
+import org.scenes.internal.validate.RandomSearch;
 
 /** The table of configurations {@code scenes tune --table} writes: CSV (Commons CSV) or JSON, by the file's extension. */
 final class TriedTable {

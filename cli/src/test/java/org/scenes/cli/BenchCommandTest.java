@@ -48,7 +48,7 @@ class BenchCommandTest {
         Path held = dir.resolve("c2.json.gz");
         assertEquals(0, run("convert", "-o", stored.toString(), game.resolve("Carleton_1.lsf.gz").toString()), cli.err());
         assertEquals(0, run("convert", "-o", held.toString(), game.resolve("Carleton_2.lsf.gz").toString()), cli.err());
-        int count = org.scenes.scene.SceneFileReader.read(held).scenes().size();
+        int count = org.scenes.internal.scene.SceneFileReader.read(held).scenes().size();
         assertEquals(0, run("bench", "--time", "0.02", "--metric", "ball-goal", "--queries", held, stored), cli.err());
         assertTrue(cli.out().split("\n")[0].contains(", " + count + " queries,"), cli.out());
         assertEquals(2, run("bench", "--synthetic", 100, "--queries", held), cli.out());

@@ -10,9 +10,9 @@ import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.scene.Grid;
-import org.scenes.scene.SceneFile;
-import org.scenes.scene.SceneFileReader;
+import org.scenes.api.Grid;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.testing.RequiresSharedData;
 import org.scenes.testing.SharedData;
 

@@ -18,13 +18,13 @@ import org.junit.jupiter.api.io.TempDir;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.convert.SceneConverter;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SceneFile;
-import org.scenes.scene.SceneFileHeader;
-import org.scenes.scene.SceneFileWriter;
-import org.scenes.scene.SceneSource;
+import org.scenes.api.Grid;
+import org.scenes.api.Scene;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileHeader;
+import org.scenes.internal.scene.SceneFileWriter;
+import org.scenes.internal.scene.SceneSource;
 
 /**
  * {@code scenes experiment}: result files, and the proof that a configuration gives the same

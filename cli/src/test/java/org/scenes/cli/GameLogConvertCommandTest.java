@@ -12,11 +12,11 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.gamelog.CommandLogWriter;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.gamelog.GameLogWriter;
-import org.scenes.gamelog.PlayerState;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.CommandLogWriter;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.GameLogWriter;
+import org.scenes.internal.gamelog.PlayerState;
 import picocli.CommandLine;
 
 /** {@code scenes convert GAME.rcg [GAME.rcl]} and {@code scenes compare} from the command line. */

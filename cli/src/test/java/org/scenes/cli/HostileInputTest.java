@@ -19,18 +19,18 @@ import java.util.stream.Stream;
 import java.util.zip.GZIPOutputStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Action;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Observer;
-import org.scenes.scene.Relation;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SceneFileHeader;
-import org.scenes.scene.SceneFileWriter;
-import org.scenes.scene.SceneSource;
-import org.scenes.scene.SeenObject;
-import org.scenes.scene.Side;
+import org.scenes.api.Action;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Observer;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
+import org.scenes.api.Side;
+import org.scenes.internal.scene.SceneFileHeader;
+import org.scenes.internal.scene.SceneFileWriter;
+import org.scenes.internal.scene.SceneSource;
 
 /**
  * The defects of issue 16, each as a regression test: bad input gets one clear line naming the
@@ -118,8 +118,8 @@ class HostileInputTest {
         oneLine(missing + ": no such configuration file");
         // what tune writes is read back
         Path tuned = dir.resolve("tuned.json");
-        ConfigFiles.write(tuned, org.scenes.validate.MatchConfig.DEFAULT, java.util.Map.of("crossValidation", 0.5));
-        assertEquals(org.scenes.validate.MatchConfig.DEFAULT, ConfigFiles.read(tuned));
+        ConfigFiles.write(tuned, org.scenes.internal.validate.MatchConfig.DEFAULT, java.util.Map.of("crossValidation", 0.5));
+        assertEquals(org.scenes.internal.validate.MatchConfig.DEFAULT, ConfigFiles.read(tuned));
     }
 
     @Test

@@ -11,8 +11,8 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SceneFileReader;
+import org.scenes.api.Scene;
+import org.scenes.internal.scene.SceneFileReader;
 
 /** convert on logs shaped like a librcsc player's (generated here), and on logs that give no scenes. */
 class ModernConvertCommandTest {

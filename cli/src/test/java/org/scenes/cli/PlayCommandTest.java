@@ -8,7 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.files.Inputs;
+import org.scenes.internal.files.Inputs;
 
 /** The whole bundled loop: simulate teachers, convert, play imitators in the simulator. */
 class PlayCommandTest {

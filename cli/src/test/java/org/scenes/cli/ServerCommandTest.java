@@ -10,7 +10,7 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.gamelog.GameLogReader;
+import org.scenes.internal.gamelog.GameLogReader;
 
 /** {@code scenes server} options, and {@code scenes simulate --record}. */
 class ServerCommandTest {

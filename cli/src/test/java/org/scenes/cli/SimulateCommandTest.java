@@ -10,7 +10,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.files.Inputs;
+import org.scenes.internal.files.Inputs;
 
 /** Simulate a game, then convert its logs: the bundled pipeline with no recorded data. */
 class SimulateCommandTest {

@@ -12,9 +12,9 @@ import java.util.regex.Pattern;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.scene.Grid;
-import org.scenes.scene.SceneFile;
-import org.scenes.scene.SceneFileReader;
+import org.scenes.api.Grid;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileReader;
 
 /**
  * What {@link ConvertCommandsTest} and {@link BenchCommandTest} check on recorded logs, on the logs
@@ -91,7 +91,7 @@ class SimulatedGameCommandsTest {
 
         assertEquals(0, run("stats", scenes), cli.err());
         assertEquals(count, number(cli.out(), "Scenes"), cli.out());
-        long kicks = file.scenes().stream().filter(s -> s.primaryAction().type() == org.scenes.scene.ActionType.KICK).count();
+        long kicks = file.scenes().stream().filter(s -> s.primaryAction().type() == org.scenes.api.ActionType.KICK).count();
 
         assertEquals(0, run("export", "--format", "csv", scenes), cli.err());
         List<String> csv = cli.out().lines().toList();

@@ -6,7 +6,7 @@ import java.util.function.IntConsumer;
 import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
-import org.scenes.gamelog.GameFrame;
+import org.scenes.internal.gamelog.GameFrame;
 
 /**
  * Where the games of an evaluation are played: the embedded simulator ({@link #embedded}), or a

@@ -10,8 +10,8 @@ import org.scenes.agent.Brain;
 import org.scenes.agent.BrainFactory;
 import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
 
 /**
  * Teacher and imitator in the same situations: for every seed, one game with the teacher team on

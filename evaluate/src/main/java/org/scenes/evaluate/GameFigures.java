@@ -1,11 +1,11 @@
 package org.scenes.evaluate;
 
 import java.util.List;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.gamelog.PlayerState;
-import org.scenes.protocol.CommandType;
-import org.scenes.protocol.PlayerCommand;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.PlayerState;
+import org.scenes.internal.protocol.CommandType;
+import org.scenes.internal.protocol.PlayerCommand;
 
 /**
  * The behaviour figures of one team in one game. Counted while the game is not paused

@@ -8,7 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Stream;
-import org.scenes.files.AtomicOutput;
+import org.scenes.internal.files.AtomicOutput;
 
 /**
  * The evaluation as one self-contained web page ({@code index.html}, nothing fetched when it is

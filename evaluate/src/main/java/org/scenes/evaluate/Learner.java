@@ -13,16 +13,16 @@ import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
-import org.scenes.convert.SceneConverter;
-import org.scenes.match.ActionSelector;
-import org.scenes.match.KnowledgeBase;
-import org.scenes.match.Recognizer;
-import org.scenes.match.SceneMetric;
-import org.scenes.match.SceneTransform;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Grid;
-import org.scenes.validate.MatchConfig;
-import org.scenes.scene.Scene;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.Grid;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SceneTransform;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
+import org.scenes.internal.validate.MatchConfig;
 
 /**
  * Learns an imitator from its teacher's own games, in process, through the same steps a user

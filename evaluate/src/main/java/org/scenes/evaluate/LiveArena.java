@@ -23,14 +23,14 @@ import org.scenes.agent.net.TeamRunner;
 import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.gamelog.GameLogReader;
-import org.scenes.protocol.Hear;
-import org.scenes.protocol.InitReply;
-import org.scenes.protocol.Message;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.SenseBody;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.GameLogReader;
+import org.scenes.internal.protocol.Hear;
+import org.scenes.internal.protocol.InitReply;
+import org.scenes.internal.protocol.Message;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.SenseBody;
 
 /**
  * Games on a live soccer server (rcssserver, or {@code scenes server}) through the project's UDP

@@ -7,8 +7,8 @@ import java.util.function.IntConsumer;
 import org.scenes.agent.BrainFactory;
 import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
 
 /** One game between two teams, both traced, each with an optional shadow brain beside its players. */
 public final class Match {

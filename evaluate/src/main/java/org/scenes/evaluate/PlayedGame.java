@@ -2,8 +2,8 @@ package org.scenes.evaluate;
 
 import java.util.List;
 import org.scenes.agent.sim.GameResult;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
 
 /**
  * One game seen from one side: who played there, which side it was, the seed, the result, the

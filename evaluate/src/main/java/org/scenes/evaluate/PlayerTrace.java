@@ -3,7 +3,7 @@ package org.scenes.evaluate;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
-import org.scenes.protocol.PlayerCommand;
+import org.scenes.internal.protocol.PlayerCommand;
 
 /**
  * What one player saw and did, see by see: the game time of each see, a key of what it showed

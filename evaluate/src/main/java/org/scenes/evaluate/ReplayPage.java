@@ -10,10 +10,10 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.scenes.files.AtomicOutput;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.gamelog.PlayerState;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.files.AtomicOutput;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.PlayerState;
 
 /**
  * A replay of one game in a web page that needs no network: the frames as JSON inside the page

@@ -28,9 +28,9 @@ import org.jfree.data.xy.DefaultXYZDataset;
 import org.jfree.data.xy.XYSeries;
 import org.jfree.data.xy.XYSeriesCollection;
 import org.jfree.svg.SVGGraphics2D;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.gamelog.PlayerState;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.PlayerState;
 
 /** The report's figures as JFreeChart charts, drawn to inline SVG. */
 final class ReportCharts {

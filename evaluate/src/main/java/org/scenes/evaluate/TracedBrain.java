@@ -3,13 +3,13 @@ package org.scenes.evaluate;
 import java.util.Objects;
 import java.util.function.Consumer;
 import org.scenes.agent.Brain;
-import org.scenes.protocol.CommandType;
-import org.scenes.protocol.Message;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.PlayerCommand;
-import org.scenes.protocol.See;
-import org.scenes.protocol.VisualObject;
-import org.scenes.scene.ObjectKind;
+import org.scenes.api.ObjectKind;
+import org.scenes.internal.protocol.CommandType;
+import org.scenes.internal.protocol.Message;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.PlayerCommand;
+import org.scenes.internal.protocol.See;
+import org.scenes.internal.protocol.VisualObject;
 
 /**
  * A brain that drives the player and, beside it, an optional shadow brain fed exactly the same

@@ -5,10 +5,10 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Stream;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.gamelog.PlayerState;
-import org.scenes.protocol.CommandType;
-import org.scenes.protocol.PlayerCommand;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.PlayerState;
+import org.scenes.internal.protocol.CommandType;
+import org.scenes.internal.protocol.PlayerCommand;
 
 /**
  * Can a simple classifier tell the teacher from the imitator? Each left player's play is cut into

@@ -66,7 +66,7 @@ class BrowserTest {
         Assumptions.assumeTrue(chromium != null, "Chromium is not installed (apt-get install chromium): browser test skipped");
         GameSetup.Team teal = new GameSetup.Team("Teal", 3, Teachers.byName("krislet"));
         GameSetup.Team amber = new GameSetup.Team("Amber", 3, Teachers.byName("statebased"));
-        List<org.scenes.gamelog.GameFrame> frames = new ArrayList<>();
+        List<org.scenes.internal.gamelog.GameFrame> frames = new ArrayList<>();
         new org.scenes.agent.sim.Simulator(new GameSetup(teal, amber, 300, 3, null)).run(t -> { }, frames::add);
         Path page = directory.resolve("replay.html");
         ReplayPage.write(page, "Teal against Amber", frames);
@@ -81,7 +81,7 @@ class BrowserTest {
                     + "</body>");
             Path moved = directory.resolve("moved-" + index + ".html");
             Files.writeString(moved, html);
-            org.scenes.gamelog.GameFrame frame = frames.get(index);
+            org.scenes.internal.gamelog.GameFrame frame = frames.get(index);
             String expected = String.format(java.util.Locale.ROOT, "cycle %d · %s · Teal %d : %d Amber · ball %.1f %.1f",
                     frame.time(), frame.playMode(), frame.scoreLeft(), frame.scoreRight(), frame.ball().x(),
                     frame.ball().y()).replace("-0.0", "0.0");

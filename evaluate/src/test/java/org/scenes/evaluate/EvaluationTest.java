@@ -8,8 +8,8 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.validate.MatchConfig;
+import org.scenes.api.PluginRegistry;
+import org.scenes.internal.validate.MatchConfig;
 
 class EvaluationTest {
     private static final GameSetup.Team TEACHER = new GameSetup.Team("Teal", 3, Teachers.byName("krislet"));

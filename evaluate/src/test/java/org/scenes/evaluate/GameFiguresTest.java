@@ -6,11 +6,11 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.scenes.agent.sim.GameResult;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.gamelog.PlayerState;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.PlayerCommand;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.PlayerState;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.PlayerCommand;
 
 class GameFiguresTest {
     private static final MessageParser PARSER = new MessageParser();

@@ -24,10 +24,10 @@ import org.scenes.agent.server.ServerConfig;
 import org.scenes.agent.server.ServerResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Side;
-import org.scenes.validate.MatchConfig;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.validate.MatchConfig;
 
 /**
  * {@code scenes evaluate --server}: the evaluation's games played on the project's own server

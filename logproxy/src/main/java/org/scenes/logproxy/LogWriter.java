@@ -13,10 +13,10 @@ import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
-import org.scenes.convert.LogFormat;
-import org.scenes.proxylog.Direction;
-import org.scenes.proxylog.MessageEscapes;
-import org.scenes.proxylog.ProxyLogLine;
+import org.scenes.internal.convert.LogFormat;
+import org.scenes.internal.proxylog.Direction;
+import org.scenes.internal.proxylog.MessageEscapes;
+import org.scenes.internal.proxylog.ProxyLogLine;
 
 /**
  * The log writer thread: drains the {@link LogRing} into one file per client. A client's log is

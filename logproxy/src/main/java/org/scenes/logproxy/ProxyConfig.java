@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.function.Consumer;
-import org.scenes.convert.LogFormat;
+import org.scenes.internal.convert.LogFormat;
 
 /**
  * Everything the proxy needs.

@@ -1,11 +1,11 @@
 package org.scenes.logproxy;
 
-import org.scenes.protocol.InitReply;
-import org.scenes.protocol.InitRequest;
-import org.scenes.protocol.Message;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.ProtocolException;
-import org.scenes.protocol.ReconnectRequest;
+import org.scenes.internal.protocol.InitReply;
+import org.scenes.internal.protocol.InitRequest;
+import org.scenes.internal.protocol.Message;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.ProtocolException;
+import org.scenes.internal.protocol.ReconnectRequest;
 
 /**
  * Who a client is, learned from the init exchange: {@code (init TEAM (version V))} or

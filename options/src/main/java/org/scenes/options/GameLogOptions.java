@@ -1,9 +1,9 @@
 package org.scenes.options;
 
 import java.util.function.Predicate;
-import org.scenes.convert.GameLogConverter;
-import org.scenes.scene.Observer;
-import org.scenes.vision.Fading;
+import org.scenes.api.Observer;
+import org.scenes.internal.convert.GameLogConverter;
+import org.scenes.internal.vision.Fading;
 import picocli.CommandLine.Option;
 
 /** How the server's game logs become scenes: the players chosen, the fading, the order of commands and sees. */

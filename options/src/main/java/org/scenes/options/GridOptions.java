@@ -1,7 +1,7 @@
 package org.scenes.options;
 
 import java.util.Arrays;
-import org.scenes.scene.Grid;
+import org.scenes.api.Grid;
 import picocli.CommandLine.Option;
 
 /** {@code --grid CxR} and {@code --bounds D,...}: the discretisation of the view. */

@@ -1,6 +1,6 @@
 package org.scenes.options;
 
-import org.scenes.convert.Pairing;
+import org.scenes.internal.convert.Pairing;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.TypeConversionException;

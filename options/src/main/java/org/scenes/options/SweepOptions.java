@@ -1,8 +1,8 @@
 package org.scenes.options;
 
 import java.nio.file.Path;
+import org.scenes.internal.experiment.Sweep;
 import org.scenes.script.ScriptFailure;
-import org.scenes.experiment.Sweep;
 import org.scenes.script.Sweeps;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;

@@ -4,8 +4,8 @@ import java.io.PrintWriter;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.scenes.validate.Folds;
-import org.scenes.validate.Tuner;
+import org.scenes.internal.validate.Folds;
+import org.scenes.internal.validate.Tuner;
 import picocli.CommandLine.Option;
 
 /** The options of {@code tune}'s cross-validated search, and how its descent's result is reported. */

@@ -5,9 +5,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
-import org.scenes.match.ActionWeights;
-import org.scenes.match.ObjectWeights;
-import org.scenes.validate.MatchConfig;
+import org.scenes.api.ActionWeights;
+import org.scenes.api.ObjectWeights;
+import org.scenes.internal.validate.MatchConfig;
 
 /**
  * A {@link MatchConfig} as it travels to the executors: the same fields in serializable form,

@@ -4,7 +4,7 @@ import java.io.Serializable;
 import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
-import org.scenes.convert.DropReason;
+import org.scenes.internal.convert.DropReason;
 
 /**
  * The totals of a convert job, summed where the games were converted (Spark reduces them on the

@@ -9,14 +9,14 @@ import java.util.Map;
 import java.util.UUID;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.apache.spark.broadcast.Broadcast;
-import org.scenes.experiment.FoldValidation;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SceneFile;
-import org.scenes.validate.Folds;
-import org.scenes.validate.MatchConfig;
-import org.scenes.validate.ValidationReport;
-import org.scenes.validate.Validator;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Scene;
+import org.scenes.internal.experiment.FoldValidation;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.validate.Folds;
+import org.scenes.internal.validate.MatchConfig;
+import org.scenes.internal.validate.ValidationReport;
+import org.scenes.internal.validate.Validator;
 
 /**
  * Cross-validation of many matching configurations as one Spark job each call: one task per
@@ -172,7 +172,7 @@ final class DistributedFolds implements AutoCloseable {
             if (e.getClass() == IllegalArgumentException.class) {
                 throw new IllegalArgumentException(message, e);
             }
-            throw new org.scenes.experiment.ExperimentException(message, e);
+            throw new org.scenes.internal.experiment.ExperimentException(message, e);
         }
     }
 

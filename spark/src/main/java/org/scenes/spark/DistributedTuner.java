@@ -7,11 +7,11 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Consumer;
-import org.scenes.scene.ActionType;
-import org.scenes.validate.Folds;
-import org.scenes.validate.MatchConfig;
-import org.scenes.validate.Tuner;
-import org.scenes.validate.ValidationReport;
+import org.scenes.api.ActionType;
+import org.scenes.internal.validate.Folds;
+import org.scenes.internal.validate.MatchConfig;
+import org.scenes.internal.validate.Tuner;
+import org.scenes.internal.validate.ValidationReport;
 
 /**
  * {@link Tuner#descend}, the local tuner's coordinate descent, with the folds run as Spark tasks. The search itself stays

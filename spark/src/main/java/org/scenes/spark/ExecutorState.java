@@ -5,12 +5,12 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Supplier;
-import org.scenes.match.KnowledgeBase;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SceneFile;
-import org.scenes.validate.Folds;
-import org.scenes.validate.MatchConfig;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Scene;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.validate.Folds;
+import org.scenes.internal.validate.MatchConfig;
 
 /**
  * What an executor keeps between the tasks of one job: the decoded scene files, each fold's scenes

@@ -11,20 +11,20 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.apache.hadoop.fs.FileStatus;
 import org.apache.spark.api.java.JavaSparkContext;
-import org.scenes.experiment.Configuration;
-import org.scenes.experiment.FoldValidation;
-import org.scenes.experiment.Result;
-import org.scenes.experiment.ResultTable;
-import org.scenes.experiment.Sweep;
-import org.scenes.scene.SceneFile;
-import org.scenes.validate.MatchConfig;
+import org.scenes.internal.experiment.Configuration;
+import org.scenes.internal.experiment.FoldValidation;
+import org.scenes.internal.experiment.Result;
+import org.scenes.internal.experiment.ResultTable;
+import org.scenes.internal.experiment.Sweep;
+import org.scenes.internal.files.CsvTables;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.validate.MatchConfig;
 import org.scenes.options.SweepOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
-import org.scenes.files.CsvTables;
 
 /** {@code scenes-spark experiment}: {@code scenes experiment} as a Spark job, one task per (configuration, fold). */
 @Command(name = "experiment", mixinStandardHelpOptions = true, sortOptions = false,

@@ -8,17 +8,17 @@ import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Locale;
-import org.scenes.convert.ConversionReport;
-import org.scenes.convert.DropReason;
-import org.scenes.convert.GameLogConverter;
-import org.scenes.convert.GameSceneFiles;
-import org.scenes.convert.Pairing;
-import org.scenes.convert.SceneConverter;
-import org.scenes.gamelog.GameLogs;
+import org.scenes.api.Grid;
+import org.scenes.internal.convert.ConversionReport;
+import org.scenes.internal.convert.DropReason;
+import org.scenes.internal.convert.GameLogConverter;
+import org.scenes.internal.convert.GameSceneFiles;
+import org.scenes.internal.convert.Pairing;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.gamelog.GameLogs;
+import org.scenes.internal.scene.LazySceneFileWriter;
+import org.scenes.internal.vision.Fading;
 import org.scenes.options.GameLogOptions;
-import org.scenes.scene.Grid;
-import org.scenes.scene.LazySceneFileWriter;
-import org.scenes.vision.Fading;
 
 /**
  * One game's conversion, the unit of a {@code convert} job: each of the game's player logs goes

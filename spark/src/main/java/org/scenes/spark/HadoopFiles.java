@@ -59,14 +59,14 @@ final class HadoopFiles {
     }
 
     /** The kind of server log a file is (by content, gzip or not), or null for any other file. */
-    org.scenes.gamelog.ServerLogs.Kind serverLogKind(String path) throws IOException {
+    org.scenes.internal.gamelog.ServerLogs.Kind serverLogKind(String path) throws IOException {
         try (InputStream raw = new java.io.BufferedInputStream(fileSystem(path).open(path(path)))) {
             raw.mark(2);
             int first = raw.read();
             int second = raw.read();
             raw.reset();
             InputStream in = first == 0x1f && second == 0x8b ? new java.util.zip.GZIPInputStream(raw) : raw;
-            return org.scenes.gamelog.ServerLogs.detect(in);
+            return org.scenes.internal.gamelog.ServerLogs.detect(in);
         }
     }
 

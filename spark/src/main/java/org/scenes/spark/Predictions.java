@@ -3,9 +3,9 @@ package org.scenes.spark;
 import java.io.Serializable;
 import java.util.ArrayList;
 import java.util.List;
-import org.scenes.scene.Action;
-import org.scenes.scene.ActionType;
-import org.scenes.validate.ValidationReport;
+import org.scenes.api.Action;
+import org.scenes.api.ActionType;
+import org.scenes.internal.validate.ValidationReport;
 
 /**
  * What one (configuration, fold) task sends back: each test scene's predicted actions and decision

@@ -7,8 +7,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.scenes.scene.SceneFile;
-import org.scenes.scene.SceneFileReader;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileReader;
 
 /**
  * The scene files of a cross-validation as bytes, in fold order: what the driver broadcasts once

@@ -1,12 +1,12 @@
 package org.scenes.spark;
 
 import java.io.PrintWriter;
-import org.scenes.plugin.PluginException;
-import org.scenes.scene.SceneFileException;
-import picocli.CommandLine;
+import org.scenes.api.PluginException;
+import org.scenes.internal.scene.SceneFileException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Spec;
+import picocli.CommandLine;
 
 /** The top-level {@code scenes-spark} command: the project's conversion and sweeps as Spark jobs. */
 @Command(name = "scenes-spark", mixinStandardHelpOptions = true, versionProvider = SparkCommand.Version.class,

@@ -10,7 +10,7 @@ import java.util.List;
 import java.util.Map;
 import org.apache.spark.SparkConf;
 import org.apache.spark.api.java.JavaSparkContext;
-import org.scenes.plugin.PluginRegistry;
+import org.scenes.api.PluginRegistry;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ScopeType;
 

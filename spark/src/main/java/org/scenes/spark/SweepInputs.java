@@ -3,8 +3,8 @@ package org.scenes.spark;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
-import org.scenes.scene.SceneFile;
-import org.scenes.scene.SceneFileReader;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileReader;
 
 /** The driver's copy of a cross-validation's scene files. */
 final class SweepInputs {

@@ -6,7 +6,7 @@ import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.scenes.convert.DropReason;
+import org.scenes.internal.convert.DropReason;
 
 /** The convert job's totals, reduced in whatever order Spark merges the games' summaries. */
 class ConvertSummaryTest {

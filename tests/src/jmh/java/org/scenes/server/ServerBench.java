@@ -28,7 +28,7 @@ import org.scenes.agent.server.ServerResult;
 import org.scenes.agent.server.SoccerServer;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
 
 /**
  * One whole game of {@code scenes server} with two teacher teams of 11 players each, all 22

@@ -21,7 +21,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.BiFunction;
-import org.scenes.files.Inputs;
+import org.scenes.internal.files.Inputs;
 
 /**
  * A scripted stand-in for rcssserver on loopback. It does the init exchange the way the real

@@ -20,14 +20,14 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import org.scenes.internal.convert.LogFormat;
+import org.scenes.internal.proxylog.Direction;
+import org.scenes.internal.proxylog.ProxyLogLine;
 import org.scenes.logproxy.ClientKind;
-import org.scenes.convert.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.ProxyStats;
 import org.scenes.logproxy.Route;
-import org.scenes.proxylog.Direction;
-import org.scenes.proxylog.ProxyLogLine;
 
 /**
  * Latency benchmark of the logging proxy on loopback: N clients each send M commands per

@@ -20,14 +20,14 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.zip.CRC32;
+import org.scenes.internal.proxylog.Direction;
+import org.scenes.internal.proxylog.ProxyLogLine;
 import org.scenes.logproxy.ClientKind;
 import org.scenes.logproxy.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.ProxyStats;
 import org.scenes.logproxy.Route;
-import org.scenes.proxylog.Direction;
-import org.scenes.proxylog.ProxyLogLine;
 
 /**
  * Load run of the logging proxy: N clients play C cycles at full rate (no 100 ms pause: each

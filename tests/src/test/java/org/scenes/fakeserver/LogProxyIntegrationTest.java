@@ -25,13 +25,13 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.scenes.internal.convert.LogFormat;
+import org.scenes.internal.proxylog.Direction;
 import org.scenes.logproxy.ClientKind;
-import org.scenes.convert.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.ProxyEnvironment;
 import org.scenes.logproxy.Route;
-import org.scenes.proxylog.Direction;
 import org.scenes.tests.SimulatedGame;
 
 /** Clients talk to the fake soccer server through the logging proxy; the logs are checked message by message. */

@@ -28,13 +28,13 @@ import java.util.function.BooleanSupplier;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.scenes.internal.proxylog.Direction;
 import org.scenes.logproxy.ClientKind;
 import org.scenes.logproxy.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.ProxyEnvironment;
 import org.scenes.logproxy.Route;
-import org.scenes.proxylog.Direction;
 import org.scenes.tests.SimulatedGame;
 
 /**

@@ -11,8 +11,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HexFormat;
 import java.util.List;
-import org.scenes.proxylog.Direction;
-import org.scenes.proxylog.ProxyLogLine;
+import org.scenes.internal.proxylog.Direction;
+import org.scenes.internal.proxylog.ProxyLogLine;
 
 /** A native proxy log read back, for assertions. */
 record ProxyLogs(List<ProxyLogLine> lines, List<String> comments) {

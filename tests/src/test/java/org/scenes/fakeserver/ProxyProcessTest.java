@@ -17,7 +17,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.scenes.proxylog.Direction;
+import org.scenes.internal.proxylog.Direction;
 
 /** {@code scenes proxy} as its own process: SIGTERM completes every log. */
 class ProxyProcessTest {

@@ -25,23 +25,23 @@ import org.junit.jupiter.params.provider.ValueSource;
 import org.scenes.agent.BrainFactory;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.net.ClientOptions;
-import org.scenes.agent.net.PlayerReport;
 import org.scenes.agent.net.PlayerReport.Outcome;
+import org.scenes.agent.net.PlayerReport;
 import org.scenes.agent.net.ServerAddress;
 import org.scenes.agent.net.TeamRunner;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.convert.Pairing;
-import org.scenes.convert.SceneConverter;
-import org.scenes.match.KnowledgeBase;
-import org.scenes.match.Recognizer;
-import org.scenes.match.SceneMetric;
-import org.scenes.scene.Action;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Observer;
-import org.scenes.scene.Relation;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.Action;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Observer;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SeenObject;
+import org.scenes.internal.convert.Pairing;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
 
 /**
  * What one player received from a real rcssserver 19 (protocol 5, 7, 9, 15, 19), replayed by the
@@ -179,7 +179,7 @@ class RealServerReplayTest {
         for (int i = 0; i < converted.size(); i++) {
             Scene expected = collapsed.get(i);
             Scene actual = converted.get(i);
-            assertEquals(new Observer("TestTeam", org.scenes.scene.Side.LEFT, 1), actual.observer());
+            assertEquals(new Observer("TestTeam", org.scenes.api.Side.LEFT, 1), actual.observer());
             assertEquals(expected.observer(), actual.observer(), "scene " + i);
             assertEquals(expected.cycle(), actual.cycle(), "scene " + i);
             assertEquals(expected.objects(), actual.objects(), "scene " + i);

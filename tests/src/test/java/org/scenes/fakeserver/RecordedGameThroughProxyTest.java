@@ -20,16 +20,16 @@ import java.util.function.BooleanSupplier;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.scenes.convert.SceneConverter;
-import org.scenes.files.Inputs;
+import org.scenes.api.Grid;
+import org.scenes.api.Scene;
+import org.scenes.internal.convert.LogFormat;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.files.Inputs;
+import org.scenes.internal.proxylog.ProxyLogLine;
 import org.scenes.logproxy.ClientKind;
-import org.scenes.convert.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.Route;
-import org.scenes.proxylog.ProxyLogLine;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Scene;
 
 /**
  * A whole recorded game replayed through two chained proxies (classic layout, then native):

@@ -5,14 +5,14 @@ import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.scenes.convert.LogException;
-import org.scenes.convert.LogReader;
-import org.scenes.convert.SceneConverter;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.ProtocolException;
-import org.scenes.scene.Grid;
-import org.scenes.scene.SceneFileException;
-import org.scenes.scene.SceneFileReader;
+import org.scenes.api.Grid;
+import org.scenes.internal.convert.LogException;
+import org.scenes.internal.convert.LogReader;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.ProtocolException;
+import org.scenes.internal.scene.SceneFileException;
+import org.scenes.internal.scene.SceneFileReader;
 
 /**
  * Jazzer fuzz tests of the readers. Under {@code gradle test} they run in Jazzer's regression

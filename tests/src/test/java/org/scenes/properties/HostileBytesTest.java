@@ -14,14 +14,14 @@ import net.jqwik.api.Combinators;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
-import org.scenes.convert.LogException;
-import org.scenes.convert.LogReader;
-import org.scenes.convert.SceneConverter;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.ProtocolException;
-import org.scenes.scene.Grid;
-import org.scenes.scene.SceneFileException;
-import org.scenes.scene.SceneFileReader;
+import org.scenes.api.Grid;
+import org.scenes.internal.convert.LogException;
+import org.scenes.internal.convert.LogReader;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.ProtocolException;
+import org.scenes.internal.scene.SceneFileException;
+import org.scenes.internal.scene.SceneFileReader;
 
 /**
  * Generated hostile input for every reader (the fuzzing fallback where Jazzer does not run, see
@@ -91,13 +91,13 @@ class HostileBytesTest {
     private static byte[] validSceneFile() {
         try {
             Path file = Files.createTempFile("valid", ".json");
-            org.scenes.scene.Observer observer = new org.scenes.scene.Observer("T", org.scenes.scene.Side.LEFT, 1);
-            try (org.scenes.scene.SceneFileWriter writer = org.scenes.scene.SceneFileWriter.create(file,
-                    org.scenes.scene.SceneFileHeader.of(Grid.DEFAULT, new org.scenes.scene.SceneSource("x", observer)))) {
+            org.scenes.api.Observer observer = new org.scenes.api.Observer("T", org.scenes.api.Side.LEFT, 1);
+            try (org.scenes.internal.scene.SceneFileWriter writer = org.scenes.internal.scene.SceneFileWriter.create(file,
+                    org.scenes.internal.scene.SceneFileHeader.of(Grid.DEFAULT, new org.scenes.internal.scene.SceneSource("x", observer)))) {
                 for (int i = 0; i < 3; i++) {
-                    writer.write(new org.scenes.scene.Scene(i, observer, List.of(org.scenes.scene.SeenObject.simple(
-                            org.scenes.scene.ObjectKind.BALL, "b", org.scenes.scene.Relation.NONE, 1.5 + i, 3, Grid.DEFAULT)),
-                            List.of(org.scenes.scene.Action.dash(50))));
+                    writer.write(new org.scenes.api.Scene(i, observer, List.of(org.scenes.api.SeenObject.simple(
+                            org.scenes.api.ObjectKind.BALL, "b", org.scenes.api.Relation.NONE, 1.5 + i, 3, Grid.DEFAULT)),
+                            List.of(org.scenes.api.Action.dash(50))));
                 }
                 writer.commit();
             }

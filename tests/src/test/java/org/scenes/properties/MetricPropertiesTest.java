@@ -16,20 +16,20 @@ import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
 import net.jqwik.api.constraints.IntRange;
-import org.scenes.match.KnowledgeBase;
-import org.scenes.match.Neighbour;
-import org.scenes.match.Recognizer;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Action;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Observer;
-import org.scenes.scene.Relation;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
-import org.scenes.scene.Side;
+import org.scenes.api.Action;
+import org.scenes.api.Grid;
+import org.scenes.api.Neighbour;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Observer;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SeenObject;
+import org.scenes.api.Side;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
 
 /**
  * Properties every metric plugin must have, on scenes jqwik generates: distances never negative

@@ -25,15 +25,15 @@ import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.convert.SceneConverter;
-import org.scenes.match.ActionSelector;
-import org.scenes.match.KnowledgeBase;
-import org.scenes.match.Recognizer;
-import org.scenes.match.SceneMetric;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SeenObject;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
 
 /**
  * The runtime's two kinds of team, started the one way ({@link TeamRunner}), play a whole

@@ -29,17 +29,17 @@ import org.scenes.agent.server.ServerResult;
 import org.scenes.agent.server.SoccerServer;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.convert.ConversionReport;
-import org.scenes.convert.SceneConverter;
+import org.scenes.api.Grid;
+import org.scenes.api.Side;
+import org.scenes.internal.convert.ConversionReport;
+import org.scenes.internal.convert.LogFormat;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.proxylog.Direction;
+import org.scenes.internal.proxylog.ProxyLogLine;
 import org.scenes.logproxy.ClientKind;
-import org.scenes.convert.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.Route;
-import org.scenes.proxylog.Direction;
-import org.scenes.proxylog.ProxyLogLine;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Side;
 
 /**
  * The project's agents (teachers on the live runtime, over UDP) play one full game on

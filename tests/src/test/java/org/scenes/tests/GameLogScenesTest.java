@@ -13,15 +13,15 @@ import org.junit.jupiter.api.io.TempDir;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.convert.GameLogConverter;
-import org.scenes.convert.Pairing;
-import org.scenes.convert.SceneComparison;
-import org.scenes.convert.SceneConverter;
-import org.scenes.scene.Grid;
-import org.scenes.scene.SceneFileHeader;
-import org.scenes.scene.SceneFileWriter;
-import org.scenes.scene.SceneSource;
-import org.scenes.vision.Fading;
+import org.scenes.api.Grid;
+import org.scenes.internal.convert.GameLogConverter;
+import org.scenes.internal.convert.Pairing;
+import org.scenes.internal.convert.SceneComparison;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.scene.SceneFileHeader;
+import org.scenes.internal.scene.SceneFileWriter;
+import org.scenes.internal.scene.SceneSource;
+import org.scenes.internal.vision.Fading;
 
 /**
  * Scenes rebuilt from the server's logs of a simulated game against the scenes of the players'

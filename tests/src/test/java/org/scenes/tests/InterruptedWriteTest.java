@@ -22,8 +22,8 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.scene.SceneFile;
-import org.scenes.scene.SceneFileReader;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileReader;
 
 /**
  * A child JVM running {@code scenes convert} or {@code scenes simulate} is stopped at random
@@ -258,7 +258,7 @@ class InterruptedWriteTest {
                 File[] written = logs.toFile().listFiles();
                 for (File log : written == null ? new File[0] : written) {
                     // a log is there only when complete: it converts without error
-                    assertTrue(new org.scenes.convert.SceneConverter(org.scenes.scene.Grid.DEFAULT, false, null)
+                    assertTrue(new org.scenes.internal.convert.SceneConverter(org.scenes.api.Grid.DEFAULT, false, null)
                             .convert(log.toPath(), scene -> { }).scenes() > 0, log.toString());
                 }
             }

@@ -20,16 +20,16 @@ import javax.tools.ToolProvider;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginException;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SeenObject;
 import org.scenes.cli.Main;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginException;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Relation;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
 
 /**
  * A metric compiled at test time into its own jar, never on the class path, is found by
@@ -39,9 +39,9 @@ class PluginPathTest {
     private static final String SOURCE = """
             package thirdparty;
 
-            import org.scenes.match.MetricProvider;
-            import org.scenes.match.SceneMetric;
-            import org.scenes.plugin.PluginConfig;
+            import org.scenes.api.MetricProvider;
+            import org.scenes.api.SceneMetric;
+            import org.scenes.api.PluginConfig;
 
             public final class ObjectCountMetric implements MetricProvider {
                 public String name() { return "object-count"; }
@@ -72,7 +72,7 @@ class PluginPathTest {
         try (JarOutputStream jar = new JarOutputStream(Files.newOutputStream(pluginDir.resolve("object-count.jar")))) {
             jar.putNextEntry(new JarEntry("thirdparty/ObjectCountMetric.class"));
             jar.write(Files.readAllBytes(classes.resolve("thirdparty/ObjectCountMetric.class")));
-            jar.putNextEntry(new JarEntry("META-INF/services/org.scenes.match.MetricProvider"));
+            jar.putNextEntry(new JarEntry("META-INF/services/org.scenes.api.MetricProvider"));
             jar.write("thirdparty.ObjectCountMetric\n".getBytes(StandardCharsets.UTF_8));
         }
     }

@@ -17,18 +17,18 @@ import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.scene.Action;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Observer;
-import org.scenes.scene.Relation;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SceneFile;
-import org.scenes.scene.SceneFileHeader;
-import org.scenes.scene.SceneFileWriter;
-import org.scenes.scene.SceneSource;
-import org.scenes.scene.SeenObject;
-import org.scenes.scene.Side;
+import org.scenes.api.Action;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Observer;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
+import org.scenes.api.Side;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileHeader;
+import org.scenes.internal.scene.SceneFileWriter;
+import org.scenes.internal.scene.SceneSource;
 
 /** The published JSON Schema accepts what the writer writes, and rejects what the reader rejects. */
 class SceneSchemaTest {

@@ -14,18 +14,18 @@ import java.util.Map;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.convert.SceneConverter;
-import org.scenes.match.KnowledgeBase;
-import org.scenes.match.ObjectWeights;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Scene;
-import org.scenes.validate.MatchConfig;
-import org.scenes.validate.QueryFailure;
-import org.scenes.validate.ValidationReport;
-import org.scenes.validate.Validator;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectWeights;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.validate.MatchConfig;
+import org.scenes.internal.validate.QueryFailure;
+import org.scenes.internal.validate.ValidationReport;
+import org.scenes.internal.validate.Validator;
 
 /**
  * The shipped scripts against the built-in Java plugins they imitate, on simulated Krislet scenes:
@@ -91,7 +91,7 @@ class ScriptMetricTest {
         String vote = "script:" + Path.of(System.getProperty("scenes.examples", "../examples/scripts"), "vote.groovy");
         for (String actionWeights : new String[] {"1/1/1/1/1/1/1", "1/1/3/0/1/1/1"}) {
             MatchConfig java = MatchConfig.DEFAULT.withMetric("ball-goal", Map.of()).withK(7).withSelector("vote", Map.of())
-                    .withActionWeights(org.scenes.match.ActionWeights.parse(actionWeights));
+                    .withActionWeights(org.scenes.api.ActionWeights.parse(actionWeights));
             ValidationReport expected = Validator.run(knowledge, queries, java, REGISTRY, true, null);
             ValidationReport actual = Validator.run(knowledge, queries, java.withSelector(vote, Map.of()), REGISTRY, true, null);
             assertEquals(expected.accuracy(), actual.accuracy(), actionWeights);

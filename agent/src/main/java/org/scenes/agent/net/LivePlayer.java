@@ -15,15 +15,15 @@ import org.scenes.agent.Brain;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.net.Connection.Datagram;
 import org.scenes.agent.net.PlayerReport.Outcome;
-import org.scenes.protocol.Hear;
-import org.scenes.protocol.InitReply;
-import org.scenes.protocol.Message;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.Parameters;
-import org.scenes.protocol.ProtocolException;
-import org.scenes.protocol.See;
-import org.scenes.protocol.SenseBody;
-import org.scenes.protocol.ServerNotice;
+import org.scenes.internal.protocol.Hear;
+import org.scenes.internal.protocol.InitReply;
+import org.scenes.internal.protocol.Message;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.Parameters;
+import org.scenes.internal.protocol.ProtocolException;
+import org.scenes.internal.protocol.See;
+import org.scenes.internal.protocol.SenseBody;
+import org.scenes.internal.protocol.ServerNotice;
 
 /**
  * One player on a real (or fake) soccer server: its socket, its brain, its health.

@@ -5,9 +5,9 @@ import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.scenes.files.AtomicTextOutput;
-import org.scenes.proxylog.Direction;
-import org.scenes.proxylog.ProxyLogLine;
+import org.scenes.internal.files.AtomicTextOutput;
+import org.scenes.internal.proxylog.Direction;
+import org.scenes.internal.proxylog.ProxyLogLine;
 
 /**
  * One player's traffic in the project's proxy log format (what {@code scenes proxy} writes, what

@@ -1,9 +1,9 @@
 package org.scenes.agent.server;
 
-import org.scenes.protocol.InitRequest;
-import org.scenes.protocol.Message;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.ProtocolException;
+import org.scenes.internal.protocol.InitRequest;
+import org.scenes.internal.protocol.Message;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.ProtocolException;
 
 /**
  * What a new client asks on the init port, read with core's parser and judged with rcssserver's

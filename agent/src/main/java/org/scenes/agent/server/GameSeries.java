@@ -8,7 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Consumer;
-import org.scenes.gamelog.GameFrame;
+import org.scenes.internal.gamelog.GameFrame;
 
 /**
  * Several games served one after another on the same init port, as a closed-loop evaluation

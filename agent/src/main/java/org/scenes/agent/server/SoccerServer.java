@@ -19,9 +19,9 @@ import java.util.function.Consumer;
 import org.scenes.agent.sim.Engine;
 import org.scenes.agent.sim.GameRecorder;
 import org.scenes.agent.sim.Seat;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.protocol.MessageParser;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.protocol.MessageParser;
 
 /**
  * The simulator's {@link Engine} served over UDP like rcssserver serves its players: clients

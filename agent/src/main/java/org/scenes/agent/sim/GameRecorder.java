@@ -7,9 +7,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.List;
-import org.scenes.gamelog.CommandLogWriter;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.gamelog.GameLogWriter;
+import org.scenes.internal.gamelog.CommandLogWriter;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.GameLogWriter;
 
 /**
  * The server's logs of one game in a directory: the game log ({@code .rcg}) and the command log

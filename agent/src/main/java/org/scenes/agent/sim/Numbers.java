@@ -1,6 +1,6 @@
 package org.scenes.agent.sim;
 
-import org.scenes.vision.VisionNumbers;
+import org.scenes.internal.vision.VisionNumbers;
 
 /** Quantisation and number text as the server writes them (shared with core's vision: {@link VisionNumbers}). */
 final class Numbers {

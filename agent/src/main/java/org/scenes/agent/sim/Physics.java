@@ -1,7 +1,7 @@
 package org.scenes.agent.sim;
 
 import java.util.List;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
 
 /**
  * The server's body model: dash, turn, turn_neck, kick and move change a player or the ball;

@@ -1,6 +1,6 @@
 package org.scenes.agent.sim;
 
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
 
 /** One player's body as the server keeps it, with its view mode and command counters. */
 final class Player extends MovingObject {

@@ -3,7 +3,7 @@ package org.scenes.agent.sim;
 import java.io.IOException;
 import java.io.Writer;
 import java.nio.file.Path;
-import org.scenes.files.AtomicTextOutput;
+import org.scenes.internal.files.AtomicTextOutput;
 
 /**
  * One player's exchange in the classic {@code .lsf} layout: every message either way, one per

@@ -2,7 +2,7 @@ package org.scenes.agent.sim;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
 
 /**
  * Play modes and the clock: kick-off, goals, kick-ins, corner and goal kicks, half time and time

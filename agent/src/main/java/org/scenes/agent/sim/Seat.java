@@ -3,7 +3,7 @@ package org.scenes.agent.sim;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
 
 /**
  * One connected player as the server sees it: its place in the game, the protocol version it

@@ -9,8 +9,8 @@ import java.util.Random;
 import java.util.function.Consumer;
 import java.util.function.IntConsumer;
 import org.scenes.agent.Brain;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
 
 /**
  * An embedded soccer server: plays one game between in-process brains that exchange version 9

@@ -4,15 +4,15 @@ import java.util.List;
 import java.util.SplittableRandom;
 import java.util.function.Consumer;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.convert.SceneConverter;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.PlayerCommand;
-import org.scenes.protocol.See;
-import org.scenes.scene.Action;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Observer;
-import org.scenes.scene.Scene;
-import org.scenes.scene.Side;
+import org.scenes.api.Action;
+import org.scenes.api.Grid;
+import org.scenes.api.Observer;
+import org.scenes.api.Scene;
+import org.scenes.api.Side;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.PlayerCommand;
+import org.scenes.internal.protocol.See;
 
 /**
  * Scenes without a game, as many as a benchmark wants: each one an independent random moment of

@@ -1,9 +1,9 @@
 package org.scenes.agent.sim;
 
-import org.scenes.scene.Side;
-import org.scenes.vision.Fading;
-import org.scenes.vision.SeeWriter;
-import org.scenes.vision.VisionParams;
+import org.scenes.api.Side;
+import org.scenes.internal.vision.Fading;
+import org.scenes.internal.vision.SeeWriter;
+import org.scenes.internal.vision.VisionParams;
 
 /**
  * Writes what one player senses, as version 9 text: {@code see} (core's {@link SeeWriter}: landmarks,

@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Random;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
 
 /** Everything on the pitch at one moment: ball, players, clock, play mode and score. */
 final class World {

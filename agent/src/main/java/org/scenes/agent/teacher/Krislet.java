@@ -3,9 +3,9 @@ package org.scenes.agent.teacher;
 import java.util.Random;
 import java.util.function.Consumer;
 import org.scenes.agent.Brain;
-import org.scenes.protocol.See;
-import org.scenes.protocol.VisualObject;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.protocol.See;
+import org.scenes.internal.protocol.VisualObject;
 
 /**
  * The classic Krislet rules, applied to the latest {@code see} (a ball seen behind, {@code (B)},

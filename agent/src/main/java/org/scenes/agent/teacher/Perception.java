@@ -1,12 +1,12 @@
 package org.scenes.agent.teacher;
 
-import org.scenes.protocol.Hear;
-import org.scenes.protocol.InitReply;
-import org.scenes.protocol.Message;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.See;
-import org.scenes.protocol.VisualObject;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.protocol.Hear;
+import org.scenes.internal.protocol.InitReply;
+import org.scenes.internal.protocol.Message;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.See;
+import org.scenes.internal.protocol.VisualObject;
 
 /**
  * What a teacher knows: its side, the play mode and the latest {@code see}, read from the

@@ -3,9 +3,9 @@ package org.scenes.agent.teacher;
 import java.util.Random;
 import java.util.function.Consumer;
 import org.scenes.agent.Brain;
-import org.scenes.protocol.InitReply;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.VisualObject;
+import org.scenes.internal.protocol.InitReply;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.VisualObject;
 
 /**
  * A state-based Krislet: the same senses, but the choice depends on a state kept between sees,

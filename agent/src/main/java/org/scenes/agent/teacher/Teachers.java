@@ -3,8 +3,8 @@ package org.scenes.agent.teacher;
 import java.util.Map;
 import java.util.TreeMap;
 import org.scenes.agent.BrainFactory;
-import org.scenes.protocol.See;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.protocol.See;
 
 /** The teacher agents by name, as {@code scenes simulate --teams NAME:N,...} names them. */
 public final class Teachers {

@@ -14,15 +14,15 @@ import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.convert.SceneConverter;
-import org.scenes.match.ActionSelector;
-import org.scenes.match.KnowledgeBase;
-import org.scenes.match.Recognizer;
-import org.scenes.match.SceneMetric;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SeenObject;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
 
 /** Learn from a simulated Krislet game, then play in the simulator with what was learnt. */
 class ImitationBrainTest {
@@ -82,7 +82,7 @@ class ImitationBrainTest {
     }
 
     /** Remembers the scene before, like the memory plugin. */
-    static final class Remember implements org.scenes.match.SceneTransform {
+    static final class Remember implements org.scenes.api.SceneTransform {
         private Scene last;
 
         @Override

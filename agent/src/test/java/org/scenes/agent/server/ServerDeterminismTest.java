@@ -26,9 +26,9 @@ import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.files.Inputs;
-import org.scenes.proxylog.ProxyLogLine;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.files.Inputs;
+import org.scenes.internal.proxylog.ProxyLogLine;
 
 /**
  * The same teams and seed give the same game in process and over UDP in synchronous mode: the

@@ -21,8 +21,8 @@ import java.util.concurrent.TimeoutException;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.gamelog.GameLogReader;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.GameLogReader;
 
 class SoccerServerTest {
     @TempDir

@@ -11,14 +11,14 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.convert.ConversionReport;
-import org.scenes.convert.SceneConverter;
-import org.scenes.scene.Action;
-import org.scenes.scene.ActionType;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Relation;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.Action;
+import org.scenes.api.ActionType;
+import org.scenes.api.Grid;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
+import org.scenes.internal.convert.ConversionReport;
+import org.scenes.internal.convert.SceneConverter;
 
 /** The simulator's logs go through core's converter unchanged, like recorded games. */
 class ConvertSimulatedGameTest {
@@ -47,8 +47,8 @@ class ConvertSimulatedGameTest {
         // per cycle and player, and a quarter of the sees without an action, as in recorded games.
         long perPlayer = total.scenes() / game.logs().size();
         assertTrue(perPlayer > cycles * 0.4 && perPlayer < cycles * 0.7, "scenes per player " + perPlayer);
-        double unanswered = (double) total.dropped(org.scenes.convert.DropReason.NO_ACTION)
-                / (total.scenes() + total.dropped(org.scenes.convert.DropReason.NO_ACTION));
+        double unanswered = (double) total.dropped(org.scenes.internal.convert.DropReason.NO_ACTION)
+                / (total.scenes() + total.dropped(org.scenes.internal.convert.DropReason.NO_ACTION));
         assertEquals(0.25, unanswered, 0.03);
         assertTrue(actions.getOrDefault(ActionType.DASH, 0) > 1000, actions.toString());
         assertTrue(actions.getOrDefault(ActionType.TURN, 0) > 1000, actions.toString());
@@ -57,7 +57,7 @@ class ConvertSimulatedGameTest {
         // is sent again at the two cycle starts after each goal and after half time, as the live
         // runtime sends it, and those follow sees.
         int pauses = game.scoreLeft() + game.scoreRight() + 1;
-        assertEquals(game.logs().size() * (1 + 2 * pauses), total.commands(org.scenes.protocol.CommandType.MOVE));
+        assertEquals(game.logs().size() * (1 + 2 * pauses), total.commands(org.scenes.internal.protocol.CommandType.MOVE));
         assertTrue(actions.getOrDefault(ActionType.MOVE, 0) <= game.logs().size() * 2 * pauses, actions.toString());
         // Teammates and opponents are told apart by the converter from the quoted team names.
         boolean teammate = false;
@@ -65,7 +65,7 @@ class ConvertSimulatedGameTest {
         for (Scene scene : scenes) {
             for (SeenObject object : scene.objects()) {
                 teammate |= object.relation() == Relation.TEAMMATE;
-                opponent |= object.relation() == Relation.OPPONENT && object.kind() == org.scenes.scene.ObjectKind.PLAYER;
+                opponent |= object.relation() == Relation.OPPONENT && object.kind() == org.scenes.api.ObjectKind.PLAYER;
             }
         }
         assertTrue(teammate && opponent);

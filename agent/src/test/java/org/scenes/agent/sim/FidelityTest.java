@@ -16,12 +16,12 @@ import java.util.Map;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.files.Inputs;
-import org.scenes.protocol.Message;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.See;
-import org.scenes.protocol.VisualObject;
-import org.scenes.scene.ObjectKind;
+import org.scenes.api.ObjectKind;
+import org.scenes.internal.files.Inputs;
+import org.scenes.internal.protocol.Message;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.See;
+import org.scenes.internal.protocol.VisualObject;
 import org.scenes.testing.RequiresSharedData;
 import org.scenes.testing.SharedData;
 

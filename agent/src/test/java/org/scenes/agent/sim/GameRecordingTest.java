@@ -14,10 +14,10 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.files.Inputs;
-import org.scenes.gamelog.GameFrame;
-import org.scenes.gamelog.GameLogReader;
-import org.scenes.gamelog.PlayerState;
+import org.scenes.internal.files.Inputs;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.GameLogReader;
+import org.scenes.internal.gamelog.PlayerState;
 
 class GameRecordingTest {
     private static final Pattern RCL = Pattern.compile("(\\d+),(\\d+)\t(Recv (\\w+)_(\\d+): (.*)|\\(referee (\\w+)\\))");

@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
 
 class PhysicsTest {
     private final World world = new World(ServerParams.DEFAULT, 3);

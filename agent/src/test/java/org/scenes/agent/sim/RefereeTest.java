@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
 
 class RefereeTest {
     private final World world = new World(ServerParams.DEFAULT, 1);

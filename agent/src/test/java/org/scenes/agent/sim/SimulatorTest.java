@@ -15,7 +15,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.agent.teacher.Teachers;
-import org.scenes.files.Inputs;
+import org.scenes.internal.files.Inputs;
 
 class SimulatorTest {
     @TempDir

@@ -12,15 +12,15 @@ import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
-import org.scenes.convert.SceneConverter;
-import org.scenes.scene.Action;
-import org.scenes.scene.ActionType;
-import org.scenes.scene.Cell;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Relation;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.Action;
+import org.scenes.api.ActionType;
+import org.scenes.api.Cell;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
+import org.scenes.internal.convert.SceneConverter;
 import org.scenes.testing.RequiresSharedData;
 import org.scenes.testing.SharedData;
 
@@ -129,7 +129,7 @@ class SyntheticScenesTest {
         if (ball.distance() > 1) {
             return ball.direction() != 0 ? Action.turn(ball.direction()) : Action.dash(Math.rint(ball.distance() * 100) / 10);
         }
-        SeenObject goal = find(scene, scene.observer().side() == org.scenes.scene.Side.LEFT ? "g r" : "g l");
+        SeenObject goal = find(scene, scene.observer().side() == org.scenes.api.Side.LEFT ? "g r" : "g l");
         return goal == null ? Action.turn(40) : Action.kick(100, goal.direction());
     }
 

@@ -1,15 +1,15 @@
 package org.scenes.agent.sim;
 
-import org.scenes.vision.Landmarks;
+import org.scenes.internal.vision.Landmarks;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
-import org.scenes.protocol.MessageParser;
-import org.scenes.protocol.See;
-import org.scenes.protocol.VisualObject;
-import org.scenes.scene.Side;
+import org.scenes.api.Side;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.See;
+import org.scenes.internal.protocol.VisualObject;
 
 class VisionTest {
     private final World world = new World(ServerParams.DEFAULT, 1);
@@ -169,6 +169,6 @@ class VisionTest {
     @Test
     void senseBodyParses() {
         String text = vision.senseBody(self);
-        assertTrue(new MessageParser().parse(text) instanceof org.scenes.protocol.SenseBody, text);
+        assertTrue(new MessageParser().parse(text) instanceof org.scenes.internal.protocol.SenseBody, text);
     }
 }

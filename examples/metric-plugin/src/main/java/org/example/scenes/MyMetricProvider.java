@@ -1,13 +1,13 @@
 package org.example.scenes;
 
 import java.util.Map;
-import org.scenes.match.MetricProvider;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginException;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.MetricProvider;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginException;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SeenObject;
 
 /**
  * {@code my-metric}: how far apart the ball is in two scenes, in metres, seen from the player;

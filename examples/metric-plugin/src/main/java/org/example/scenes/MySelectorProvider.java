@@ -1,10 +1,10 @@
 package org.example.scenes;
 
-import org.scenes.match.ActionSelector;
-import org.scenes.match.Neighbour;
-import org.scenes.match.SelectorProvider;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.scene.Action;
+import org.scenes.api.Action;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.Neighbour;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.SelectorProvider;
 
 /** {@code my-selector}: the action of the nearest stored scene that holds one. */
 public final class MySelectorProvider implements SelectorProvider {

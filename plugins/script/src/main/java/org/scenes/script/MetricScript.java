@@ -1,10 +1,10 @@
 package org.scenes.script;
 
 import groovy.lang.Script;
-import org.scenes.match.ObjectWeights;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.scene.Scene;
+import org.scenes.api.ObjectWeights;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
 
 /**
  * Base class of every metric script. A script file becomes a subclass whose top-level methods
@@ -13,7 +13,7 @@ import org.scenes.scene.Scene;
  *   <li>simple: {@code double distance(Scene query, Scene stored)};</li>
  *   <li>fast: {@code double[] encode(Scene scene)} and
  *       {@code double distance(double[] query, double[] stored, double bound)}, like a Java
- *       {@link org.scenes.match.EncodedMetric EncodedMetric&lt;double[]&gt;}: the recognizer encodes
+ *       {@link org.scenes.api.EncodedMetric EncodedMetric&lt;double[]&gt;}: the recognizer encodes
  *       every scene once and compares arrays.</li>
  * </ul>
  * Statements outside methods run once when the metric is created (after {@link #getConfig()}

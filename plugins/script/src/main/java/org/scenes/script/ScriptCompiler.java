@@ -25,7 +25,7 @@ import org.codehaus.groovy.control.messages.Message;
 import org.codehaus.groovy.control.messages.SimpleMessage;
 import org.codehaus.groovy.control.messages.SyntaxErrorMessage;
 import org.codehaus.groovy.syntax.SyntaxException;
-import org.scenes.plugin.PluginException;
+import org.scenes.api.PluginException;
 
 /**
  * Compiles a script file into a subclass of a base script class, statically (so type errors
@@ -109,7 +109,7 @@ final class ScriptCompiler {
         configuration.setSourceEncoding("UTF-8");
         configuration.setDisabledGlobalASTTransformations(Set.of(GRAB_TRANSFORM));
         ImportCustomizer imports = new ImportCustomizer();
-        imports.addStarImports("org.scenes.scene", "org.scenes.match", "org.scenes.plugin", "org.scenes.experiment");
+        imports.addStarImports("org.scenes.internal.scene", "org.scenes.internal.match", "org.scenes.api", "org.scenes.internal.experiment");
         imports.addImports("java.util.random.RandomGenerator");
         configuration.addCompilationCustomizers(
                 imports,

@@ -1,8 +1,8 @@
 package org.scenes.script;
 
-import org.scenes.match.MetricProvider;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
+import org.scenes.api.MetricProvider;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.SceneMetric;
 
 /** {@code script:path/to/metric.groovy}: a metric written as a Groovy script (docs/scripting.md). */
 public final class ScriptMetricProvider implements MetricProvider {

@@ -1,8 +1,8 @@
 package org.scenes.script;
 
-import org.scenes.match.ActionSelector;
-import org.scenes.match.SelectorProvider;
-import org.scenes.plugin.PluginConfig;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.SelectorProvider;
 
 /** {@code script:path/to/selector.groovy}: a selector written as a Groovy script (docs/scripting.md). */
 public final class ScriptSelectorProvider implements SelectorProvider {

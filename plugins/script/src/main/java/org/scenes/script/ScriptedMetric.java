@@ -1,8 +1,8 @@
 package org.scenes.script;
 
-import org.scenes.match.EncodedMetric;
-import org.scenes.match.SceneMetric;
-import org.scenes.scene.Scene;
+import org.scenes.api.EncodedMetric;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
 
 /** A metric script instance, with exceptions it throws located in the script. */
 class ScriptedMetric implements SceneMetric {

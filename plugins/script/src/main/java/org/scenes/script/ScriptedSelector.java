@@ -2,9 +2,9 @@ package org.scenes.script;
 
 import java.util.List;
 import java.util.random.RandomGenerator;
-import org.scenes.match.ActionSelector;
-import org.scenes.match.Neighbour;
-import org.scenes.scene.Action;
+import org.scenes.api.Action;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.Neighbour;
 
 /** A selector script instance, with exceptions it throws located in the script. */
 final class ScriptedSelector implements ActionSelector {

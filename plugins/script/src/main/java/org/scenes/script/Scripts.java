@@ -4,7 +4,7 @@ import groovy.lang.Binding;
 import groovy.lang.Script;
 import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Path;
-import org.scenes.plugin.PluginException;
+import org.scenes.api.PluginException;
 
 /** Creating and setting up instances of compiled scripts. */
 final class Scripts {

@@ -1,9 +1,9 @@
 package org.scenes.script;
 
 import groovy.lang.Script;
-import org.scenes.match.ActionSelector;
-import org.scenes.match.ActionWeights;
-import org.scenes.plugin.PluginConfig;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionWeights;
+import org.scenes.api.PluginConfig;
 
 /**
  * Base class of every selector script: a script file becomes a subclass whose top-level

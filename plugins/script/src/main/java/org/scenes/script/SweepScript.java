@@ -4,11 +4,11 @@ import groovy.lang.Script;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import org.scenes.experiment.Axis;
-import org.scenes.experiment.Sweep;
-import org.scenes.match.ActionWeights;
-import org.scenes.match.ObjectWeights;
-import org.scenes.validate.Folds;
+import org.scenes.api.ActionWeights;
+import org.scenes.api.ObjectWeights;
+import org.scenes.internal.experiment.Axis;
+import org.scenes.internal.experiment.Sweep;
+import org.scenes.internal.validate.Folds;
 
 /**
  * Base class of sweep scripts ({@code scenes experiment SWEEP.groovy}): the script's statements

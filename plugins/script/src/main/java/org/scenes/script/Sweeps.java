@@ -1,7 +1,7 @@
 package org.scenes.script;
 
-import org.scenes.experiment.Sweep;
-import org.scenes.plugin.PluginException;
+import org.scenes.api.PluginException;
+import org.scenes.internal.experiment.Sweep;
 
 /** Reading sweep scripts: {@code scenes experiment SWEEP.groovy}. */
 public final class Sweeps {

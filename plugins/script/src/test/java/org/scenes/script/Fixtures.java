@@ -2,14 +2,14 @@ package org.scenes.script;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.scenes.scene.Action;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Observer;
-import org.scenes.scene.Relation;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
-import org.scenes.scene.Side;
+import org.scenes.api.Action;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Observer;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
+import org.scenes.api.Side;
 
 /** Small synthetic scenes for script tests. */
 final class Fixtures {

@@ -9,9 +9,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginException;
-import org.scenes.plugin.PluginRegistry;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginException;
+import org.scenes.api.PluginRegistry;
 
 /** Scripts that must not compile fail at creation, before any work, naming file, line and column. */
 class ScriptCompileErrorsTest {
@@ -58,7 +58,7 @@ class ScriptCompileErrorsTest {
                 """);
         assertEquals(1, errors.length, String.join("\n", errors));
         assertTrue(errors[0].startsWith("typo.groovy:2:50: [Static type checking] - Cannot find matching method "
-                + "org.scenes.scene.Scene#objcts()"), errors[0]);
+                + "org.scenes.api.Scene#objcts()"), errors[0]);
     }
 
     @Test
@@ -70,7 +70,7 @@ class ScriptCompileErrorsTest {
                 }
                 """);
         assertTrue(errors[0].startsWith("text.groovy:2:"), errors[0]);
-        assertTrue(errors[0].contains("Cannot assign value of type int to variable of type org.scenes.scene.Scene"), errors[0]);
+        assertTrue(errors[0].contains("Cannot assign value of type int to variable of type org.scenes.api.Scene"), errors[0]);
     }
 
     @Test
@@ -80,7 +80,7 @@ class ScriptCompileErrorsTest {
                     return query.cycle - stored.cycle()
                 }
                 """);
-        assertEquals("property.groovy:2:12: Access to org.scenes.scene.Scene#cycle is forbidden (scene values are "
+        assertEquals("property.groovy:2:12: Access to org.scenes.api.Scene#cycle is forbidden (scene values are "
                 + "Java records: read them with cycle())", errors[0]);
     }
 

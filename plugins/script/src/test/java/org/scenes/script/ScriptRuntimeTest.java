@@ -12,14 +12,14 @@ import java.util.List;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.match.ActionSelector;
-import org.scenes.match.Neighbour;
-import org.scenes.match.ObjectWeights;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Action;
-import org.scenes.scene.Scene;
+import org.scenes.api.Action;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.Neighbour;
+import org.scenes.api.ObjectWeights;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
 
 /** How scripts run: per-instance state, configuration, and failures located in the script. */
 class ScriptRuntimeTest {

@@ -10,12 +10,12 @@ import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.experiment.Axis;
-import org.scenes.experiment.Configuration;
-import org.scenes.experiment.Sweep;
-import org.scenes.match.ActionWeights;
-import org.scenes.match.ObjectWeights;
-import org.scenes.plugin.PluginException;
+import org.scenes.api.ActionWeights;
+import org.scenes.api.ObjectWeights;
+import org.scenes.api.PluginException;
+import org.scenes.internal.experiment.Axis;
+import org.scenes.internal.experiment.Configuration;
+import org.scenes.internal.experiment.Sweep;
 
 /** Sweep scripts describe every combination of their axes, with defaults and clear errors. */
 class SweepScriptTest {
@@ -46,7 +46,7 @@ class SweepScriptTest {
         assertEquals(List.of("scenes/a.json.gz", "scenes/b.json.gz"), sweep.data());
         assertEquals(List.of(1, 2, 3, 5), sweep.ks());
         assertEquals(List.of("memory"), sweep.transforms());
-        assertEquals(org.scenes.validate.Folds.Protocol.LEAVE_ONE_OUT, sweep.protocol());
+        assertEquals(org.scenes.internal.validate.Folds.Protocol.LEAVE_ONE_OUT, sweep.protocol());
         assertEquals(42, sweep.seed());
         // Rows default to every other axis that varies.
         assertEquals(new Sweep.Layout(List.of(Axis.METRIC, Axis.WEIGHTS, Axis.K), Axis.SELECTOR, "accuracy"), sweep.layout());
@@ -73,7 +73,7 @@ class SweepScriptTest {
                 sweep.weights());
         assertEquals(List.of(1), sweep.ks());
         assertEquals(List.of(), sweep.transforms());
-        assertEquals(org.scenes.validate.Folds.Protocol.NEXT, sweep.protocol());
+        assertEquals(org.scenes.internal.validate.Folds.Protocol.NEXT, sweep.protocol());
         assertEquals(new Sweep.Layout(List.of(Axis.WEIGHTS), Axis.K, "accuracy"), sweep.layout());
     }
 

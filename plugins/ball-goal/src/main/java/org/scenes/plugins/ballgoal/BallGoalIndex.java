@@ -3,7 +3,7 @@ package org.scenes.plugins.ballgoal;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.Map;
-import org.scenes.match.TopK;
+import org.scenes.api.TopK;
 
 /**
  * An exact index for {@code ball-goal}: the distance only depends on each scene's ball key and

@@ -3,17 +3,17 @@ package org.scenes.plugins.ballgoal;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.scenes.match.EncodedMetric;
-import org.scenes.match.MetricProvider;
-import org.scenes.match.ObjectSetMetrics;
-import org.scenes.match.PackedMetric;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginException;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Relation;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.EncodedMetric;
+import org.scenes.api.MetricProvider;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.ObjectSetMetrics;
+import org.scenes.api.PackedMetric;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginException;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SeenObject;
 
 /**
  * {@code ball-goal}: only the ball and the opponent goal count, each compared by its cell

@@ -3,9 +3,9 @@ package org.scenes.plugins.ballgoal;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import org.scenes.match.PackedMetric;
-import org.scenes.match.TopK;
-import org.scenes.scene.Scene;
+import org.scenes.api.PackedMetric;
+import org.scenes.api.Scene;
+import org.scenes.api.TopK;
 
 /**
  * The knowledge base for {@code ball-goal} as small keys: per scene and object (ball, goal) one

@@ -1,10 +1,10 @@
 package org.scenes.plugins.continuous;
 
 import java.util.Map;
-import org.scenes.match.MetricProvider;
-import org.scenes.match.ObjectSetMetrics;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
+import org.scenes.api.MetricProvider;
+import org.scenes.api.ObjectSetMetrics;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.SceneMetric;
 
 /** {@code continuous}: objects compared by type at their exact positions (docs/metrics.md). */
 public final class ContinuousMetricProvider implements MetricProvider {

@@ -3,13 +3,13 @@ package org.scenes.plugins.coverage;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
-import org.scenes.match.EncodedMetric;
-import org.scenes.match.Neighbour;
-import org.scenes.match.NearestScenes;
-import org.scenes.match.ObjectSetMetrics;
-import org.scenes.match.SceneMetric;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Scene;
+import org.scenes.api.EncodedMetric;
+import org.scenes.api.Grid;
+import org.scenes.api.NearestScenes;
+import org.scenes.api.Neighbour;
+import org.scenes.api.ObjectSetMetrics;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
 
 /**
  * Scene coverage: keeps the stored scenes that decide something. Two classic rules, both with the

@@ -4,15 +4,15 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.function.Supplier;
-import org.scenes.match.Neighbour;
-import org.scenes.match.NearestScenes;
-import org.scenes.match.ObjectSetMetrics;
-import org.scenes.match.SceneMetric;
-import org.scenes.scene.ActionType;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.ActionType;
+import org.scenes.api.Grid;
+import org.scenes.api.NearestScenes;
+import org.scenes.api.Neighbour;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.ObjectSetMetrics;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SeenObject;
 
 /**
  * Key scenes: a scene matters as much as the predictions of other scenes that hang on it. For

@@ -8,17 +8,17 @@ import java.util.List;
 import java.util.Random;
 import java.util.function.Supplier;
 import org.junit.jupiter.api.Test;
-import org.scenes.match.KnowledgeBase;
-import org.scenes.match.ObjectSetMetric;
-import org.scenes.match.Recognizer;
-import org.scenes.match.SceneMetric;
-import org.scenes.scene.Action;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Observer;
-import org.scenes.scene.Relation;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.Action;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Observer;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SeenObject;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.ObjectSetMetric;
+import org.scenes.internal.match.Recognizer;
 
 class CoverageTest {
     private static final Grid GRID = Grid.DEFAULT;

@@ -3,13 +3,13 @@ package org.scenes.plugins.history;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.scenes.match.MetricProvider;
-import org.scenes.match.PackedMetric;
-import org.scenes.match.SceneMetric;
-import org.scenes.match.TopK;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginException;
-import org.scenes.scene.Scene;
+import org.scenes.api.MetricProvider;
+import org.scenes.api.PackedMetric;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginException;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.TopK;
 
 /**
  * {@code action-history}: scenes are near when the player did the same things before them and

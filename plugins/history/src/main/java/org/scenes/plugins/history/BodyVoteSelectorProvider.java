@@ -4,13 +4,13 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.random.RandomGenerator;
-import org.scenes.match.ActionSelector;
-import org.scenes.match.ActionWeights;
-import org.scenes.match.Neighbour;
-import org.scenes.match.SelectorProvider;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.scene.Action;
-import org.scenes.validate.ActionLabel;
+import org.scenes.api.Action;
+import org.scenes.api.ActionLabel;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionWeights;
+import org.scenes.api.Neighbour;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.SelectorProvider;
 
 /**
  * {@code body-vote}: the neighbours vote by body class (as {@code validate} scores it: a

@@ -2,12 +2,12 @@ package org.scenes.plugins.history;
 
 import java.util.List;
 import java.util.Map;
-import org.scenes.scene.Action;
-import org.scenes.scene.ActionType;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
-import org.scenes.validate.ActionLabel;
+import org.scenes.api.Action;
+import org.scenes.api.ActionLabel;
+import org.scenes.api.ActionType;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
 
 /**
  * A scene as the numbers {@code action-history} compares: its see age, the ball, the size of the

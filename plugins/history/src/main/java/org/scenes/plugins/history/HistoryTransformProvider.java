@@ -1,10 +1,10 @@
 package org.scenes.plugins.history;
 
 import java.util.List;
-import org.scenes.match.SceneTransform;
-import org.scenes.match.TransformProvider;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.scene.Scene;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneTransform;
+import org.scenes.api.TransformProvider;
 
 /**
  * {@code history}: each scene carries the actions and see ages of the same player's scenes before

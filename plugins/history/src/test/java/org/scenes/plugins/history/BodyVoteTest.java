@@ -6,11 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import java.util.List;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
-import org.scenes.match.ActionSelector;
-import org.scenes.match.ActionWeights;
-import org.scenes.match.Neighbour;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.scene.Action;
+import org.scenes.api.Action;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionWeights;
+import org.scenes.api.Neighbour;
+import org.scenes.api.PluginConfig;
 
 class BodyVoteTest {
     private static Neighbour neighbour(int index, Action body) {

@@ -7,10 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.scenes.match.SceneTransform;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.scene.Action;
-import org.scenes.scene.Scene;
+import org.scenes.api.Action;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneTransform;
 
 class HistoryTransformTest {
     @Test

@@ -1,9 +1,9 @@
 package org.scenes.plugins.memory;
 
-import org.scenes.match.SceneTransform;
-import org.scenes.match.TransformProvider;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.scene.Scene;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneTransform;
+import org.scenes.api.TransformProvider;
 
 /**
  * {@code long-memory}: as {@code memory}, and the remembered scene carries the actions of the

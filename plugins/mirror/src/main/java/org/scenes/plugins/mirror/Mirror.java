@@ -2,12 +2,12 @@ package org.scenes.plugins.mirror;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.scenes.scene.Action;
-import org.scenes.scene.Cell;
-import org.scenes.scene.Grid;
-import org.scenes.scene.ObjectKind;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.Action;
+import org.scenes.api.Cell;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
 
 /**
  * The mirror image of a scene: the same situation with left and right exchanged, as if the

@@ -2,11 +2,11 @@ package org.scenes.plugins.mirror;
 
 import java.util.List;
 import java.util.function.UnaryOperator;
-import org.scenes.match.SceneTransform;
-import org.scenes.match.TransformProvider;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginException;
-import org.scenes.scene.Scene;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginException;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneTransform;
+import org.scenes.api.TransformProvider;
 
 /**
  * {@code mirror}: the knowledge base stores every scene and its mirror image ({@link Mirror});

@@ -2,10 +2,10 @@ package org.scenes.plugins.projection;
 
 import java.util.LinkedHashMap;
 import java.util.Map;
-import org.scenes.match.MetricProvider;
-import org.scenes.match.ObjectSetMetrics;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
+import org.scenes.api.MetricProvider;
+import org.scenes.api.ObjectSetMetrics;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.SceneMetric;
 
 /**
  * {@code projection}: like {@code continuous}, but each object is first moved n cycles forward

@@ -1,12 +1,12 @@
 package org.scenes.plugins.random;
 
-import org.scenes.match.EncodedMetric;
-import org.scenes.match.MetricProvider;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.scene.Action;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.Action;
+import org.scenes.api.EncodedMetric;
+import org.scenes.api.MetricProvider;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SeenObject;
 
 /** {@code random}: distances drawn at random, so the nearest scene is a random one: the statistical floor. */
 public final class RandomMetricProvider implements MetricProvider {

@@ -7,12 +7,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.scenes.match.SceneMetric;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Action;
-import org.scenes.scene.Observer;
-import org.scenes.scene.Scene;
+import org.scenes.api.Action;
+import org.scenes.api.Observer;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
 
 class RandomMetricTest {
     private static Scene scene(int cycle) {
@@ -42,9 +42,9 @@ class RandomMetricTest {
     @Test
     void theHashOfAGivenSceneIsFixedAcrossRuns() {
         // a constant computed once: enum or identity hash codes would change it from run to run
-        Scene scene = new Scene(7, new Observer("T", org.scenes.scene.Side.LEFT, 3), List.of(), List.of(Action.turn(40)));
+        Scene scene = new Scene(7, new Observer("T", org.scenes.api.Side.LEFT, 3), List.of(), List.of(Action.turn(40)));
         assertEquals(RandomMetricProvider.RandomMetric.contentHash(scene),
-                ((((7L * 31 + "T".hashCode()) * 31 + 3) * 31 + org.scenes.scene.ActionType.TURN.ordinal()) * 31
+                ((((7L * 31 + "T".hashCode()) * 31 + 3) * 31 + org.scenes.api.ActionType.TURN.ordinal()) * 31
                         + Double.hashCode(40)) * 31 + Double.hashCode(Double.NaN));
     }
 }

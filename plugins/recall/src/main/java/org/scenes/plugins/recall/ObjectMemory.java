@@ -7,12 +7,12 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import org.scenes.match.SceneTransform;
-import org.scenes.scene.Action;
-import org.scenes.scene.ActionType;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.Action;
+import org.scenes.api.ActionType;
+import org.scenes.api.Grid;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneTransform;
+import org.scenes.api.SeenObject;
 
 /**
  * The memory of one player's sequence of scenes. Each object with an identity of its own (see
@@ -92,7 +92,7 @@ final class ObjectMemory implements SceneTransform {
 
     /** Remembers only objects that name one thing and whose place was reported. */
     private static String identityOf(SeenObject object) {
-        boolean anonymous = object.behind() || (object.kind() == org.scenes.scene.ObjectKind.PLAYER
+        boolean anonymous = object.behind() || (object.kind() == org.scenes.api.ObjectKind.PLAYER
                 && object.uniformNumber() == 0);
         if (anonymous || Double.isNaN(object.distance()) || Double.isNaN(object.direction())) {
             return null;

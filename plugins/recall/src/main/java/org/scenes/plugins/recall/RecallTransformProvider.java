@@ -1,9 +1,9 @@
 package org.scenes.plugins.recall;
 
-import org.scenes.match.SceneTransform;
-import org.scenes.match.TransformProvider;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginException;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginException;
+import org.scenes.api.SceneTransform;
+import org.scenes.api.TransformProvider;
 
 /**
  * {@code recall[:HORIZON]}: objects seen in the last HORIZON cycles (default 10) but not in the

@@ -9,13 +9,13 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
-import org.scenes.convert.SceneConverter;
-import org.scenes.match.SceneTransform;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Grid;
-import org.scenes.scene.Scene;
-import org.scenes.scene.SeenObject;
+import org.scenes.api.Grid;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneTransform;
+import org.scenes.api.SeenObject;
+import org.scenes.internal.convert.SceneConverter;
 import org.scenes.testing.RequiresSharedData;
 import org.scenes.testing.SharedData;
 
@@ -39,11 +39,11 @@ class RecallRealDataTest {
                 assertTrue(object.direction() < -45 || object.direction() > 45 || object.distance() <= 3,
                         "a remembered object lies out of view: " + object);
             }
-            boolean seesBall = scene.objects().stream().anyMatch(o -> o.kind() == org.scenes.scene.ObjectKind.BALL);
+            boolean seesBall = scene.objects().stream().anyMatch(o -> o.kind() == org.scenes.api.ObjectKind.BALL);
             if (!seesBall) {
                 scenesWithoutBall++;
                 rememberedBalls += recalled.objects().stream()
-                        .filter(o -> o.kind() == org.scenes.scene.ObjectKind.BALL && o.remembered()).count();
+                        .filter(o -> o.kind() == org.scenes.api.ObjectKind.BALL && o.remembered()).count();
             }
         }
         // the player loses the ball on its right and turns away from it: for a while it is remembered

@@ -6,14 +6,14 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.random.RandomGenerator;
-import org.scenes.match.ActionSelector;
-import org.scenes.match.ActionWeights;
-import org.scenes.match.Neighbour;
-import org.scenes.match.SelectorProvider;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginException;
-import org.scenes.scene.Action;
-import org.scenes.scene.ActionType;
+import org.scenes.api.Action;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionType;
+import org.scenes.api.ActionWeights;
+import org.scenes.api.Neighbour;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginException;
+import org.scenes.api.SelectorProvider;
 
 /**
  * The built-in selectors. A neighbour is usable when it holds a primary action whose type has

@@ -12,16 +12,16 @@ import java.util.Map;
 import java.util.Set;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
-import org.scenes.match.ActionSelector;
-import org.scenes.match.ActionWeights;
-import org.scenes.match.Neighbour;
-import org.scenes.plugin.PluginConfig;
-import org.scenes.plugin.PluginException;
-import org.scenes.plugin.PluginRegistry;
-import org.scenes.scene.Action;
-import org.scenes.scene.ActionType;
-import org.scenes.scene.Observer;
-import org.scenes.scene.Scene;
+import org.scenes.api.Action;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionType;
+import org.scenes.api.ActionWeights;
+import org.scenes.api.Neighbour;
+import org.scenes.api.Observer;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginException;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Scene;
 
 class SelectorsTest {
     private static final PluginRegistry REGISTRY = PluginRegistry.load();

@@ -1,0 +1,65 @@
+package org.scenes.api;
+
+/**
+ * Weights of action types for selectors, in the thesis' order none, dash, kick, turn_neck,
+ * turn, catch, move (then tackle, 1 when not given). Written {@code 1/1/2/1/1/1/1} or by name,
+ * {@code kick=2,turn_neck=0}, where types not named keep weight 1.
+ */
+public record ActionWeights(double[] weights) {
+    public static final ActionWeights DEFAULT = uniform();
+
+    public ActionWeights {
+        if (weights.length != ActionType.values().length) {
+            throw new IllegalArgumentException("action weights need " + ActionType.values().length + " values");
+        }
+        weights = weights.clone();
+        for (double weight : weights) {
+            if (!(weight >= 0) || Double.isInfinite(weight)) {
+                throw new IllegalArgumentException("action weights must be finite and not negative");
+            }
+        }
+    }
+
+    private static ActionWeights uniform() {
+        double[] weights = new double[ActionType.values().length];
+        java.util.Arrays.fill(weights, 1);
+        return new ActionWeights(weights);
+    }
+
+    public double weight(ActionType type) {
+        return weights[type.ordinal()];
+    }
+
+    public static ActionWeights parse(String text) {
+        String[] names = new String[ActionType.values().length];
+        for (ActionType type : ActionType.values()) {
+            names[type.ordinal()] = type.key();
+        }
+        double[] parsed = Weights.parseWithDefault(text, names, "action weights", 1, ActionType.values().length - 1);
+        return new ActionWeights(parsed);
+    }
+
+    @Override
+    public double[] weights() {
+        return weights.clone();
+    }
+
+    public String format() {
+        return Weights.format(weights);
+    }
+
+    @Override
+    public boolean equals(Object other) {
+        return other instanceof ActionWeights that && java.util.Arrays.equals(weights, that.weights);
+    }
+
+    @Override
+    public int hashCode() {
+        return java.util.Arrays.hashCode(weights);
+    }
+
+    @Override
+    public String toString() {
+        return format();
+    }
+}

@@ -1,0 +1,37 @@
+package org.scenes.api;
+
+/** The three plugin families and the service interface each is loaded through. */
+public enum PluginKind {
+    METRIC("metric", MetricProvider.class),
+    SELECTOR("selector", SelectorProvider.class),
+    TRANSFORM("transform", TransformProvider.class);
+
+    private final String label;
+    private final Class<? extends NamedProvider> service;
+
+    PluginKind(String label, Class<? extends NamedProvider> service) {
+        this.label = label;
+        this.service = service;
+    }
+
+    public String label() {
+        return label;
+    }
+
+    public Class<? extends NamedProvider> service() {
+        return service;
+    }
+
+    /**
+     * @param service one of the three service interfaces
+     * @return the kind loaded through it
+     */
+    public static PluginKind of(Class<? extends NamedProvider> service) {
+        for (PluginKind kind : values()) {
+            if (kind.service == service) {
+                return kind;
+            }
+        }
+        throw new IllegalArgumentException(service.getName() + " is not a plugin service interface");
+    }
+}

@@ -1,0 +1,44 @@
+package org.scenes.api;
+
+import org.scenes.internal.match.Recognizer;
+
+/**
+ * Rewrites scenes before matching, e.g. adding remembered objects or mirroring. A transform
+ * sees the scenes of one player in order and may keep state between them; create a new one
+ * for each sequence (each scene file, each game).
+ */
+public interface SceneTransform {
+    Scene apply(Scene scene);
+
+    /**
+     * The scenes a knowledge base stores for {@code scene}: by default {@link #apply} alone. A
+     * transform that adds scenes (the mirror image of each) returns several, while queries still
+     * go through {@link #apply}.
+     */
+    default java.util.List<Scene> stored(Scene scene) {
+        return java.util.List.of(apply(scene));
+    }
+
+    /**
+     * A transform that matches each query in a second orientation too (rather than storing the
+     * scenes in both) returns the map to it, an involution such as the mirror image, applied to
+     * the fully transformed query; the {@link Recognizer} then returns scenes found for the image
+     * as their own images. Default: null, one orientation.
+     */
+    default java.util.function.UnaryOperator<Scene> queryImage() {
+        return null;
+    }
+
+    /** The one query image of a sequence's transforms, or null; two are refused (they would undo each other). */
+    static java.util.function.UnaryOperator<Scene> queryImage(java.util.List<SceneTransform> transforms) {
+        java.util.function.UnaryOperator<Scene> found = null;
+        for (SceneTransform transform : transforms) {
+            java.util.function.UnaryOperator<Scene> image = transform.queryImage();
+            if (image != null && found != null) {
+                throw new IllegalArgumentException("only one transform may match queries in a second orientation");
+            }
+            found = image != null ? image : found;
+        }
+        return found;
+    }
+}

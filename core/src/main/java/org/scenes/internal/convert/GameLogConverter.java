@@ -1,0 +1,802 @@
+package org.scenes.internal.convert;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Objects;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.function.Predicate;
+import org.scenes.api.Grid;
+import org.scenes.api.Observer;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.CommandLogReader;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.GameLogException;
+import org.scenes.internal.gamelog.GameLogReader;
+import org.scenes.internal.gamelog.GameLogWriter;
+import org.scenes.internal.gamelog.PlayerState;
+import org.scenes.internal.protocol.Message;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.Parameters;
+import org.scenes.internal.vision.Fading;
+import org.scenes.internal.vision.SeeWriter;
+import org.scenes.internal.vision.VisionNumbers;
+import org.scenes.internal.vision.VisionParams;
+
+/**
+ * Scenes for every player of a game from the server's own logs: the game log ({@code .rcg},
+ * where everything was each step) and the command log ({@code .rcl}, what each player sent).
+ * Each player's messages are rebuilt step by step, in the order the player got and sent them
+ * ({@code sense_body}, the {@code see} the server would have sent, by {@link SeeWriter}, then the
+ * commands of that step), and converted by {@link SceneConverter} under the rules of player logs
+ * (docs/conversion.md, "Scenes from game logs"). Streams both logs: memory grows with the
+ * number of players, not with the game's length.
+ */
+public final class GameLogConverter {
+    /** Share of player steps whose executed commands may disagree with the command log before it is refused. */
+    private static final double DISAGREEMENT_REFUSED = 0.2;
+    /** Player steps compared before judging. */
+    private static final int AGREEMENT_SAMPLE = 200;
+
+    /** Where one player's scenes go. */
+    @FunctionalInterface
+    public interface Output {
+        SceneConverter.SceneSink open(Observer observer) throws IOException;
+    }
+
+    /** One player's conversion. */
+    public record PlayerResult(Observer observer, ConversionReport report) {
+        /** {@code TEAM_UNUM}, the player's name in the command log. */
+        public String key() {
+            return observer.team() + "_" + observer.uniformNumber();
+        }
+    }
+
+    /**
+     * @param frames shows read from the game log
+     * @param warnings what was wrong but left the scenes sound, each naming the file and line
+     */
+    public record Result(long frames, List<PlayerResult> players, List<String> warnings) {
+    }
+
+    private final Grid grid;
+    private final Pairing pairing;
+    private final Fading fading;
+    private final Predicate<Observer> selected;
+    private final int threads;
+    private boolean commandsBeforeSee;
+
+    /**
+     * @param grid and {@code pairing} make the scenes, as for player logs
+     * @param fading how a seen player's team and number fade with distance
+     * @param selected which players get scenes (all are seen by the others)
+     * @param threads threads rebuilding and converting the players (each player on one)
+     */
+    public GameLogConverter(Grid grid, Pairing pairing, Fading fading, Predicate<Observer> selected, int threads) {
+        this.grid = Objects.requireNonNull(grid, "grid");
+        this.pairing = Objects.requireNonNull(pairing, "pairing");
+        this.fading = Objects.requireNonNull(fading, "fading");
+        this.selected = Objects.requireNonNull(selected, "selected");
+        if (threads < 1) {
+            throw new IllegalArgumentException("threads must be 1 or more, not " + threads);
+        }
+        this.threads = threads;
+    }
+
+    /**
+     * Within a step, the player's commands come before its see, right after {@code sense_body}
+     * ({@code true}), or (the default) before it only when the player already holds a see taken
+     * after its last command took effect, otherwise after it (players answer what they see; see
+     * {@code Worker.commandsFirst}). The command log does not say.
+     */
+    public GameLogConverter commandsBeforeSee(boolean before) {
+        this.commandsBeforeSee = before;
+        return this;
+    }
+
+    /**
+     * Converts one game. A truncated game log (its last line cut) gives a warning and the scenes
+     * up to there; a game log out of order, or a command log of another game (team names or
+     * executed commands disagree), is a {@link GameLogException} or {@link LogException} naming
+     * the file and line.
+     */
+    public Result convert(Path gameLog, Path commandLog, Output output) throws IOException {
+        try (CommandLogReader commands = CommandLogReader.open(commandLog)) {
+            Run run = new Run(gameLog, commands, output);
+            try {
+                try {
+                    GameLogReader.forEach(gameLog, run::frame, run::parameters);
+                } catch (UncheckedIOException e) {
+                    throw e.getCause();
+                } catch (GameLogException e) {
+                    if (!run.truncated(e)) {
+                        throw e;
+                    }
+                    run.warnings.add(e.getMessage() + "; the game log is cut there: scenes up to cycle " + run.lastTime
+                            + " kept");
+                }
+                return run.finish();
+            } finally {
+                run.stopWorkers();
+            }
+        }
+    }
+
+    /** What a player sent, for its worker. */
+    private record Sent(Player player, String message) {
+    }
+
+    /** One show and what was sent around it, handed to every worker. */
+    private record Step(GameFrame frame, long index, List<Sent> before, List<Sent> at, boolean seesDue,
+                        List<Player> players) {
+    }
+
+    private static final Step END = new Step(null, 0, List.of(), List.of(), false, List.of());
+
+    /** A rebuilt player: its log being converted and how it sees; touched by its worker only once started. */
+    private static final class Player {
+        final Observer observer;
+        final String key;
+        final SceneConverter.SceneSink sink;
+        final Worker worker;
+        final int version;
+        final Fading fading;
+        /** Set by the reading thread when the player's first show is handed out. */
+        boolean started;
+        SceneConverter.Feed feed;
+        SeeWriter writer;
+        boolean synchSee;
+        int type = -1;
+        /** The executed command counts at the last show, and whether a body command was sent since. */
+        int executed = -1;
+        boolean sentBody;
+        /** The steps of the player's last see and last command, to order the two within a step. */
+        long seeStep = -1;
+        long commandStep = -1;
+        long agreed;
+        long disagreed;
+
+        Player(Observer observer, String key, SceneConverter.SceneSink sink, Worker worker, int version,
+               boolean synchSee, Fading fading) {
+            this.observer = observer;
+            this.key = key;
+            this.sink = sink;
+            this.worker = worker;
+            this.version = version;
+            this.synchSee = synchSee;
+            this.fading = fading;
+        }
+    }
+
+    /** Rebuilds and converts its players, step by step, on a thread of its own (or the caller's). */
+    private final class Worker implements Runnable {
+        final Run run;
+        final SceneConverter converter = new SceneConverter(grid, pairing, false, line -> { });
+        final BlockingQueue<Step> queue;
+        final StringBuilder text = new StringBuilder(4096);
+        byte[] bytes = new byte[4096];
+        volatile Throwable failure;
+        Thread thread;
+
+        Worker(Run run, boolean threaded) {
+            this.run = run;
+            this.queue = threaded ? new ArrayBlockingQueue<>(64) : null;
+        }
+
+        @Override
+        public void run() {
+            try {
+                while (true) {
+                    Step step = queue.take();
+                    if (step == END) {
+                        return;
+                    }
+                    if (failure == null) {
+                        process(step);
+                    }
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            } catch (IOException | RuntimeException | Error e) {
+                failure = e;
+                queue.clear();
+            }
+        }
+
+        void submit(Step step) throws IOException {
+            if (queue == null) {
+                process(step);
+                return;
+            }
+            rethrow();
+            try {
+                queue.put(step);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new java.io.InterruptedIOException("interrupted");
+            }
+        }
+
+        void rethrow() throws IOException {
+            Throwable e = failure;
+            if (e instanceof IOException io) {
+                throw io;
+            } else if (e instanceof RuntimeException runtime) {
+                throw runtime;
+            } else if (e instanceof Error error) {
+                throw error;
+            }
+        }
+
+        void process(Step step) throws IOException {
+            GameFrame frame = step.frame();
+            if (frame == null) {
+                // what was sent after the last show
+                for (Sent sent : step.before()) {
+                    if (sent.player().worker == this && sent.player().feed != null) {
+                        deliver(sent.player(), sent.message());
+                    }
+                }
+                return;
+            }
+            for (Player player : step.players()) {
+                if (player.worker == this && player.feed == null) {
+                    start(player, frame);
+                }
+            }
+            for (Sent sent : step.before()) {
+                if (sent.player().worker == this) {
+                    deliver(sent.player(), sent.message());
+                    sent.player().commandStep = step.index();
+                }
+            }
+            int time = frame.time();
+            for (PlayerState state : frame.players()) {
+                Player player = run.slot(frame, state);
+                if (player == null || player.worker != this) {
+                    continue;
+                }
+                checkAgreement(player, state);
+                line(player, "(sense_body " + time + ")");
+                // this show's sees and commands belong to the next step
+                long next = step.index() + 1;
+                List<String> sent = sentBy(player, step);
+                int first = commandsFirst(player, sent.size());
+                deliver(player, sent.subList(0, first), next);
+                if (step.seesDue()) {
+                    int sees = seesDue(player, state, step.index());
+                    for (int i = 0; i < sees; i++) {
+                        see(player, state, frame);
+                        player.seeStep = next;
+                    }
+                }
+                deliver(player, sent.subList(first, sent.size()), next);
+            }
+        }
+
+        /**
+         * How many of the player's {@code sent} commands of the coming step went out before its
+         * see. The command log does not say. A player that already holds a see taken after its last
+         * command took effect (a see of a later step than that command's) has what it needs and
+         * answers it at the step's start, as Krislet does; one that does not waits for the step's
+         * see; of several commands in a step, all but the last answered earlier sees. Synchronous
+         * sees come with {@code sense_body}, so commands follow them.
+         */
+        int commandsFirst(Player player, int sent) {
+            if (commandsBeforeSee) {
+                return sent;
+            }
+            if (sent == 0 || player.synchSee) {
+                return 0;
+            }
+            return player.seeStep > player.commandStep ? Math.max(1, sent - 1) : sent - 1;
+        }
+
+        List<String> sentBy(Player player, Step step) {
+            List<String> sent = List.of();
+            for (Sent s : step.at()) {
+                if (s.player() == player) {
+                    if (sent.isEmpty()) {
+                        sent = new ArrayList<>(2);
+                    }
+                    sent.add(s.message());
+                }
+            }
+            return sent;
+        }
+
+        void deliver(Player player, List<String> messages, long index) throws IOException {
+            for (String message : messages) {
+                deliver(player, message);
+                player.commandStep = index;
+            }
+        }
+
+        void start(Player player, GameFrame frame) throws IOException {
+            player.feed = converter.feed(Path.of(run.gameLog + "#" + player.key), player.sink);
+            Observer o = player.observer;
+            line(player, "(init " + o.team() + " (version " + Math.max(player.version, 3) + "))");
+            line(player, "(init " + o.side().letter() + ' ' + o.uniformNumber() + ' ' + frame.playMode() + ")");
+            if (player.synchSee) {
+                line(player, "(ok synch_see)");
+            }
+        }
+
+        void deliver(Player player, String message) throws IOException {
+            if (message.startsWith("(synch_see)")) {
+                if (!player.synchSee) {
+                    player.synchSee = true;
+                    line(player, "(ok synch_see)");
+                }
+                return;
+            }
+            if (isBody(message)) {
+                player.sentBody = true;
+            }
+            line(player, message);
+        }
+
+        /**
+         * The game log's counts of executed commands against the command log: a body command the
+         * player sent in a step shows as a count rising by the next show. Another game's command log
+         * disagrees in most steps.
+         */
+        void checkAgreement(Player player, PlayerState state) {
+            PlayerState.Counts c = state.counts();
+            int executed = c.kick() + c.dash() + c.turn() + c.catches() + c.move() + c.tackle();
+            if (player.executed >= 0) {
+                if ((executed > player.executed) == player.sentBody) {
+                    player.agreed++;
+                } else {
+                    player.disagreed++;
+                }
+            }
+            player.executed = executed;
+            player.sentBody = false;
+        }
+
+        /** How many sees the player gets after this show: the server's timing as the simulator keeps it. */
+        int seesDue(Player player, PlayerState state, long index) {
+            // The show was written at the end of its step; its sees go out in the next step.
+            long next = index + 1;
+            double factor = state.viewWidth() / run.visibleAngle;
+            if (player.synchSee) {
+                // synchronous: cones of 2/3, 4/3 and 2 visible_angle for a see every 1, 2, 3 steps
+                int every = (int) Math.max(1, Math.round(factor * 1.5));
+                return next % every == 0 ? 1 : 0;
+            }
+            double period = run.sendStep * factor * (state.viewQuality() == 'h' ? 1 : 0.5);
+            double begin = next * run.simulatorStep;
+            double end = begin + run.simulatorStep;
+            double first = Math.ceil(begin / period - 1e-9) * period;
+            return first < end - 1e-9 ? (int) Math.floor((end - 1e-9 - first) / period) + 1 : 0;
+        }
+
+        void see(Player player, PlayerState self, GameFrame frame) throws IOException {
+            if (player.writer == null || player.type != self.type()) {
+                player.type = self.type();
+                player.writer = new SeeWriter(VisionParams.of(run.serverParam,
+                        player.version >= 18 ? run.playerTypes.get(self.type()) : null), player.fading);
+            }
+            SeeWriter writer = player.writer;
+            text.setLength(0);
+            double head = VisionNumbers.normalize(self.body() + self.neck());
+            writer.begin(text, frame.time(), self.x(), self.y(), self.vx(), self.vy(), head, self.viewWidth(),
+                    self.viewQuality() == 'h');
+            writer.landmarks();
+            GameFrame.BallState ball = frame.ball();
+            writer.ball(ball.x(), ball.y(), ball.vx(), ball.vy());
+            for (PlayerState other : frame.players()) {
+                if (other == self || other.state() == 0) {
+                    continue;
+                }
+                String team = other.side() == Side.LEFT ? frame.leftTeam() : frame.rightTeam();
+                writer.player(other.x(), other.y(), other.vx(), other.vy(), team, other.unum(),
+                        (other.state() & PlayerState.GOALIE) != 0, other.body(),
+                        VisionNumbers.normalize(other.body() + other.neck()));
+            }
+            writer.lines();
+            writer.end();
+            line(player, text);
+        }
+
+        void line(Player player, CharSequence message) throws IOException {
+            int length = message.length();
+            if (bytes.length < length) {
+                bytes = new byte[Math.max(length, bytes.length * 2)];
+            }
+            for (int i = 0; i < length; i++) {
+                char c = message.charAt(i);
+                if (c >= 0x80) {
+                    byte[] encoded = message.toString().getBytes(StandardCharsets.UTF_8);
+                    player.feed.line(encoded, 0, encoded.length);
+                    return;
+                }
+                bytes[i] = (byte) c;
+            }
+            player.feed.line(bytes, 0, length);
+        }
+    }
+
+    private final class Run {
+        final Path gameLog;
+        final CommandLogReader commands;
+        final Output output;
+        final List<String> warnings = new ArrayList<>();
+        final MessageParser parser = new MessageParser();
+        final Map<String, String> serverParam = new HashMap<>();
+        final Map<Integer, Map<String, String>> playerTypes = new HashMap<>();
+        /** Every player of the game by TEAM_UNUM; null for those not selected. */
+        final Map<String, Player> players = new LinkedHashMap<>();
+        /** The players by show slot (side, number), for the workers: set before a step is handed out. */
+        final Player[][] slots = new Player[2][64];
+        /** Versions from the players' init commands (the command log holds them before the game). */
+        final Map<String, Integer> versions = new HashMap<>();
+        final Map<String, Boolean> synchSee = new HashMap<>();
+        /** Command log entries read but not yet delivered, in order. */
+        final ArrayDeque<CommandLogReader.Entry> ahead = new ArrayDeque<>();
+        final List<Worker> workers = new ArrayList<>();
+        boolean commandsEnded;
+        boolean teamsKnown;
+        int lastCommandTime = -1;
+        long frames;
+        int lastTime = -1;
+        int lastStoppage;
+        String lastMode;
+        long step;
+        String leftTeam = "";
+        String rightTeam = "";
+        double visibleAngle = 90;
+        double sendStep = 150;
+        double simulatorStep = 100;
+        long lastLine;
+        int nextWorker;
+
+        Run(Path gameLog, CommandLogReader commands, Output output) {
+            this.gameLog = gameLog;
+            this.commands = commands;
+            this.output = output;
+            for (int i = 0; i < threads; i++) {
+                Worker worker = new Worker(this, threads > 1);
+                if (threads > 1) {
+                    worker.thread = new Thread(worker, "rebuild-" + i);
+                    worker.thread.setDaemon(true);
+                    worker.thread.start();
+                }
+                workers.add(worker);
+            }
+        }
+
+        void parameters(String line) {
+            Message message = parser.parse(line);
+            if (!(message instanceof Parameters params)) {
+                return;
+            }
+            if (params.head().equals("server_param")) {
+                serverParam.putAll(params.named());
+                visibleAngle = number(params, "visible_angle", visibleAngle);
+                sendStep = number(params, "send_step", sendStep);
+                simulatorStep = number(params, "simulator_step", simulatorStep);
+            } else if (params.head().equals("player_type") && params.named().containsKey("id")) {
+                playerTypes.put((int) params.number("id"), params.named());
+            }
+        }
+
+        private static double number(Parameters params, String name, double fallback) {
+            double value = params.number(name);
+            return Double.isNaN(value) ? fallback : value;
+        }
+
+        boolean truncated(GameLogException e) {
+            String message = e.getMessage();
+            return frames > 0 && (message.contains("ends inside a list") || message.contains("ends before its closing"));
+        }
+
+        Player slot(GameFrame frame, PlayerState state) {
+            if (state.state() == 0 || state.unum() < 0 || state.unum() >= 64) {
+                return null;
+            }
+            return slots[state.side() == Side.LEFT ? 0 : 1][state.unum()];
+        }
+
+        void frame(GameFrame frame) {
+            try {
+                step(frame);
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
+        }
+
+        void step(GameFrame frame) throws IOException {
+            int time = frame.time();
+            if (frames > 0 && time < lastTime) {
+                // named with the game log's line by the reader
+                throw new IllegalArgumentException("cycle " + time + " comes after cycle " + lastTime
+                        + ": the game log is out of order");
+            }
+            leftTeam = frame.leftTeam();
+            rightTeam = frame.rightTeam();
+            teamsKnown = true;
+            String mode = frame.playMode();
+            int stoppage = frames > 0 && time == lastTime ? lastStoppage + 1 : 0;
+            if (!mode.equals(lastMode) || (time != lastTime && pausedAt(time))) {
+                // steps the game log skipped (before kick-off, half time): the referee's word tells
+                // how many, also when the mode is the same on both sides (a kick-off not taken by half time)
+                stoppage = Math.max(stoppage, announced(time, mode, stoppage));
+            }
+            if (frames == 0) {
+                // steps from 0; a standing clock's first step has stoppage 1
+                step = time + Math.max(0, stoppage - 1);
+            } else if (time == lastTime) {
+                step += stoppage - lastStoppage;
+            } else {
+                step += (time - lastTime) + stoppage;
+            }
+            // what was sent before this show: the players' inits (versions) come before their first show
+            List<Sent> before = new ArrayList<>();
+            collect(before, time, stoppage, true);
+            List<Player> starting = new ArrayList<>(0);
+            for (PlayerState state : frame.players()) {
+                if (state.state() != 0) {
+                    Player player = player(frame, state);
+                    if (player != null && !player.started) {
+                        player.started = true;
+                        starting.add(player);
+                    }
+                }
+            }
+            List<Sent> at = new ArrayList<>();
+            collect(at, time, stoppage, false);
+            Step work = new Step(frame, step, before, at, !mode.equals("time_over"), starting);
+            for (Worker worker : workers) {
+                worker.submit(work);
+            }
+            lastTime = time;
+            lastStoppage = stoppage;
+            lastMode = mode;
+            frames++;
+        }
+
+        /** The stoppage of the referee's announcement of {@code mode} at {@code time}, or -1. */
+        int announced(int time, String mode, int from) throws IOException {
+            readThrough(time);
+            for (CommandLogReader.Entry entry : ahead) {
+                if (entry.time() == time && entry.stoppage() >= from && entry.referee()
+                        && GameLogWriter.playMode(entry.text()).equals(mode)) {
+                    return entry.stoppage();
+                }
+            }
+            return -1;
+        }
+
+        /** Whether the referee announced {@code before_kick_off} at {@code time}: the game log skips what follows. */
+        boolean pausedAt(int time) throws IOException {
+            readThrough(time);
+            for (CommandLogReader.Entry entry : ahead) {
+                if (entry.time() > time) {
+                    break;
+                }
+                if (entry.time() == time && entry.referee()
+                        && GameLogWriter.playMode(entry.text()).equals("before_kick_off")) {
+                    return true;
+                }
+            }
+            return false;
+        }
+
+        /** Reads the command log ahead past {@code time}. */
+        void readThrough(int time) throws IOException {
+            while (!commandsEnded && (ahead.isEmpty() || ahead.peekLast().time() <= time)) {
+                if (!readOne()) {
+                    break;
+                }
+            }
+        }
+
+        boolean readOne() throws IOException {
+            CommandLogReader.Entry entry = commands.next();
+            if (entry == null) {
+                commandsEnded = true;
+                return false;
+            }
+            ahead.addLast(entry);
+            lastCommandTime = entry.time();
+            return true;
+        }
+
+        /**
+         * What players sent in steps before ({@code time}, {@code stoppage}) (or, when not
+         * {@code before}, in that step, after its see), for the players' workers.
+         */
+        void collect(List<Sent> into, int time, int stoppage, boolean before) throws IOException {
+            while (true) {
+                if (ahead.isEmpty() && !readOne()) {
+                    return;
+                }
+                CommandLogReader.Entry entry = ahead.peekFirst();
+                boolean wanted = before ? entry.before(time, stoppage)
+                        : entry.time() == time && entry.stoppage() == stoppage;
+                if (!wanted) {
+                    return;
+                }
+                route(ahead.pollFirst(), into);
+            }
+        }
+
+        void route(CommandLogReader.Entry entry, List<Sent> into) {
+            lastLine = entry.line();
+            if (entry.referee()) {
+                return;
+            }
+            String team = entry.team();
+            if (teamsKnown && !team.equals(leftTeam) && !team.equals(rightTeam)) {
+                throw new LogException(commands.file(), entry.line(), team + "_" + entry.unum()
+                        + " plays in neither team of " + gameLog.getFileName() + " (" + leftTeam + ", " + rightTeam
+                        + "): the command log of another game?", null);
+            }
+            String key = team + "_" + entry.unum();
+            String message = entry.text();
+            if (message.startsWith("(init ")) {
+                versions.put(key, version(message));
+                return;
+            }
+            Player player = players.get(key);
+            if (player == null) {
+                if (message.startsWith("(synch_see)")) {
+                    synchSee.put(key, true);
+                }
+                return; // before the player's first show, or a player not converted
+            }
+            into.add(new Sent(player, message));
+        }
+
+        /** The player of a show's slot, made on first sight; null when not selected. */
+        Player player(GameFrame frame, PlayerState state) throws IOException {
+            String team = state.side() == Side.LEFT ? frame.leftTeam() : frame.rightTeam();
+            String key = team + "_" + state.unum();
+            if (players.containsKey(key)) {
+                return players.get(key);
+            }
+            Observer observer = new Observer(team, state.side(), state.unum());
+            Player player = null;
+            if (selected.test(observer)) {
+                int version = versions.getOrDefault(key, initAhead(key, frame.time()));
+                // clients of version 18 and later see synchronously from their init on
+                double factor = state.viewWidth() / visibleAngle;
+                boolean synch = version >= 18 || synchSee.getOrDefault(key, false)
+                        // cones only synchronous vision has (60 and 120 degrees): a log without the init
+                        || Math.abs(factor - 2.0 / 3) < 1e-6 || Math.abs(factor - 4.0 / 3) < 1e-6;
+                player = new Player(observer, key, output.open(observer), workers.get(nextWorker++ % threads),
+                        version, synch, fading.forObserver(key));
+                if (state.unum() >= 0 && state.unum() < 64) {
+                    slots[state.side() == Side.LEFT ? 0 : 1][state.unum()] = player;
+                }
+            }
+            players.put(key, player);
+            return player;
+        }
+
+        /** The version of the player's init sent by the end of {@code time} (ahead of its show), or 0. */
+        int initAhead(String key, int time) throws IOException {
+            readThrough(time);
+            for (CommandLogReader.Entry entry : ahead) {
+                if (entry.time() > time) {
+                    break;
+                }
+                if (!entry.referee() && entry.text().startsWith("(init ")
+                        && key.equals(entry.team() + "_" + entry.unum())) {
+                    return version(entry.text());
+                }
+            }
+            return 0;
+        }
+
+        Result finish() throws IOException {
+            // what was sent after the last show; entries more than a step past it belong to no show
+            int beyond = 0;
+            CommandLogReader.Entry firstBeyond = null;
+            List<Sent> after = new ArrayList<>();
+            while (!ahead.isEmpty() || readOne()) {
+                CommandLogReader.Entry entry = ahead.pollFirst();
+                if (frames > 0 && entry.time() > lastTime + 1) {
+                    beyond++;
+                    firstBeyond = firstBeyond == null ? entry : firstBeyond;
+                } else {
+                    route(entry, after);
+                }
+            }
+            if (frames == 0) {
+                throw new LogException(gameLog, 0, "no show in the game log: nothing to rebuild", null);
+            }
+            Step last = new Step(null, 0, after, List.of(), false, List.of());
+            for (Worker worker : workers) {
+                worker.submit(last);
+            }
+            stopWorkers();
+            if (firstBeyond != null) {
+                warnings.add(commands.file() + ":" + firstBeyond.line() + ": the command log goes on to cycle "
+                        + lastCommandTime + " (" + beyond + " lines) after the game log's last show at cycle "
+                        + lastTime + ": a cut game log, or the command log of another game; those lines were left out");
+            } else if (lastCommandTime + 1 < lastTime) {
+                warnings.add(commands.file() + ": the command log ends at cycle " + lastCommandTime
+                        + ", the game log goes on to cycle " + lastTime + ": later scenes have no actions and are dropped");
+            }
+            long agreed = 0;
+            long disagreed = 0;
+            List<PlayerResult> results = new ArrayList<>();
+            for (Player player : players.values()) {
+                if (player != null && player.feed != null) {
+                    agreed += player.agreed;
+                    disagreed += player.disagreed;
+                    results.add(new PlayerResult(player.observer, player.feed.finish(0)));
+                }
+            }
+            long compared = agreed + disagreed;
+            if (compared >= AGREEMENT_SAMPLE && disagreed > DISAGREEMENT_REFUSED * compared) {
+                throw new LogException(commands.file(), 0, String.format(Locale.ROOT,
+                        "the commands of %.0f %% of %d player steps disagree with what %s says was executed:"
+                                + " the command log of another game?", 100.0 * disagreed / compared, compared,
+                        gameLog.getFileName()), null);
+            }
+            return new Result(frames, results, warnings);
+        }
+
+        /** Ends the workers' threads (once), rethrowing the first failure. */
+        void stopWorkers() throws IOException {
+            for (Worker worker : workers) {
+                if (worker.thread != null && worker.thread.isAlive()) {
+                    try {
+                        worker.queue.put(END);
+                        worker.thread.join();
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                        throw new java.io.InterruptedIOException("interrupted");
+                    }
+                }
+            }
+            for (Worker worker : workers) {
+                worker.rethrow();
+            }
+        }
+
+        int version(String init) {
+            int at = init.indexOf("(version ");
+            if (at < 0) {
+                return 3;
+            }
+            int end = init.indexOf(')', at);
+            try {
+                return (int) Double.parseDouble(init.substring(at + 9, end).strip());
+            } catch (RuntimeException e) {
+                return 3;
+            }
+        }
+    }
+
+    /** Whether a line a player sent holds a body command, which the server counts once executed. */
+    static boolean isBody(String message) {
+        return message.contains("(dash ") || message.contains("(turn ") || message.contains("(kick ")
+                || message.contains("(move ") || message.contains("(catch ") || message.contains("(tackle ");
+    }
+
+    /** Every player of the game: the default selection. */
+    public static Predicate<Observer> everyone() {
+        return observer -> true;
+    }
+
+    /** The players of {@code team} (any when null) with number {@code unum} (any when 0). */
+    public static Predicate<Observer> only(String team, int unum) {
+        return observer -> (team == null || team.equals(observer.team()))
+                && (unum == 0 || unum == observer.uniformNumber());
+    }
+
+}

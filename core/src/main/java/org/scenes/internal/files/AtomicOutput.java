@@ -1,0 +1,208 @@
+package org.scenes.internal.files;
+
+import java.io.BufferedOutputStream;
+import java.io.FilterOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.DirectoryIteratorException;
+import java.nio.file.DirectoryStream;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.zip.GZIPOutputStream;
+
+/**
+ * An output file that appears only when complete: bytes go to a temporary file beside the
+ * target, which {@link #commit()} renames over it. Closing without commit deletes the
+ * temporary file, so a crash or an error never leaves a half-written target. A target
+ * ending in {@code .gz} is gzip-compressed. A command stopped by Ctrl-C or SIGTERM before its
+ * commit calls {@link #abandonAll()} from its shutdown hook, so no temporary file is left behind
+ * (not a hook of its own here: commands such as the proxy commit their logs in their hooks).
+ * SIGKILL runs no hook: the next output into the same directory removes such leftovers
+ * ({@link #removeStaleTemporaries}).
+ */
+public final class AtomicOutput implements AutoCloseable {
+    private final Path target;
+    private final Path temporary;
+    private final OutputStream file;
+    private final OutputStream stream;
+    private boolean closed;
+
+    /** Temporary files not yet committed or abandoned: what the shutdown hook deletes. */
+    private static final Set<Path> OPEN = ConcurrentHashMap.newKeySet();
+    private static final long PID = ProcessHandle.current().pid();
+    /** {@code .<target>.<pid>-<random>.tmp}: this class's temporary files and nobody else's. */
+    private static final Pattern TEMPORARY = Pattern.compile("\\..+\\.([0-9]{1,19})-[0-9a-z]{1,13}\\.tmp");
+    /**
+     * A temporary file untouched this long is stale even if a process of its PID is alive (PIDs
+     * are reused); a live writer touches its file far more often.
+     */
+    static final Duration STALE_AFTER = Duration.ofHours(6);
+    /** Directories already cleaned by this process: once is enough, and output directories may be large. */
+    private static final Set<Path> CLEANED = ConcurrentHashMap.newKeySet();
+
+    private AtomicOutput(Path target) throws IOException {
+        this.target = target.toAbsolutePath();
+        Path directory = this.target.getParent();
+        if (Files.isDirectory(this.target)) {
+            throw new IOException(target + ": is a directory, not a file to write");
+        }
+        try {
+            Files.createDirectories(directory);
+        } catch (FileAlreadyExistsException e) {
+            throw new IOException(target + ": cannot write: " + e.getFile() + " is a file, not a directory", e);
+        } catch (IOException e) {
+            throw new IOException(target + ": cannot create its directory " + directory + ": " + reason(e), e);
+        }
+        removeStaleTemporaries(directory);
+        // Not Files.createTempFile: its owner-only permissions would carry over to the target.
+        // The name carries the writer's PID, so a later writer can tell a dead writer's leftover.
+        this.temporary = directory.resolve("." + this.target.getFileName() + "." + PID + "-" + Long.toUnsignedString(
+                java.util.concurrent.ThreadLocalRandom.current().nextLong(), 36) + ".tmp");
+        OPEN.add(temporary);
+        OutputStream out;
+        try {
+            out = new BufferedOutputStream(
+                    Files.newOutputStream(temporary, java.nio.file.StandardOpenOption.CREATE_NEW), 1 << 16);
+        } catch (IOException e) {
+            OPEN.remove(temporary);
+            // the temporary file's name means nothing to the user: name the target and the reason
+            throw new IOException(target + ": cannot write in " + directory + ": " + reason(e), e);
+        }
+        this.file = target.getFileName().toString().endsWith(".gz") ? new GZIPOutputStream(out, 1 << 16) : out;
+        // Writers wrapping the stream may close it; only commit() or close() may end the file.
+        this.stream = new FilterOutputStream(file) {
+            @Override
+            public void write(byte[] bytes, int offset, int length) throws IOException {
+                out.write(bytes, offset, length);
+            }
+
+            @Override
+            public void close() throws IOException {
+                flush();
+            }
+        };
+    }
+
+    /**
+     * Deletes what writers killed by SIGKILL (which runs no code) left in {@code directory}:
+     * temporary files of this class's pattern whose writer is no longer alive, or that nobody has
+     * written to for {@link #STALE_AFTER}. Best effort: a file that cannot be looked at or
+     * deleted stays.
+     */
+    static void removeStaleTemporaries(Path directory) {
+        if (!CLEANED.add(directory)) {
+            return;
+        }
+        long now = System.currentTimeMillis();
+        try (DirectoryStream<Path> entries = Files.newDirectoryStream(directory, ".*.tmp")) {
+            for (Path entry : entries) {
+                Matcher matcher = TEMPORARY.matcher(entry.getFileName().toString());
+                if (!matcher.matches() || OPEN.contains(entry)) {
+                    continue;
+                }
+                long pid = Long.parseLong(matcher.group(1));
+                boolean alive = ProcessHandle.of(pid).map(ProcessHandle::isAlive).orElse(false);
+                if (!alive || now - Files.getLastModifiedTime(entry).toMillis() > STALE_AFTER.toMillis()) {
+                    Files.deleteIfExists(entry);
+                }
+            }
+        } catch (IOException | NumberFormatException | DirectoryIteratorException e) {
+            // leftovers stay; the output itself is unaffected
+        }
+    }
+
+    private static String reason(IOException e) {
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof FileSystemException fileSystem && fileSystem.getReason() != null) {
+            return fileSystem.getReason();
+        }
+        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+    }
+
+    /**
+     * Deletes the temporary files of every output neither committed nor closed, for a shutdown hook
+     * of a command whose interrupted work is abandoned; returns the targets that were not written.
+     */
+    public static List<Path> abandonAll() {
+        List<Path> abandoned = new ArrayList<>();
+        for (Path temporary : List.copyOf(OPEN)) {
+            try {
+                Files.deleteIfExists(temporary);
+                OPEN.remove(temporary);
+                String name = temporary.getFileName().toString();
+                // ".<target>.<pid>-<random>.tmp" back to the target's name
+                String target = name.substring(1, name.lastIndexOf('.', name.length() - 5));
+                abandoned.add(temporary.resolveSibling(target));
+            } catch (IOException e) {
+                // stopping: nothing more can be done
+            }
+        }
+        return abandoned;
+    }
+
+    public static AtomicOutput create(Path target) throws IOException {
+        return new AtomicOutput(target);
+    }
+
+    /** The stream to write to; closing it only flushes. */
+    public OutputStream stream() {
+        return stream;
+    }
+
+    public Path target() {
+        return target;
+    }
+
+    /** Finishes the file and moves it into place, replacing any previous file. */
+    public void commit() throws IOException {
+        if (closed) {
+            throw new IllegalStateException("output " + target + " already closed");
+        }
+        closed = true;
+        boolean moved = false;
+        try {
+            stream.flush();
+            file.close();
+            try {
+                Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+            moved = true;
+        } finally {
+            OPEN.remove(temporary);
+            if (!moved) {
+                Files.deleteIfExists(temporary);
+            }
+        }
+    }
+
+    /** Abandons the file unless committed: the target stays as it was. */
+    @Override
+    public void close() throws IOException {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        try {
+            file.close();
+        } finally {
+            Files.deleteIfExists(temporary);
+            OPEN.remove(temporary);
+        }
+    }
+}

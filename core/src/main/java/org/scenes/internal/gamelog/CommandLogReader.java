@@ -1,0 +1,128 @@
+package org.scenes.internal.gamelog;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import org.scenes.internal.files.Inputs;
+
+/**
+ * Reads a server command log ({@code .rcl}) line by line, as {@link CommandLogWriter} and
+ * rcssserver write it: {@code TIME,STOPPAGE<TAB>Recv TEAM_UNUM: (command)...} for what a player
+ * sent (team names may hold {@code _}: the number follows the last one; a coach's
+ * {@code TEAM_Coach} has none) and {@code TIME,STOPPAGE<TAB>(referee WORD)} for the referee.
+ * Plain or gzip. Lines must come in the order of the steps; errors name the file and line.
+ */
+public final class CommandLogReader implements AutoCloseable {
+    /**
+     * One line of the log.
+     *
+     * @param team the sender's team, empty for the referee
+     * @param unum the sender's uniform number, 0 for the referee and coaches
+     * @param text what the player sent, or the referee's word
+     */
+    public record Entry(long line, int time, int stoppage, String team, int unum, String text) {
+        public boolean referee() {
+            return team.isEmpty();
+        }
+
+        /** Whether this entry's step comes before the step ({@code time}, {@code stoppage}). */
+        public boolean before(int otherTime, int otherStoppage) {
+            return time < otherTime || (time == otherTime && stoppage < otherStoppage);
+        }
+    }
+
+    private final Path file;
+    private final BufferedReader in;
+    private long line;
+    private int lastTime = Integer.MIN_VALUE;
+    private int lastStoppage;
+
+    private CommandLogReader(Path file) throws IOException {
+        this.file = file;
+        this.in = new BufferedReader(new InputStreamReader(Inputs.open(file), StandardCharsets.UTF_8), 1 << 16);
+    }
+
+    public static CommandLogReader open(Path file) throws IOException {
+        return new CommandLogReader(file);
+    }
+
+    public Path file() {
+        return file;
+    }
+
+    /** The next entry that is a player's message or the referee's; null at the end of the log. */
+    public Entry next() throws IOException {
+        String text;
+        while ((text = in.readLine()) != null) {
+            line++;
+            if (text.isBlank()) {
+                continue;
+            }
+            Entry entry = parse(text);
+            if (entry != null) {
+                return entry;
+            }
+        }
+        return null;
+    }
+
+    private Entry parse(String text) throws GameLogException {
+        int tab = text.indexOf('\t');
+        int comma = tab < 0 ? -1 : text.lastIndexOf(',', tab);
+        if (comma <= 0) {
+            throw error("expected 'TIME,STOPPAGE<tab>...' as a command log line starts, found '" + shorten(text) + "'");
+        }
+        int time;
+        int stoppage;
+        try {
+            time = Integer.parseInt(text.substring(0, comma));
+            stoppage = Integer.parseInt(text.substring(comma + 1, tab));
+        } catch (NumberFormatException e) {
+            throw error("expected 'TIME,STOPPAGE' in whole numbers, found '" + shorten(text.substring(0, tab)) + "'");
+        }
+        if (time < lastTime || (time == lastTime && stoppage < lastStoppage)) {
+            throw error("cycle " + time + "," + stoppage + " comes after " + lastTime + "," + lastStoppage
+                    + ": the command log is out of order");
+        }
+        lastTime = time;
+        lastStoppage = stoppage;
+        String rest = text.substring(tab + 1);
+        if (rest.startsWith("(referee ")) {
+            int close = rest.lastIndexOf(')');
+            return new Entry(line, time, stoppage, "", 0, rest.substring(9, close < 9 ? rest.length() : close).strip());
+        }
+        if (!rest.startsWith("Recv ")) {
+            return null; // other lines (a trainer's, a monitor's) say nothing of the players
+        }
+        int colon = rest.indexOf(": ");
+        if (colon < 0) {
+            throw error("expected 'Recv TEAM_UNUM: MESSAGE', found '" + shorten(rest) + "'");
+        }
+        String sender = rest.substring(5, colon);
+        int underscore = sender.lastIndexOf('_');
+        if (underscore <= 0) {
+            return null; // not a player of a team
+        }
+        String number = sender.substring(underscore + 1);
+        if (number.isEmpty() || !number.chars().allMatch(Character::isDigit) || number.length() > 3) {
+            return null; // a coach (TEAM_Coach) or another client
+        }
+        return new Entry(line, time, stoppage, sender.substring(0, underscore), Integer.parseInt(number),
+                rest.substring(colon + 2));
+    }
+
+    private GameLogException error(String problem) {
+        return new GameLogException(file, line, problem);
+    }
+
+    private static String shorten(String text) {
+        return text.length() <= 60 ? text : text.substring(0, 60) + "...";
+    }
+
+    @Override
+    public void close() throws IOException {
+        in.close();
+    }
+}

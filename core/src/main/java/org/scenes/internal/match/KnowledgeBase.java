@@ -1,0 +1,182 @@
+package org.scenes.internal.match;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Supplier;
+import org.scenes.api.Grid;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneTransform;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileReader;
+
+/**
+ * The stored scenes a recognizer searches, built once and never changed. All scenes share one
+ * grid: cells of different grids cannot be compared, so mixing them is refused. Scenes are held
+ * compactly (about 7 bytes per seen object, see {@link CompactScenes}) and decoded on access, so
+ * a million scenes fit in a few hundred megabytes; metrics pack what they compare once, when a
+ * {@link Recognizer} is built.
+ */
+public final class KnowledgeBase {
+    private final Grid grid;
+    private final CompactScenes scenes;
+
+    private KnowledgeBase(Grid grid, CompactScenes scenes) {
+        this.grid = grid;
+        this.scenes = scenes;
+    }
+
+    public static KnowledgeBase of(Grid grid, List<Scene> scenes) {
+        Builder builder = builder(grid);
+        scenes.forEach(builder::add);
+        return builder.build();
+    }
+
+    /** Collects scenes one at a time, so a knowledge base never needs them all as objects at once. */
+    public static Builder builder(Grid grid) {
+        return new Builder(grid);
+    }
+
+    public static final class Builder {
+        private final Grid grid;
+        private CompactScenes scenes;
+
+        private Builder(Grid grid) {
+            this.grid = grid;
+            scenes = new CompactScenes(grid);
+        }
+
+        public Builder add(Scene scene) {
+            if (scenes == null) {
+                throw new IllegalStateException("the knowledge base was already built");
+            }
+            scenes.append(scene);
+            return this;
+        }
+
+        /** Adds one player's scenes in order, through fresh transforms. */
+        public Builder addSequence(Iterable<Scene> sequence, List<SceneTransform> transforms) {
+            for (Scene scene : sequence) {
+                storedScenes(scene, transforms).forEach(this::add);
+            }
+            return this;
+        }
+
+        public KnowledgeBase build() {
+            if (scenes == null) {
+                throw new IllegalStateException("the knowledge base was already built");
+            }
+            scenes.trim();
+            KnowledgeBase knowledge = new KnowledgeBase(grid, scenes);
+            scenes = null;
+            return knowledge;
+        }
+    }
+
+    /**
+     * Scenes of several files, each file passed through fresh transforms (made by
+     * {@code transforms}) in order, since transforms such as memory follow one player's sequence.
+     */
+    public static KnowledgeBase fromFiles(List<SceneFile> files, Supplier<List<SceneTransform>> transforms) {
+        if (files.isEmpty()) {
+            throw new IllegalArgumentException("a knowledge base needs at least one scene file");
+        }
+        Builder builder = builder(SceneFile.commonGrid(files));
+        for (SceneFile file : files) {
+            builder.addSequence(file.scenes(), transforms.get());
+        }
+        return builder.build();
+    }
+
+    /**
+     * Reads the files (gzip or plain) one scene at a time into the knowledge base, so only the
+     * compact form is ever held; errors name the file.
+     */
+    public static KnowledgeBase load(List<Path> paths, Supplier<List<SceneTransform>> transforms) {
+        if (paths.isEmpty()) {
+            throw new IllegalArgumentException("a knowledge base needs at least one scene file");
+        }
+        Grid grid = null;
+        Builder builder = null;
+        for (Path path : paths) {
+            try (SceneFileReader reader = SceneFileReader.open(path)) {
+                Grid fileGrid = reader.header().grid();
+                if (grid == null) {
+                    grid = fileGrid;
+                    builder = builder(grid);
+                } else {
+                    Grid.common(List.of(paths.get(0), path), List.of(grid, fileGrid));
+                }
+                builder.addSequence(() -> reader, transforms.get());
+            }
+        }
+        return builder.build();
+    }
+
+    /** One player's scenes through fresh transforms, in order. */
+    public static List<Scene> transform(List<Scene> scenes, List<SceneTransform> transforms) {
+        if (transforms.isEmpty()) {
+            return scenes;
+        }
+        List<Scene> out = new ArrayList<>(scenes.size());
+        for (Scene scene : scenes) {
+            out.add(transformed(scene, transforms));
+        }
+        return out;
+    }
+
+    /** What a knowledge base stores for one player's scenes through fresh transforms, in order (see {@link SceneTransform#stored}). */
+    public static List<Scene> stored(List<Scene> scenes, List<SceneTransform> transforms) {
+        if (transforms.isEmpty()) {
+            return scenes;
+        }
+        List<Scene> out = new ArrayList<>(scenes.size());
+        for (Scene scene : scenes) {
+            out.addAll(storedScenes(scene, transforms));
+        }
+        return out;
+    }
+
+    /** What the transforms store for one scene, in order: each transform's scenes for each scene before it. */
+    private static List<Scene> storedScenes(Scene scene, List<SceneTransform> transforms) {
+        List<Scene> current = List.of(scene);
+        for (SceneTransform transform : transforms) {
+            List<Scene> next = new ArrayList<>(current.size());
+            for (Scene each : current) {
+                next.addAll(transform.stored(each));
+            }
+            current = next;
+        }
+        return current;
+    }
+
+    private static Scene transformed(Scene scene, List<SceneTransform> transforms) {
+        Scene current = scene;
+        for (SceneTransform transform : transforms) {
+            current = transform.apply(current);
+        }
+        return current;
+    }
+
+    public Grid grid() {
+        return grid;
+    }
+
+    /** The scenes in order, each decoded anew when read: iterate once rather than index repeatedly. */
+    public List<Scene> scenes() {
+        return scenes;
+    }
+
+    public int size() {
+        return scenes.size();
+    }
+
+    public Scene scene(int index) {
+        return scenes.get(index);
+    }
+
+    /** Bytes of heap the stored scenes take (not counting what metrics pack from them). */
+    public long storedBytes() {
+        return scenes.storedBytes();
+    }
+}

@@ -1,0 +1,196 @@
+package org.scenes.internal.match;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Supplier;
+import java.util.function.UnaryOperator;
+import org.scenes.api.EncodedMetric;
+import org.scenes.api.Neighbour;
+import org.scenes.api.PackedMetric;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SceneTransform;
+import org.scenes.api.TopK;
+
+/**
+ * k-nearest-neighbour search of a query scene against a knowledge base: the one implementation
+ * behind validation, the live agent and benchmarks. It keeps the k best in a bounded max-heap;
+ * equal distances are ordered by knowledge-base index, so results never depend on timing or
+ * threads. Metrics with an {@link EncodedMetric} fast path have the knowledge base encoded once
+ * here and are asked with the current k-th best distance as bound, so they can stop early;
+ * metrics with a {@link PackedMetric} form have it built once here and scan it themselves;
+ * other metrics compare whole scenes, decoded from the knowledge base once here (at the memory
+ * cost of scene objects).
+ * Safe to use from several threads: each thread gets its own metric instance.
+ */
+public final class Recognizer {
+    private final KnowledgeBase knowledge;
+    private final int k;
+    private final ThreadLocal<SceneMetric> metrics;
+    private final Object[] encoded;
+    private final PackedMetric.PackedScenes packed;
+    /** decoded scenes for metrics with neither fast path, which compare whole scenes */
+    private final List<Scene> decoded;
+    /** The knowledge base split by see age, or null when all its scenes have one age. */
+    private final java.util.NavigableMap<Integer, AgePartition> byAge;
+    /** The second orientation queries are matched in (see {@link SceneTransform#queryImage}), or null. */
+    private final UnaryOperator<Scene> queryImage;
+
+    public Recognizer(KnowledgeBase knowledge, Supplier<SceneMetric> metricFactory, int k) {
+        this(knowledge, metricFactory, k, null);
+    }
+
+    /**
+     * @param queryImage null, or an involution (the mirror image): each query is then matched as it
+     *                   is and as its image, and a stored scene found for the image is returned as
+     *                   its own image, whose actions suit the query; as if the knowledge base held
+     *                   the images of its scenes too, without storing them
+     */
+    public Recognizer(KnowledgeBase knowledge, Supplier<SceneMetric> metricFactory, int k, UnaryOperator<Scene> queryImage) {
+        this(knowledge, metricFactory, k, true, queryImage);
+    }
+
+    private Recognizer(KnowledgeBase knowledge, Supplier<SceneMetric> metricFactory, int k, boolean splitByAge,
+                       UnaryOperator<Scene> queryImage) {
+        this.queryImage = queryImage;
+        if (k < 1) {
+            throw new IllegalArgumentException("k must be at least 1, not " + k);
+        }
+        if (knowledge.size() == 0) {
+            throw new IllegalArgumentException("the knowledge base holds no scenes");
+        }
+        this.knowledge = knowledge;
+        this.k = k;
+        this.metrics = ThreadLocal.withInitial(metricFactory);
+        byAge = splitByAge ? partitionByAge(knowledge, metricFactory, k) : null;
+        if (byAge != null) {
+            packed = null;
+            encoded = null;
+            decoded = null;
+            return;
+        }
+        SceneMetric first = metricFactory.get();
+        packed = first instanceof PackedMetric packable ? packable.pack(knowledge.scenes()) : null;
+        if (packed == null && first instanceof EncodedMetric<?> fast) {
+            encoded = new Object[knowledge.size()];
+            for (int i = 0; i < encoded.length; i++) {
+                encoded[i] = fast.encode(knowledge.scene(i));
+            }
+        } else {
+            encoded = null;
+        }
+        decoded = packed == null && encoded == null ? List.copyOf(knowledge.scenes()) : null;
+    }
+
+    /** The scenes of one see age, searched on their own, and where they are in the whole knowledge base. */
+    private record AgePartition(Recognizer recognizer, int[] indices) {
+    }
+
+    /**
+     * A player acting every cycle on a see every other cycle shows the same view in two cycles and
+     * acts differently in each (it predicts the cycle in between): scenes of different see ages are
+     * different situations, so each age is searched apart. Null when every scene has one age.
+     */
+    private static java.util.NavigableMap<Integer, AgePartition> partitionByAge(KnowledgeBase knowledge,
+                                                                            Supplier<SceneMetric> metricFactory, int k) {
+        java.util.TreeMap<Integer, List<Integer>> indices = new java.util.TreeMap<>();
+        for (int i = 0; i < knowledge.size(); i++) {
+            indices.computeIfAbsent(knowledge.scene(i).seeAge(), age -> new ArrayList<>()).add(i);
+        }
+        if (indices.size() < 2) {
+            return null;
+        }
+        java.util.TreeMap<Integer, AgePartition> partitions = new java.util.TreeMap<>();
+        indices.forEach((age, members) -> {
+            List<Scene> scenes = new ArrayList<>(members.size());
+            members.forEach(i -> scenes.add(knowledge.scene(i)));
+            partitions.put(age, new AgePartition(new Recognizer(KnowledgeBase.of(knowledge.grid(), scenes),
+                    metricFactory, k, false, null), members.stream().mapToInt(Integer::intValue).toArray()));
+        });
+        return partitions;
+    }
+
+    public KnowledgeBase knowledge() {
+        return knowledge;
+    }
+
+    /**
+     * Whether the stored scenes have several see ages (a player that acts every cycle on a see
+     * every other cycle), so queries are matched against scenes of their own age only.
+     */
+    public boolean splitsBySeeAge() {
+        return byAge != null;
+    }
+
+    public int k() {
+        return k;
+    }
+
+    public SceneMetric metric() {
+        return metrics.get();
+    }
+
+    /**
+     * The min(k, size) stored scenes nearest to the query, nearest first, ties by index. With a
+     * query image, the k nearest of the query's and its image's neighbours (those of the image
+     * returned as images, with their stored index); on equal distance the query's own come first.
+     */
+    public List<Neighbour> nearest(Scene query) {
+        List<Neighbour> direct = nearestAsIs(query);
+        if (queryImage == null) {
+            return direct;
+        }
+        List<Neighbour> mirrored = nearestAsIs(queryImage.apply(query));
+        List<Neighbour> merged = new ArrayList<>(direct.size());
+        int d = 0;
+        int m = 0;
+        while (merged.size() < direct.size()) {
+            if (m < mirrored.size() && (d == direct.size()
+                    || Double.compare(mirrored.get(m).distance(), direct.get(d).distance()) < 0)) {
+                Neighbour found = mirrored.get(m++);
+                merged.add(new Neighbour(queryImage.apply(found.scene()), found.index(), found.distance()));
+            } else {
+                merged.add(direct.get(d++));
+            }
+        }
+        return merged;
+    }
+
+    private List<Neighbour> nearestAsIs(Scene query) {
+        if (byAge != null) {
+            return nearestOfAge(query);
+        }
+        TopK top = new TopK(Math.min(k, knowledge.size()));
+        SceneMetric metric = metrics.get();
+        if (packed != null) {
+            packed.scan(query, top);
+        } else if (encoded != null) {
+            @SuppressWarnings("unchecked")
+            EncodedMetric<Object> fast = (EncodedMetric<Object>) metric;
+            Object q = fast.encode(query);
+            for (int i = 0; i < encoded.length; i++) {
+                top.offer(fast.distance(q, encoded[i], top.bound()), i);
+            }
+        } else {
+            for (int i = 0; i < decoded.size(); i++) {
+                top.offer(metric.distance(query, decoded.get(i)), i);
+            }
+        }
+        return top.neighbours(knowledge::scene);
+    }
+
+    /** Searches the partition of the query's see age, or of the nearest age stored (the lower on a tie). */
+    private List<Neighbour> nearestOfAge(Scene query) {
+        int age = query.seeAge();
+        Integer below = byAge.floorKey(age);
+        Integer above = byAge.ceilingKey(age);
+        int chosen = below == null ? above : above == null || age - below <= above - age ? below : above;
+        AgePartition partition = byAge.get(chosen);
+        List<Neighbour> found = partition.recognizer().nearest(query);
+        List<Neighbour> result = new ArrayList<>(found.size());
+        for (Neighbour neighbour : found) {
+            result.add(new Neighbour(neighbour.scene(), partition.indices()[neighbour.index()], neighbour.distance()));
+        }
+        return result;
+    }
+}

@@ -1,0 +1,29 @@
+package org.scenes.internal.protocol;
+
+import java.util.List;
+import java.util.Map;
+
+/**
+ * {@code server_param}, {@code player_param} or {@code player_type}. Version 8 and later send named
+ * pairs (kept in {@link #named()} in order, string values without quotes); version 7 sends the
+ * values by position only ({@link #positional()}).
+ */
+public record Parameters(String head, Map<String, String> named, List<String> positional) implements Message {
+    public Parameters {
+        named = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(named));
+        positional = List.copyOf(positional);
+    }
+
+    /** A named parameter as a number, {@code NaN} when absent or not numeric. */
+    public double number(String name) {
+        String value = named.get(name);
+        if (value == null) {
+            return Double.NaN;
+        }
+        try {
+            return Double.parseDouble(value);
+        } catch (NumberFormatException e) {
+            return Double.NaN;
+        }
+    }
+}

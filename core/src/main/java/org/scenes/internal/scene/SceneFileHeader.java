@@ -1,0 +1,19 @@
+package org.scenes.internal.scene;
+
+import org.scenes.api.Grid;
+
+/**
+ * Everything a scene file says before its scenes.
+ *
+ * @param format the file format version
+ * @param grid the grid every object's cell was computed with
+ * @param source the log and player the scenes came from
+ */
+public record SceneFileHeader(int format, Grid grid, SceneSource source) {
+    /** The format version this build writes; it reads this and every older one. */
+    public static final int CURRENT_FORMAT = 1;
+
+    public static SceneFileHeader of(Grid grid, SceneSource source) {
+        return new SceneFileHeader(CURRENT_FORMAT, grid, source);
+    }
+}

@@ -1,0 +1,482 @@
+package org.scenes.internal.scene;
+
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.JsonToken;
+import com.fasterxml.jackson.core.io.JsonEOFException;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.List;
+import java.util.NoSuchElementException;
+import org.scenes.api.Action;
+import org.scenes.api.ActionType;
+import org.scenes.api.Cell;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Observer;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
+import org.scenes.api.Side;
+import org.scenes.internal.files.Inputs;
+
+/**
+ * Streams the scenes of a scene file one at a time, never holding the JSON tree, so files
+ * of millions of scenes load in the memory their scenes need. The header ({@code format},
+ * {@code grid}, {@code source}) must precede {@code scenes}, with {@code format} first.
+ * Any problem is a {@link SceneFileException} naming file, line and column.
+ */
+public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
+    private final Path file;
+    private final JsonParser json;
+    private final SceneFileHeader header;
+    private Scene next;
+    private boolean finished;
+
+    private SceneFileReader(Path file, InputStream in) throws IOException {
+        this.file = file;
+        this.json = SceneFileWriter.JSON.createParser(in);
+        this.header = readHeader();
+    }
+
+    /** Opens a scene file (gzip or plain) and reads its header. */
+    public static SceneFileReader open(Path file) {
+        InputStream in;
+        try {
+            in = Inputs.open(file);
+        } catch (NoSuchFileException e) {
+            throw new SceneFileException(file, 0, 0, "no such file", e);
+        } catch (IOException e) {
+            throw new SceneFileException(file, 0, 0, "cannot open: " + e.getMessage(), e);
+        }
+        try {
+            return new SceneFileReader(file, in);
+        } catch (IOException | RuntimeException e) {
+            closeQuietly(in);
+            throw asSceneFileException(file, null, e);
+        }
+    }
+
+    /** Reads a whole file; on any error nothing is returned. */
+    public static SceneFile read(Path file) {
+        try (SceneFileReader reader = open(file)) {
+            List<Scene> scenes = new ArrayList<>();
+            reader.forEachRemaining(scenes::add);
+            return new SceneFile(reader.header(), scenes);
+        }
+    }
+
+    public SceneFileHeader header() {
+        return header;
+    }
+
+    @Override
+    public boolean hasNext() {
+        if (next == null && !finished) {
+            try {
+                next = readScene();
+            } catch (IOException | RuntimeException e) {
+                throw asSceneFileException(file, json, e);
+            }
+        }
+        return next != null;
+    }
+
+    @Override
+    public Scene next() {
+        if (!hasNext()) {
+            throw new NoSuchElementException();
+        }
+        Scene scene = next;
+        next = null;
+        return scene;
+    }
+
+    @Override
+    public void close() {
+        try {
+            json.close();
+        } catch (IOException e) {
+            // nothing was written; a failing close of an input cannot lose data
+        }
+    }
+
+    private SceneFileHeader readHeader() throws IOException {
+        expect(json.nextToken(), JsonToken.START_OBJECT, "a JSON object with 'format' first");
+        if (json.nextToken() != JsonToken.FIELD_NAME || !"format".equals(json.currentName())) {
+            throw error("expected the field 'format' first (is this a scene file?)");
+        }
+        expect(json.nextToken(), JsonToken.VALUE_NUMBER_INT, "an integer format version");
+        int format = json.getIntValue();
+        if (format > SceneFileHeader.CURRENT_FORMAT) {
+            throw error("scene format " + format + " is newer than this version of scenes reads (up to "
+                    + SceneFileHeader.CURRENT_FORMAT + "); upgrade scenes to read it");
+        }
+        if (format < 1) {
+            throw error("scene format must be at least 1, not " + format);
+        }
+        Grid grid = null;
+        SceneSource source = new SceneSource("", Observer.UNKNOWN);
+        while (json.nextToken() == JsonToken.FIELD_NAME) {
+            String field = json.currentName();
+            JsonToken value = json.nextToken();
+            switch (field) {
+                case "grid" -> grid = readGrid(value);
+                case "source" -> source = readSource(value);
+                case "scenes" -> {
+                    if (grid == null) {
+                        throw error("'grid' must come before 'scenes'");
+                    }
+                    expect(value, JsonToken.START_ARRAY, "an array of scenes");
+                    return new SceneFileHeader(format, grid, source);
+                }
+                default -> json.skipChildren();
+            }
+        }
+        throw error("expected the field 'scenes'");
+    }
+
+    private Grid readGrid(JsonToken start) throws IOException {
+        expect(start, JsonToken.START_OBJECT, "a grid object");
+        int columns = -1;
+        int rows = -1;
+        double minAngle = Grid.DEFAULT.minAngle();
+        double maxAngle = Grid.DEFAULT.maxAngle();
+        double[] bounds = null;
+        while (json.nextToken() == JsonToken.FIELD_NAME) {
+            String field = json.currentName();
+            JsonToken value = json.nextToken();
+            switch (field) {
+                case "columns" -> columns = intValue(value);
+                case "rows" -> rows = intValue(value);
+                case "minAngle" -> minAngle = number(value);
+                case "maxAngle" -> maxAngle = number(value);
+                case "bounds" -> {
+                    expect(value, JsonToken.START_ARRAY, "an array of distance bounds");
+                    List<Double> list = new ArrayList<>();
+                    while (json.nextToken() != JsonToken.END_ARRAY) {
+                        list.add(number(json.currentToken()));
+                    }
+                    bounds = list.stream().mapToDouble(Double::doubleValue).toArray();
+                }
+                default -> json.skipChildren();
+            }
+        }
+        if (columns < 0 || bounds == null) {
+            throw error("the grid needs 'columns' and 'bounds'");
+        }
+        if (rows >= 0 && rows != bounds.length + 1) {
+            throw error("the grid has " + rows + " rows but " + bounds.length + " bounds (rows = bounds + 1)");
+        }
+        try {
+            return new Grid(columns, minAngle, maxAngle, bounds);
+        } catch (IllegalArgumentException e) {
+            throw error(e.getMessage());
+        }
+    }
+
+    private SceneSource readSource(JsonToken start) throws IOException {
+        expect(start, JsonToken.START_OBJECT, "a source object");
+        String log = "";
+        Observer observer = Observer.UNKNOWN;
+        while (json.nextToken() == JsonToken.FIELD_NAME) {
+            String field = json.currentName();
+            JsonToken value = json.nextToken();
+            if ("log".equals(field)) {
+                log = text(value);
+            } else {
+                observer = readObserverField(observer, field, value);
+            }
+        }
+        return new SceneSource(log, observer);
+    }
+
+    private Observer readObserverField(Observer observer, String field, JsonToken value) throws IOException {
+        switch (field) {
+            case "team":
+                return new Observer(text(value), observer.side(), observer.uniformNumber());
+            case "side":
+                String side = text(value);
+                if (side.length() != 1 || (side.charAt(0) != 'l' && side.charAt(0) != 'r')) {
+                    throw error("side must be \"l\" or \"r\", not \"" + side + "\"");
+                }
+                return new Observer(observer.team(), Side.fromLetter(side.charAt(0)), observer.uniformNumber());
+            case "unum":
+                return new Observer(observer.team(), observer.side(), intValue(value));
+            default:
+                json.skipChildren();
+                return observer;
+        }
+    }
+
+    private Scene readScene() throws IOException {
+        JsonToken token = json.nextToken();
+        if (token == JsonToken.END_ARRAY) {
+            finishDocument();
+            return null;
+        }
+        expect(token, JsonToken.START_OBJECT, "a scene object or the end of 'scenes'");
+        JsonLocation start = json.currentTokenLocation();
+        int cycle = Integer.MIN_VALUE;
+        int seeAge = 0;
+        Observer observer = header.source().observer();
+        List<SeenObject> objects = null;
+        List<Action> actions = null;
+        while (json.nextToken() == JsonToken.FIELD_NAME) {
+            String field = json.currentName();
+            JsonToken value = json.nextToken();
+            switch (field) {
+                case "cycle" -> cycle = intValue(value);
+                case "seeAge" -> seeAge = intValue(value);
+                case "observer" -> {
+                    expect(value, JsonToken.START_OBJECT, "an observer object");
+                    while (json.nextToken() == JsonToken.FIELD_NAME) {
+                        String observerField = json.currentName();
+                        observer = readObserverField(observer, observerField, json.nextToken());
+                    }
+                }
+                case "objects" -> objects = readObjects(value);
+                case "actions" -> actions = readActions(value);
+                default -> json.skipChildren();
+            }
+        }
+        if (cycle == Integer.MIN_VALUE || objects == null || actions == null) {
+            throw new SceneFileException(file, start.getLineNr(), start.getColumnNr(),
+                    "a scene needs 'cycle', 'objects' and 'actions'", null);
+        }
+        try {
+            return new Scene(cycle, observer, objects, actions, null, seeAge);
+        } catch (IllegalArgumentException e) {
+            throw new SceneFileException(file, start.getLineNr(), start.getColumnNr(), e.getMessage(), e);
+        }
+    }
+
+    private void finishDocument() throws IOException {
+        finished = true;
+        while (json.nextToken() == JsonToken.FIELD_NAME) {
+            json.nextToken();
+            json.skipChildren();
+        }
+        expect(json.currentToken(), JsonToken.END_OBJECT, "the end of the scene file");
+        if (json.nextToken() != null) {
+            throw error("unexpected content after the end of the scene file");
+        }
+    }
+
+    private List<SeenObject> readObjects(JsonToken start) throws IOException {
+        expect(start, JsonToken.START_ARRAY, "an array of objects");
+        List<SeenObject> objects = new ArrayList<>();
+        while (json.nextToken() != JsonToken.END_ARRAY) {
+            objects.add(readObject(json.currentToken()));
+        }
+        return objects;
+    }
+
+    private SeenObject readObject(JsonToken start) throws IOException {
+        expect(start, JsonToken.START_OBJECT, "an object");
+        ObjectKind kind = null;
+        String name = null;
+        String team = "";
+        int unum = 0;
+        boolean goalie = false;
+        Relation relation = Relation.NONE;
+        double distance = Double.NaN;
+        double direction = Double.NaN;
+        double distanceChange = Double.NaN;
+        double directionChange = Double.NaN;
+        double bodyFacing = Double.NaN;
+        double headFacing = Double.NaN;
+        double pointing = Double.NaN;
+        char mark = SeenObject.NO_MARK;
+        Cell cell = null;
+        while (json.nextToken() == JsonToken.FIELD_NAME) {
+            String field = json.currentName();
+            JsonToken value = json.nextToken();
+            switch (field) {
+                case "kind" -> kind = parseEnum(value, ObjectKind::fromKey);
+                case "name" -> name = text(value);
+                case "team" -> team = text(value);
+                case "unum" -> unum = intValue(value);
+                case "goalie" -> goalie = bool(value);
+                case "relation" -> relation = parseEnum(value, Relation::fromKey);
+                case "dist" -> distance = number(value);
+                case "dir" -> direction = number(value);
+                case "distChange" -> distanceChange = number(value);
+                case "dirChange" -> directionChange = number(value);
+                case "bodyFacing" -> bodyFacing = number(value);
+                case "headFacing" -> headFacing = number(value);
+                case "pointDir" -> pointing = number(value);
+                case "mark" -> {
+                    String text = text(value);
+                    if (!text.equals("t") && !text.equals("k")) {
+                        throw error("mark must be \"t\" or \"k\", not \"" + text + "\"");
+                    }
+                    mark = text.charAt(0);
+                }
+                case "cell" -> cell = readCell(value);
+                default -> json.skipChildren();
+            }
+        }
+        if (kind == null || name == null || name.isEmpty() || cell == null) {
+            throw error("an object needs 'kind', 'name' and 'cell'");
+        }
+        return new SeenObject(kind, name, team, unum, goalie, relation, distance, direction,
+                distanceChange, directionChange, bodyFacing, headFacing, pointing, mark, cell);
+    }
+
+    private Cell readCell(JsonToken start) throws IOException {
+        expect(start, JsonToken.START_ARRAY, "a cell [column, row]");
+        int column = intValue(json.nextToken());
+        int row = intValue(json.nextToken());
+        expect(json.nextToken(), JsonToken.END_ARRAY, "the end of the cell [column, row]");
+        Grid grid = header.grid();
+        if (column < 0 || column >= grid.columns() || row < 0 || row >= grid.rows()) {
+            throw error("cell [" + column + ", " + row + "] lies outside the file's " + grid.describe() + " grid");
+        }
+        return new Cell(column, row);
+    }
+
+    private List<Action> readActions(JsonToken start) throws IOException {
+        expect(start, JsonToken.START_ARRAY, "an array of actions");
+        List<Action> actions = new ArrayList<>(2);
+        while (json.nextToken() != JsonToken.END_ARRAY) {
+            expect(json.currentToken(), JsonToken.START_OBJECT, "an action object");
+            ActionType type = null;
+            double[] parameters = {Double.NaN, Double.NaN};
+            List<String> fields = new ArrayList<>();
+            List<Double> values = new ArrayList<>();
+            while (json.nextToken() == JsonToken.FIELD_NAME) {
+                String field = json.currentName();
+                JsonToken value = json.nextToken();
+                if ("type".equals(field)) {
+                    type = parseEnum(value, ActionType::fromKey);
+                } else if ("primary".equals(field)) {
+                    bool(value);
+                } else if (value.isNumeric()) {
+                    fields.add(field);
+                    values.add(json.getDoubleValue());
+                } else {
+                    json.skipChildren();
+                }
+            }
+            if (type == null) {
+                throw error("an action needs a 'type'");
+            }
+            for (int i = 0; i < fields.size(); i++) {
+                int index = parameterIndex(type, fields.get(i));
+                parameters[index] = values.get(i);
+            }
+            actions.add(new Action(type, parameters[0], parameters[1]));
+        }
+        return actions;
+    }
+
+    private int parameterIndex(ActionType type, String field) {
+        for (int i = 0; i < type.parameterCount(); i++) {
+            if (type.parameter(i).equals(field)) {
+                return i;
+            }
+        }
+        throw error("action '" + type.key() + "' has no parameter '" + field + "'");
+    }
+
+    private <T> T parseEnum(JsonToken value, java.util.function.Function<String, T> parse) throws IOException {
+        String text = text(value);
+        try {
+            return parse.apply(text);
+        } catch (IllegalArgumentException e) {
+            throw error(e.getMessage());
+        }
+    }
+
+    private void expect(JsonToken actual, JsonToken expected, String what) {
+        if (actual != expected) {
+            throw error("expected " + what + " but found " + describe(actual));
+        }
+    }
+
+    private String text(JsonToken value) throws IOException {
+        expect(value, JsonToken.VALUE_STRING, "a string");
+        return json.getText();
+    }
+
+    private int intValue(JsonToken value) throws IOException {
+        expect(value, JsonToken.VALUE_NUMBER_INT, "an integer");
+        return json.getIntValue();
+    }
+
+    private double number(JsonToken value) throws IOException {
+        if (value != JsonToken.VALUE_NUMBER_INT && value != JsonToken.VALUE_NUMBER_FLOAT) {
+            throw error("expected a number but found " + describe(value));
+        }
+        return json.getDoubleValue();
+    }
+
+    private boolean bool(JsonToken value) {
+        if (value != JsonToken.VALUE_TRUE && value != JsonToken.VALUE_FALSE) {
+            throw error("expected true or false but found " + describe(value));
+        }
+        return value == JsonToken.VALUE_TRUE;
+    }
+
+    private static String describe(JsonToken token) {
+        if (token == null) {
+            return "the end of the file (is it truncated?)";
+        }
+        return switch (token) {
+            case START_OBJECT -> "an object";
+            case END_OBJECT -> "the end of an object";
+            case START_ARRAY -> "an array";
+            case END_ARRAY -> "the end of an array";
+            case FIELD_NAME -> "a field name";
+            case VALUE_STRING -> "a string";
+            case VALUE_NUMBER_INT, VALUE_NUMBER_FLOAT -> "a number";
+            case VALUE_TRUE, VALUE_FALSE -> "a boolean";
+            case VALUE_NULL -> "null";
+            default -> token.toString();
+        };
+    }
+
+    private SceneFileException error(String message) {
+        JsonLocation location = json.currentTokenLocation();
+        return new SceneFileException(file, location.getLineNr(), location.getColumnNr(), message, null);
+    }
+
+    private static SceneFileException asSceneFileException(Path file, JsonParser json, Exception e) {
+        if (e instanceof SceneFileException sceneError) {
+            return sceneError;
+        }
+        if (e instanceof JsonEOFException eof) {
+            JsonLocation location = eof.getLocation();
+            return new SceneFileException(file, location.getLineNr(), location.getColumnNr(),
+                    "the file ends in the middle of the JSON (is it truncated?)", e);
+        }
+        if (e instanceof JsonProcessingException jsonError) {
+            JsonLocation location = jsonError.getLocation();
+            return new SceneFileException(file, location == null ? 0 : location.getLineNr(),
+                    location == null ? 0 : location.getColumnNr(), "malformed JSON: " + jsonError.getOriginalMessage(), e);
+        }
+        if (e instanceof java.io.EOFException) {
+            return new SceneFileException(file, 0, 0, "the compressed file ends early (is it truncated?)", e);
+        }
+        if (e instanceof org.scenes.internal.files.Inputs.CorruptGzipException gzip) {
+            return new SceneFileException(file, 0, 0, gzip.reason(), e);
+        }
+        long line = json == null ? 0 : json.currentLocation().getLineNr();
+        long column = json == null ? 0 : json.currentLocation().getColumnNr();
+        return new SceneFileException(file, line, column, e.getMessage(), e);
+    }
+
+    private static void closeQuietly(InputStream in) {
+        try {
+            in.close();
+        } catch (IOException ignored) {
+            // reporting the original failure matters more
+        }
+    }
+}

@@ -1,0 +1,248 @@
+package org.scenes.internal.scene;
+
+import com.fasterxml.jackson.core.JsonEncoding;
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.core.SerializableString;
+import com.fasterxml.jackson.core.io.SerializedString;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.scenes.api.Action;
+import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Observer;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
+import org.scenes.internal.files.AtomicOutput;
+
+/**
+ * Streams scenes into a scene file (see {@code docs/scene-format.md}), one scene per line.
+ * Nothing appears at the target path until {@link #commit()}; closing without commit
+ * discards what was written.
+ */
+public final class SceneFileWriter implements AutoCloseable {
+    static final JsonFactory JSON = new JsonFactory();
+    /** The fields and kinds of every object, encoded once (writing scenes is much of a conversion's time). */
+    private static final SerializableString KIND = new SerializedString("kind");
+    private static final SerializableString NAME = new SerializedString("name");
+    private static final SerializableString CELL = new SerializedString("cell");
+    private static final SerializableString[] KINDS = new SerializableString[ObjectKind.values().length];
+    /** Distinct object names kept encoded; names beyond it (none in the server's protocol) are encoded each time. */
+    private static final int NAMES_KEPT = 512;
+
+    static {
+        for (ObjectKind kind : ObjectKind.values()) {
+            KINDS[kind.ordinal()] = new SerializedString(kind.key());
+        }
+    }
+
+    private final AtomicOutput output;
+    private final JsonGenerator json;
+    private final SceneFileHeader header;
+    private long written;
+    private final Map<String, SerializableString> names = new HashMap<>();
+    private final Map<String, SerializableString> fields = new HashMap<>();
+    private final char[] number = new char[24];
+
+    private SceneFileWriter(Path target, SceneFileHeader header) throws IOException {
+        this.output = AtomicOutput.create(target);
+        this.header = header;
+        this.json = JSON.createGenerator(output.stream(), JsonEncoding.UTF8);
+        writeHeader();
+    }
+
+    public static SceneFileWriter create(Path target, SceneFileHeader header) throws IOException {
+        return new SceneFileWriter(target, header);
+    }
+
+    /** Writes a whole scene file in one step. */
+    public static void write(Path target, SceneFile file) throws IOException {
+        try (SceneFileWriter writer = create(target, file.header())) {
+            for (Scene scene : file.scenes()) {
+                writer.write(scene);
+            }
+            writer.commit();
+        }
+    }
+
+    private void writeHeader() throws IOException {
+        json.writeStartObject();
+        json.writeNumberField("format", header.format());
+        Grid grid = header.grid();
+        json.writeRaw('\n');
+        json.writeObjectFieldStart("grid");
+        json.writeNumberField("columns", grid.columns());
+        json.writeNumberField("rows", grid.rows());
+        json.writeNumberField("minAngle", grid.minAngle());
+        json.writeNumberField("maxAngle", grid.maxAngle());
+        json.writeArrayFieldStart("bounds");
+        for (double bound : grid.bounds()) {
+            json.writeNumber(bound);
+        }
+        json.writeEndArray();
+        json.writeEndObject();
+        json.writeRaw('\n');
+        json.writeObjectFieldStart("source");
+        json.writeStringField("log", header.source().log());
+        writeObserverFields(header.source().observer());
+        json.writeEndObject();
+        json.writeRaw('\n');
+        json.writeArrayFieldStart("scenes");
+    }
+
+    private void writeObserverFields(Observer observer) throws IOException {
+        json.writeStringField("team", observer.team());
+        if (observer.side() != null) {
+            json.writeStringField("side", String.valueOf(observer.side().letter()));
+        }
+        if (observer.uniformNumber() > 0) {
+            json.writeNumberField("unum", observer.uniformNumber());
+        }
+    }
+
+    public void write(Scene scene) throws IOException {
+        json.writeRaw('\n');
+        json.writeStartObject();
+        json.writeNumberField("cycle", scene.cycle());
+        if (scene.seeAge() > 0) {
+            json.writeNumberField("seeAge", scene.seeAge());
+        }
+        if (!scene.observer().equals(header.source().observer())) {
+            json.writeObjectFieldStart("observer");
+            writeObserverFields(scene.observer());
+            json.writeEndObject();
+        }
+        json.writeArrayFieldStart("objects");
+        for (SeenObject object : scene.objects()) {
+            writeObject(object);
+        }
+        json.writeEndArray();
+        json.writeArrayFieldStart("actions");
+        List<Action> actions = scene.actions();
+        for (int i = 0; i < actions.size(); i++) {
+            writeAction(actions.get(i), i == 0);
+        }
+        json.writeEndArray();
+        json.writeEndObject();
+        written++;
+    }
+
+    private void writeObject(SeenObject object) throws IOException {
+        json.writeStartObject();
+        json.writeFieldName(KIND);
+        json.writeString(KINDS[object.kind().ordinal()]);
+        json.writeFieldName(NAME);
+        SerializableString name = names.get(object.name());
+        if (name == null && names.size() < NAMES_KEPT) {
+            name = new SerializedString(object.name());
+            names.put(object.name(), name);
+        }
+        if (name != null) {
+            json.writeString(name);
+        } else {
+            json.writeString(object.name());
+        }
+        if (!object.team().isEmpty()) {
+            json.writeStringField("team", object.team());
+        }
+        if (object.uniformNumber() > 0) {
+            json.writeNumberField("unum", object.uniformNumber());
+        }
+        if (object.goalie()) {
+            json.writeBooleanField("goalie", true);
+        }
+        if (object.relation() != Relation.NONE) {
+            json.writeStringField("relation", object.relation().key());
+        }
+        writeOptional("dist", object.distance());
+        writeOptional("dir", object.direction());
+        writeOptional("distChange", object.distanceChange());
+        writeOptional("dirChange", object.directionChange());
+        writeOptional("bodyFacing", object.bodyFacing());
+        writeOptional("headFacing", object.headFacing());
+        writeOptional("pointDir", object.pointingDirection());
+        if (object.mark() != SeenObject.NO_MARK) {
+            json.writeStringField("mark", String.valueOf(object.mark()));
+        }
+        json.writeFieldName(CELL);
+        json.writeStartArray();
+        json.writeNumber(object.cell().column());
+        json.writeNumber(object.cell().row());
+        json.writeEndArray();
+        json.writeEndObject();
+    }
+
+    private void writeAction(Action action, boolean primary) throws IOException {
+        json.writeStartObject();
+        json.writeStringField("type", action.type().key());
+        for (int i = 0; i < action.type().parameterCount(); i++) {
+            writeOptional(action.type().parameter(i), action.parameter(i));
+        }
+        if (primary) {
+            json.writeBooleanField("primary", true);
+        }
+        json.writeEndObject();
+    }
+
+    private void writeOptional(String field, double value) throws IOException {
+        if (Double.isNaN(value)) {
+            return;
+        }
+        // whole numbers without ".0"; -0 keeps its sign, which the server's "-0" carries, as "-0.0"
+        json.writeFieldName(fields.computeIfAbsent(field, SerializedString::new));
+        if (value == Math.rint(value) && Math.abs(value) < 1e15
+                && Double.doubleToRawLongBits(value) != Double.doubleToRawLongBits(-0.0)) {
+            json.writeNumber((long) value);
+            return;
+        }
+        // Most values are tenths (distances, changes): their text as Double.toString writes it, cheaper
+        double tenths = Math.rint(value * 10);
+        if (tenths != 0 && Math.abs(tenths) < 1e7 && tenths / 10 == value) {
+            json.writeNumber(number, 0, tenths((long) tenths));
+        } else {
+            json.writeNumber(value);
+        }
+    }
+
+    /** {@code tenths / 10} with one decimal into {@link #number}; returns its length. */
+    private int tenths(long tenths) {
+        int at = number.length;
+        long rest = Math.abs(tenths);
+        number[--at] = (char) ('0' + rest % 10);
+        number[--at] = '.';
+        rest /= 10;
+        do {
+            number[--at] = (char) ('0' + rest % 10);
+            rest /= 10;
+        } while (rest > 0);
+        if (tenths < 0) {
+            number[--at] = '-';
+        }
+        int length = number.length - at;
+        System.arraycopy(number, at, number, 0, length);
+        return length;
+    }
+
+    public long written() {
+        return written;
+    }
+
+    /** Ends the JSON document and moves the file into place. */
+    public void commit() throws IOException {
+        json.writeRaw('\n');
+        json.writeEndArray();
+        json.writeEndObject();
+        json.writeRaw('\n');
+        json.close();
+        output.commit();
+    }
+
+    @Override
+    public void close() throws IOException {
+        output.close();
+    }
+}

@@ -1,0 +1,243 @@
+package org.scenes.internal.validate;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Consumer;
+import java.util.function.UnaryOperator;
+import org.scenes.api.ObjectWeights;
+import org.scenes.api.PluginRegistry;
+import org.scenes.internal.scene.SceneFile;
+
+/**
+ * Chooses metric, options, weights, k and selector by cross-validation on training files only
+ * ({@link Folds}, by default leave-one-file-out: each file tested against all the others, which
+ * is closest to using the whole training game). The search is a coordinate descent: each
+ * dimension's variants are tried on the best configuration so far and the best is kept; the
+ * dimensions are swept until nothing improves (at most {@code sweeps} times). The score, over
+ * the decisions of all folds pooled, is by default the mean of action accuracy, "action with
+ * direction" accuracy and macro F1, so rare actions (kicks) and turn directions count, not only
+ * the common dash; {@link Objective} offers each of them alone.
+ */
+public final class Tuner {
+    /** One axis of the search: variants of the current configuration. */
+    public record Dimension(String name, List<UnaryOperator<MatchConfig>> variants) {
+    }
+
+    /** The chosen configuration, its cross-validation score and the figures behind it. */
+    public record Result(MatchConfig config, double score, Map<String, Double> figures, int evaluated) {
+        /** A descent's end, with the figures of its best configuration's pooled report. */
+        public static Result of(Descent descent, ValidationReport pooled, int evaluated) {
+            Map<String, Double> figures = new java.util.LinkedHashMap<>();
+            Folds.figures().forEach((name, figure) -> figures.put(name, figure.applyAsDouble(pooled)));
+            return new Result(descent.best(), descent.score(), figures, evaluated);
+        }
+    }
+
+    /**
+     * Scores configurations for {@link #descend}: the local tuner validates them one at a time; one
+     * that validates on many machines may validate the variants it is told of ahead all at once.
+     */
+    @FunctionalInterface
+    public interface Evaluation {
+        double score(MatchConfig config);
+
+        /** The configurations the descent is about to score; nothing is done ahead by default. */
+        default void ahead(List<MatchConfig> configurations) {
+        }
+    }
+
+    /** Where a descent ends: the best configuration and its score. */
+    public record Descent(MatchConfig best, double score) {
+    }
+
+    private final List<SceneFile> files;
+    private final PluginRegistry registry;
+    private final Consumer<String> log;
+    private final Map<MatchConfig, Double> scores = new HashMap<>();
+    private final Map<MatchConfig, Folds> folds = new HashMap<>();
+    private final List<RandomSearch.Tried> tried = new ArrayList<>();
+
+    private final Folds.Protocol protocol;
+    private final java.util.function.ToDoubleFunction<ValidationReport> objective;
+
+    /** What the search maximises, over the decisions of all folds pooled. */
+    public enum Objective {
+        /** the mean of accuracy, action-with-direction accuracy and macro F1 (default) */
+        MEAN,
+        ACCURACY,
+        /** action-with-direction accuracy */
+        DIRECTION,
+        MACRO_F1;
+
+        public double of(ValidationReport pooled) {
+            return switch (this) {
+                case MEAN -> score(pooled);
+                case ACCURACY -> pooled.accuracy();
+                case DIRECTION -> pooled.directionAccuracy();
+                case MACRO_F1 -> pooled.macroF1();
+            };
+        }
+    }
+
+    public Tuner(List<SceneFile> files, PluginRegistry registry, Folds.Protocol protocol, Consumer<String> log) {
+        this(files, registry, protocol, Objective.MEAN, log);
+    }
+
+    public Tuner(List<SceneFile> files, PluginRegistry registry, Folds.Protocol protocol, Objective objective,
+                 Consumer<String> log) {
+        this.protocol = protocol;
+        this.objective = objective::of;
+        if (files.size() < 2) {
+            throw new IllegalArgumentException("tuning needs at least two training files for cross-validation");
+        }
+        this.files = List.copyOf(files);
+        this.registry = registry;
+        this.log = log == null ? line -> { } : log;
+    }
+
+    public static double score(ValidationReport pooled) {
+        return (pooled.accuracy() + pooled.directionAccuracy() + pooled.macroF1()) / 3;
+    }
+
+    public double evaluate(MatchConfig config) {
+        Double known = scores.get(config);
+        if (known != null) {
+            return known;
+        }
+        config.check(registry);
+        Folds result = Folds.run(files, config, registry, true, null, protocol);
+        ValidationReport pooled = result.pooled();
+        double score = objective.applyAsDouble(pooled);
+        scores.put(config, score);
+        folds.put(config, result);
+        tried.add(new RandomSearch.Tried(tried.size() + 1, config, 0, pooled.testScenes(), score, pooled.accuracy(),
+                pooled.directionAccuracy(), pooled.macroF1()));
+        log.accept(String.format("%.4f  acc %.4f  dir %.4f  F1 %.4f  kicks %d/%d  %s", score, pooled.accuracy(),
+                pooled.directionAccuracy(), pooled.macroF1(), pooled.truePositives(org.scenes.api.ActionType.KICK),
+                pooled.support(org.scenes.api.ActionType.KICK), config.describe()));
+        return score;
+    }
+
+    /** Every configuration scored so far, in order, on every query of every fold. */
+    public List<RandomSearch.Tried> tried() {
+        return List.copyOf(tried);
+    }
+
+    public Result tune(MatchConfig start, List<Dimension> dimensions, int sweeps) {
+        Descent descent = descend(start, dimensions, sweeps, this::evaluate);
+        return Result.of(descent, folds.get(descent.best()).pooled(), scores.size());
+    }
+
+    /**
+     * The coordinate descent: each dimension's variants applied to the best configuration so far,
+     * a variant kept only when strictly better; before each dimension the evaluation is told the
+     * variants of the best at the dimension's start.
+     */
+    public static Descent descend(MatchConfig start, List<Dimension> dimensions, int sweeps, Evaluation evaluation) {
+        // start from the first variant of the first dimension: the bare start may be slow and is rarely a contender
+        MatchConfig best = dimensions.isEmpty() ? start : dimensions.get(0).variants().get(0).apply(start);
+        if (!dimensions.isEmpty()) {
+            evaluation.ahead(variants(dimensions.get(0), best));
+        }
+        double bestScore = evaluation.score(best);
+        for (int sweep = 0; sweep < sweeps; sweep++) {
+            boolean improved = false;
+            for (Dimension dimension : dimensions) {
+                evaluation.ahead(variants(dimension, best));
+                for (UnaryOperator<MatchConfig> variant : dimension.variants()) {
+                    MatchConfig candidate = variant.apply(best);
+                    double score = evaluation.score(candidate);
+                    // strictly better only: ties keep the earlier, simpler configuration
+                    if (score > bestScore + 1e-9) {
+                        best = candidate;
+                        bestScore = score;
+                        improved = true;
+                    }
+                }
+            }
+            if (!improved) {
+                break;
+            }
+        }
+        return new Descent(best, bestScore);
+    }
+
+    private static List<MatchConfig> variants(Dimension dimension, MatchConfig config) {
+        return dimension.variants().stream().map(variant -> variant.apply(config)).toList();
+    }
+
+    /** The built-in search: metric family and its weights, memory, k and selector. */
+    public static List<Dimension> defaultSearch() {
+        List<Dimension> dimensions = new ArrayList<>();
+        ObjectWeights ballGoal = ObjectWeights.parse("ball=1,goal=1");
+        dimensions.add(new Dimension("metric", List.of(
+                c -> keepMemory(c, c.withMetric("ball-goal", Map.of()).withObjectWeights(ballGoal)),
+                c -> keepMemory(c, c.withMetric("ball-goal", Map.of("angle-weight", "10", "row-weight", "10")).withObjectWeights(ballGoal)),
+                c -> keepMemory(c, c.withMetric("continuous", polar(1, 10)).withObjectWeights(ballGoal)),
+                // the distance ring weighs most (the kickable distance is a row boundary), then the
+                // direction; a missing ball or goal costs more than any position difference
+                c -> keepMemory(c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05"))),
+                c -> keepMemory(c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.3"))))));
+        dimensions.add(new Dimension("memory", List.of(
+                c -> withMemory(c, 0, 0),
+                c -> withMemory(c, 0, 10),
+                c -> withMemory(c, 0, 100),
+                c -> withMemory(c, 0.5, 100),
+                c -> withMemory(c, 1, 0))));
+        dimensions.add(new Dimension("k and selector", List.of(
+                c -> c.withK(1).withSelector("first-valid", Map.of()),
+                c -> c.withK(3).withSelector("vote", Map.of()),
+                c -> c.withK(5).withSelector("vote", Map.of()),
+                c -> c.withK(3).withSelector("vote", Map.of("params", "average")))));
+        return dimensions;
+    }
+
+    /** A metric variant keeps the memory settings already chosen, so the dimensions stay independent. */
+    static MatchConfig keepMemory(MatchConfig old, MatchConfig changed) {
+        return withMemory(changed, Double.parseDouble(old.metricOptions().getOrDefault("memory", "0")),
+                Double.parseDouble(old.metricOptions().getOrDefault("memory-action", "0")));
+    }
+
+    private static Map<String, String> withRows(Map<String, String> options, double rowWeight) {
+        Map<String, String> with = new HashMap<>(options);
+        with.put("row-weight", format(rowWeight));
+        return with;
+    }
+
+    private static Map<String, String> withPenalty(Map<String, String> options, double penalty, double scale) {
+        Map<String, String> with = new HashMap<>(options);
+        with.put("penalty", format(penalty));
+        with.put("penalty-scale", format(scale));
+        return with;
+    }
+
+    private static Map<String, String> polar(double distanceWeight, double directionWeight) {
+        return Map.of("space", "polar", "log-distance", "true", "distance-weight", format(distanceWeight),
+                "direction-weight", format(directionWeight));
+    }
+
+    /** Memory needs the memory transform and a metric that reads it (the object-set metrics and ball-goal do). */
+    static MatchConfig withMemory(MatchConfig config, double weight, double actionWeight) {
+        Map<String, String> options = new HashMap<>(config.metricOptions());
+        options.remove("memory");
+        options.remove("memory-action");
+        if (config.metric().equals("random") || weight == 0 && actionWeight == 0) {
+            return config.withMetric(config.metric(), options).withTransforms(List.of());
+        }
+        if (weight > 0) {
+            options.put("memory", format(weight));
+        }
+        if (actionWeight > 0) {
+            options.put("memory-action", format(actionWeight));
+        }
+        return config.withMetric(config.metric(), options).withTransforms(List.of("memory"));
+    }
+
+    private static String format(double value) {
+        return value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
+    }
+}

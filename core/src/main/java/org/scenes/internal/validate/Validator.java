@@ -1,0 +1,96 @@
+package org.scenes.internal.validate;
+
+import java.util.List;
+import java.util.SplittableRandom;
+import java.util.function.Supplier;
+import java.util.stream.IntStream;
+import org.scenes.api.Action;
+import org.scenes.api.ActionLabel;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.Neighbour;
+import org.scenes.api.Scene;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
+
+/**
+ * Asks the recognizer and selector for an action on every test scene and compares it with
+ * the action recorded there. Queries run in parallel over the cores; each query draws its
+ * random numbers from its own generator seeded by the run's seed and the query's index, so
+ * a parallel run gives exactly the results of a sequential one.
+ */
+public final class Validator {
+    private Validator() {
+    }
+
+    /**
+     * @param progress called once per finished query (from any thread); may be null
+     */
+    public static ValidationReport run(Recognizer recognizer, Supplier<ActionSelector> selectors, List<Scene> test,
+                                       long seed, boolean parallel, Runnable progress) {
+        int n = test.size();
+        @SuppressWarnings("unchecked")
+        List<Action>[] predicted = new List[n];
+        long[] nanos = new long[n];
+        ThreadLocal<ActionSelector> selector = ThreadLocal.withInitial(selectors);
+        IntStream indices = IntStream.range(0, n);
+        (parallel ? indices.parallel() : indices).forEach(i -> {
+            long start = System.nanoTime();
+            try {
+                List<Neighbour> nearest = recognizer.nearest(test.get(i));
+                predicted[i] = withNeck(selector.get().select(nearest, queryRandom(seed, i)), nearest);
+            } catch (RuntimeException e) {
+                // a plugin's or script's error, located by the query it failed on
+                throw new QueryFailure(i, test.get(i).cycle(), e);
+            }
+            nanos[i] = System.nanoTime() - start;
+            if (progress != null) {
+                progress.run();
+            }
+        });
+        return ValidationReport.of(recognizer.knowledge().scenes(), test, java.util.Arrays.asList(predicted), nanos);
+    }
+
+    /**
+     * The whole prediction for a selected action: selectors pick one action, so the neck action
+     * comes from the nearest neighbour whose scene holds the selected action (its other action), or,
+     * when none does (a selector that made the action up), from the nearest neighbour's scene.
+     */
+    public static List<Action> withNeck(Action selected, List<Neighbour> nearest) {
+        if (selected == null) {
+            return List.of(); // no usable action: none for the body and the neck alike
+        }
+        Scene donor = null;
+        for (Neighbour neighbour : nearest) {
+            if (neighbour.scene().actions().contains(selected)) {
+                donor = neighbour.scene();
+                break;
+            }
+        }
+        if (donor == null && !nearest.isEmpty()) {
+            donor = nearest.get(0).scene();
+        }
+        Action neck = donor == null ? null : ActionLabel.neckAction(donor.actions());
+        if (neck == null || neck.equals(selected) || selected.type() == org.scenes.api.ActionType.TURN_NECK) {
+            return List.of(selected);
+        }
+        return List.of(selected, neck);
+    }
+
+    /** A whole run from a configuration: knowledge base from {@code train}, queries from {@code test}. */
+    public static ValidationReport run(KnowledgeBase train, List<Scene> test, MatchConfig config,
+                                       org.scenes.api.PluginRegistry registry, boolean parallel, Runnable progress) {
+        Recognizer recognizer = config.recognizer(train, registry, config.k());
+        return run(recognizer, config.selectorFactory(registry), test, config.seed(), parallel, progress);
+    }
+
+    /** The generator of query {@code index}: independent of thread and order. */
+    public static SplittableRandom queryRandom(long seed, int index) {
+        return new SplittableRandom(mix(seed * 0x9E3779B97F4A7C15L + index));
+    }
+
+    private static long mix(long z) {
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
+    }
+}

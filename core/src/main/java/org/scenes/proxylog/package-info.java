@@ -1,8 +1,0 @@
-/**
- * The native proxy log format written by {@code scenes proxy} ({@code docs/proxy-log-format.md}):
- * one datagram per line, {@code <seconds> <c2s|s2c> <escaped message>}. Shared by the proxy,
- * which writes it, and the converter, which reads it: {@link org.scenes.proxylog.ProxyLogLine}
- * parses and formats a line, {@link org.scenes.proxylog.MessageEscapes} escapes and unescapes a
- * message exactly.
- */
-package org.scenes.proxylog;

@@ -1,0 +1,272 @@
+package org.scenes.internal.match;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.scenes.api.Action;
+import org.scenes.api.Grid;
+import org.scenes.api.Neighbour;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.ObjectWeights;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.SeenObject;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.testing.RequiresSharedData;
+import org.scenes.testing.SharedData;
+
+/**
+ * The exact index of low-dimensional object-set configurations (ball and goals, with or without
+ * memory terms) finds the same neighbours at bit-identical distances as the exhaustive scan,
+ * for every space, both matchings and k = 1, 5, 15; on synthetic scenes with many ties and
+ * duplicates, and on real Krislet scenes; also with the nearest player of each kind weighed
+ * ({@code nearest-players}).
+ */
+class LowDimensionalIndexTest {
+    private static final ObjectWeights BALL_GOAL = ObjectWeights.parse("ball=1,goal=0.05");
+    /** Ball, goals and the nearest teammate and opponent (with {@code nearest-players}). */
+    private static final ObjectWeights NEAREST = ObjectWeights.parse("ball=1,goal=0.05,teammates=0.3,opponents=0.5");
+    /** Ball and the nearest player regardless of team. */
+    private static final ObjectWeights ANY_PLAYER = ObjectWeights.parse("ball=1,players=0.4");
+
+
+    /** The configuration `scenes tune --objective direction` chose for Krislet (README). */
+    private static final Map<String, String> TUNED = Map.of("space", "polar", "log-distance", "true",
+            "distance-weight", "30", "direction-weight", "10", "row-weight", "1000", "penalty", "20000",
+            "penalty-scale", "10000", "memory-action", "100");
+
+    private static final List<Map<String, String>> CONFIGURATIONS = List.of(
+            TUNED,
+            Map.of(),
+            Map.of("matching", "optimal"),
+            Map.of("space", "polar", "row-weight", "2", "memory", "0.5"),
+            Map.of("matching", "optimal", "space", "polar", "log-distance", "true", "memory", "0.3", "memory-action", "7"),
+            Map.of("matching", "optimal", "penalty", "0.5", "penalty-scale", "3"),
+            Map.of("memory-action", "3", "row-weight", "1"));
+
+    /** Configurations with the nearest player of each kind, with and without memory terms. */
+    private static final List<Map<String, String>> NEAREST_CONFIGURATIONS = List.of(
+            with(TUNED, "nearest-players", "true"),
+            Map.of("nearest-players", "true"),
+            Map.of("nearest-players", "true", "matching", "optimal", "memory", "0.5"),
+            Map.of("nearest-players", "true", "space", "polar", "log-distance", "true", "memory", "0.3", "memory-action", "7"));
+
+    @Test
+    void syntheticScenesAsExhaustive() {
+        List<Scene> stored = remembered(synthetic(21, 3000));
+        List<Scene> queries = remembered(synthetic(22, 60));
+        for (Map<String, String> options : CONFIGURATIONS) {
+            check(options, ObjectSetMetric.Space.CARTESIAN, 0, stored, queries);
+        }
+        check(Map.of(), ObjectSetMetric.Space.CELL, 0, stored, queries);
+        check(Map.of("matching", "optimal", "memory-action", "2"), ObjectSetMetric.Space.CELL, 0, stored, queries);
+        check(Map.of(), ObjectSetMetric.Space.CARTESIAN, 1, stored, queries);
+        check(Map.of("memory", "1", "matching", "optimal"), ObjectSetMetric.Space.CARTESIAN, -2, stored, queries);
+    }
+
+    @Test
+    void nearestPlayersAsExhaustive() {
+        List<Scene> stored = remembered(withPlayers(51, synthetic(51, 2500)));
+        List<Scene> queries = remembered(withPlayers(52, synthetic(52, 50)));
+        for (Map<String, String> options : NEAREST_CONFIGURATIONS) {
+            check(options, ObjectSetMetric.Space.CARTESIAN, 0, NEAREST, stored, queries);
+        }
+        check(Map.of("nearest-players", "true", "memory-action", "2"), ObjectSetMetric.Space.CELL, 0, NEAREST, stored, queries);
+        check(Map.of("nearest-players", "true", "matching", "optimal"), ObjectSetMetric.Space.CARTESIAN, 1, ANY_PLAYER,
+                stored, queries);
+    }
+
+    @Test
+    void nearestPlayersKeepOnlyTheNearestOfEachKind() {
+        Scene far = TestScenes.scene(1, Action.dash(50), TestScenes.ball(5, 0),
+                TestScenes.player(Relation.TEAMMATE, 3, 10), TestScenes.player(Relation.TEAMMATE, 30, -40));
+        Scene near = TestScenes.scene(2, Action.dash(50), TestScenes.ball(5, 0), TestScenes.player(Relation.TEAMMATE, 3, 10));
+        ObjectWeights teammates = ObjectWeights.parse("ball=1,teammates=1");
+        ObjectSetMetric nearest = metric(Map.of("nearest-players", "true"), ObjectSetMetric.Space.CARTESIAN, 0, teammates, true);
+        ObjectSetMetric every = metric(Map.of(), ObjectSetMetric.Space.CARTESIAN, 0, teammates, true);
+        assertEquals(0.0, nearest.distance(far, near), 0.0); // the far teammate is not compared
+        assertTrue(every.distance(far, near) > 0);
+        assertInstanceOf(LowDimensionalIndex.class, nearest.pack(List.of(far, near)));
+        assertInstanceOf(PackedObjectSets.class, every.pack(List.of(far, near)));
+    }
+
+    @Test
+    void queriesWithSeveralObjectsOfAGroupAreStillExact() {
+        // the index covers the stored scenes; a query seeing two balls has no bound there, yet the same result
+        List<Scene> stored = remembered(synthetic(31, 1500));
+        List<Scene> queries = new ArrayList<>();
+        for (Scene query : synthetic(32, 20)) {
+            List<SeenObject> objects = new ArrayList<>(query.objects());
+            objects.add(TestScenes.ball(3, 10));
+            objects.add(TestScenes.goal(30, -20));
+            queries.add(new Scene(query.cycle(), query.observer(), objects, query.actions()).withPrevious(stored.get(7)));
+        }
+        check(TUNED, ObjectSetMetric.Space.CARTESIAN, 0, stored, queries);
+        check(Map.of("matching", "optimal"), ObjectSetMetric.Space.CARTESIAN, 0, stored, queries);
+    }
+
+    @Test
+    void builtOnlyForGroupsOfOneObjectAndUnlessTurnedOff() {
+        List<Scene> stored = synthetic(41, 200);
+        ObjectSetMetric indexed = metric(TUNED, ObjectSetMetric.Space.CARTESIAN, 0, BALL_GOAL, true);
+        assertInstanceOf(LowDimensionalIndex.class, indexed.pack(stored));
+        ObjectSetMetric scanned = metric(TUNED, ObjectSetMetric.Space.CARTESIAN, 0, BALL_GOAL, false);
+        assertInstanceOf(PackedObjectSets.class, scanned.pack(stored)); // memory of actions packs too
+        assertInstanceOf(PackedObjectSets.class, metric(Map.of(), ObjectSetMetric.Space.CARTESIAN, 0, BALL_GOAL, false).pack(stored));
+        // flags weighed: several per scene, no index
+        ObjectSetMetric flags = metric(Map.of(), ObjectSetMetric.Space.CARTESIAN, 0, ObjectWeights.parse("ball=1,flag=1"), true);
+        List<Scene> withFlags = TestScenes.random(5, 200);
+        assertInstanceOf(PackedObjectSets.class, flags.pack(withFlags));
+        // duplicates are one point: far fewer points than scenes
+        LowDimensionalIndex index = (LowDimensionalIndex) indexed.pack(stored);
+        assertTrue(index.points() < stored.size(), index.points() + " points");
+    }
+
+    @Test
+    @RequiresSharedData
+    void krisletScenesAsExhaustive() throws IOException {
+        Path game = SharedData.resolve("krislet/classic-game1");
+        List<Scene> stored = remembered(scenes(game.resolve("Carleton_1.lsf.gz")));
+        List<Scene> test = remembered(scenes(game.resolve("Carleton_2.lsf.gz")));
+        List<Scene> queries = new ArrayList<>();
+        for (int i = 0; i < 60; i++) {
+            queries.add(test.get(i * test.size() / 60));
+        }
+        for (Map<String, String> options : CONFIGURATIONS) {
+            check(options, ObjectSetMetric.Space.CARTESIAN, 0, stored, queries);
+        }
+        check(Map.of("matching", "optimal"), ObjectSetMetric.Space.CELL, 0, stored, queries);
+        check(Map.of(), ObjectSetMetric.Space.CARTESIAN, 1, stored, queries);
+        for (Map<String, String> options : NEAREST_CONFIGURATIONS) {
+            check(options, ObjectSetMetric.Space.CARTESIAN, 0, NEAREST, stored, queries);
+        }
+    }
+
+    private static Map<String, String> with(Map<String, String> options, String key, String value) {
+        Map<String, String> all = new HashMap<>(options);
+        all.put(key, value);
+        return Map.copyOf(all);
+    }
+
+    /** The scenes with zero to three teammates and opponents each, at quantised places (so nearest ones tie and repeat). */
+    private static List<Scene> withPlayers(long seed, List<Scene> scenes) {
+        Random random = new Random(seed);
+        List<Scene> result = new ArrayList<>();
+        for (Scene scene : scenes) {
+            List<SeenObject> objects = new ArrayList<>(scene.objects());
+            for (Relation relation : new Relation[] {Relation.TEAMMATE, Relation.OPPONENT}) {
+                int count = random.nextInt(4);
+                for (int i = 0; i < count; i++) {
+                    objects.add(TestScenes.player(relation, 1 + random.nextInt(30), 10 * (random.nextInt(9) - 4)));
+                }
+            }
+            result.add(new Scene(scene.cycle(), scene.observer(), objects, scene.actions()));
+        }
+        return result;
+    }
+
+    private static List<Scene> scenes(Path log) throws IOException {
+        List<Scene> scenes = new ArrayList<>();
+        new SceneConverter(Grid.DEFAULT, false, null).convert(log, scenes::add);
+        return scenes;
+    }
+
+    /** Each scene with the one before it remembered, as the memory transform does. */
+    private static List<Scene> remembered(List<Scene> scenes) {
+        List<Scene> result = new ArrayList<>();
+        for (int i = 0; i < scenes.size(); i++) {
+            result.add(i == 0 ? scenes.get(i) : scenes.get(i).withPrevious(scenes.get(i - 1)));
+        }
+        return result;
+    }
+
+    /**
+     * Krislet-like scenes: a ball, own and opponent goals each sometimes missing, positions
+     * quantised as the server does (so many scenes repeat), flags that are never weighed.
+     */
+    private static List<Scene> synthetic(long seed, int count) {
+        Random random = new Random(seed);
+        List<Scene> scenes = new ArrayList<>();
+        for (int i = 0; i < count; i++) {
+            List<SeenObject> objects = new ArrayList<>();
+            if (random.nextInt(5) > 0) {
+                objects.add(TestScenes.ball(Math.round((0.2 + random.nextDouble() * 20) * 2) / 2.0, random.nextInt(31) - 15));
+            }
+            if (random.nextInt(3) > 0) {
+                objects.add(TestScenes.goal(Math.round(5 + random.nextDouble() * 60), 5 * (random.nextInt(13) - 6)));
+            }
+            if (random.nextInt(4) == 0) {
+                objects.add(SeenObject.simple(ObjectKind.GOAL, "g l", Relation.OWN, Math.round(10 + random.nextDouble() * 50),
+                        5 * (random.nextInt(13) - 6), Grid.DEFAULT));
+            }
+            objects.add(TestScenes.flag(1 + random.nextInt(40), random.nextInt(91) - 45));
+            Action action = switch (random.nextInt(4)) {
+                case 0, 1 -> Action.dash(random.nextInt(100));
+                case 2 -> Action.turn(random.nextInt(3) * 30 - 30);
+                default -> Action.kick(100, random.nextInt(91) - 45);
+            };
+            scenes.add(new Scene(i, TestScenes.OBSERVER, objects, List.of(action)));
+        }
+        return scenes;
+    }
+
+    private static ObjectSetMetric metric(Map<String, String> options, ObjectSetMetric.Space space, double cycles,
+                                          ObjectWeights weights, boolean indexed) {
+        Map<String, String> all = new HashMap<>(options);
+        all.put("index", Boolean.toString(indexed));
+        return ObjectSetMetric.create(PluginConfig.DEFAULT.withOptions(all).withObjectWeights(weights), space, cycles);
+    }
+
+    private static void check(Map<String, String> options, ObjectSetMetric.Space space, double cycles,
+                              List<Scene> stored, List<Scene> queries) {
+        check(options, space, cycles, BALL_GOAL, stored, queries);
+    }
+
+    /** Every query against the recognizer at k = 1, 5, 15: same indices, bit-identical distances. */
+    private static void check(Map<String, String> options, ObjectSetMetric.Space space, double cycles, ObjectWeights weights,
+                              List<Scene> stored, List<Scene> queries) {
+        ObjectSetMetric reference = metric(options, space, cycles, weights, false);
+        List<List<Neighbour>> expected = new ArrayList<>();
+        for (Scene query : queries) {
+            expected.add(exhaustive(reference, stored, query));
+        }
+        assertInstanceOf(LowDimensionalIndex.class, metric(options, space, cycles, weights, true).pack(stored),
+                "the index serves " + options + " " + weights);
+        for (int k : new int[] {1, 5, 15}) {
+            Recognizer recognizer = new Recognizer(KnowledgeBase.of(Grid.DEFAULT, stored),
+                    () -> metric(options, space, cycles, weights, true), k);
+            for (int q = 0; q < queries.size(); q++) {
+                List<Neighbour> actual = recognizer.nearest(queries.get(q));
+                assertEquals(k, actual.size());
+                for (int i = 0; i < k; i++) {
+                    String what = "query " + q + ", neighbour " + i + " with " + options + ", space " + space
+                            + ", cycles " + cycles + ", k=" + k;
+                    assertEquals(expected.get(q).get(i).index(), actual.get(i).index(), what);
+                    assertEquals(expected.get(q).get(i).distance(), actual.get(i).distance(), 0.0, what);
+                }
+            }
+        }
+    }
+
+    /** Every distance through the scene-level method (no bound), sorted by distance then index. */
+    private static List<Neighbour> exhaustive(SceneMetric metric, List<Scene> stored, Scene query) {
+        List<Neighbour> all = new ArrayList<>();
+        for (int i = 0; i < stored.size(); i++) {
+            all.add(new Neighbour(stored.get(i), i, metric.distance(query, stored.get(i))));
+        }
+        all.sort(Comparator.comparingDouble(Neighbour::distance).thenComparingInt(Neighbour::index));
+        return all;
+    }
+}
