@@ -10,9 +10,15 @@ package org.scenes.api;
  * @param <E> the encoding; must be safe to read from several threads once built
  */
 public interface EncodedMetric<E> extends SceneMetric {
+    /**
+     * @param scene any scene
+     * @return its encoding, computed once per scene
+     */
     E encode(Scene scene);
 
     /**
+     * @param query the encoded query
+     * @param stored an encoded stored scene
      * @param bound the largest distance the caller still cares about ({@code +Infinity} for any)
      * @return the exact distance when it is at most {@code bound}, otherwise any value above it
      */

@@ -8,11 +8,17 @@ import java.util.Map;
  * options it accepts. Names are lower case letters, digits and dashes.
  */
 public interface NamedProvider {
+    /** @return the name users type, unique among the providers of one kind */
     String name();
 
+    /** @return one line for {@code scenes plugins} */
     String description();
 
-    /** Option name to one-line description; options not listed here are rejected. */
+    /**
+     * Option name to one-line description; options not listed here are rejected.
+     *
+     * @return the accepted options, none by default
+     */
     default Map<String, String> options() {
         return Map.of();
     }

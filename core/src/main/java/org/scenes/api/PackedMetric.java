@@ -10,6 +10,7 @@ import java.util.List;
  */
 public interface PackedMetric extends SceneMetric {
     /**
+     * @param scenes the knowledge base, in index order
      * @return the packed scenes, or {@code null} when this configuration has no packed form (the
      *         recognizer then uses the other paths)
      */
@@ -17,7 +18,12 @@ public interface PackedMetric extends SceneMetric {
 
     /** Packed scenes: read-only once built, so one instance serves every thread. */
     interface PackedScenes {
-        /** Offers the distance of every stored scene (by knowledge-base index) that may enter {@code top}. */
+        /**
+         * Offers the distance of every stored scene (by knowledge-base index) that may enter {@code top}.
+         *
+         * @param query the scene to match
+         * @param top receives (distance, index) pairs
+         */
         void scan(Scene query, TopK top);
     }
 }

@@ -8,12 +8,19 @@ import org.scenes.internal.match.Recognizer;
  * for each sequence (each scene file, each game).
  */
 public interface SceneTransform {
+    /**
+     * @param scene the next scene of the sequence
+     * @return the scene to match (or store) instead; {@code scene} itself when nothing changes
+     */
     Scene apply(Scene scene);
 
     /**
      * The scenes a knowledge base stores for {@code scene}: by default {@link #apply} alone. A
      * transform that adds scenes (the mirror image of each) returns several, while queries still
      * go through {@link #apply}.
+     *
+     * @param scene the next scene of the sequence
+     * @return the scenes to store, at least one
      */
     default java.util.List<Scene> stored(Scene scene) {
         return java.util.List.of(apply(scene));

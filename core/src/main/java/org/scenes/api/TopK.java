@@ -14,6 +14,7 @@ public final class TopK {
     private final int[] index;
     private int size;
 
+    /** @param capacity how many pairs to keep, k, at least 1 */
     public TopK(int capacity) {
         if (capacity < 1) {
             throw new IllegalArgumentException("capacity must be at least 1, not " + capacity);
@@ -25,16 +26,19 @@ public final class TopK {
     /**
      * The largest distance that can still enter: the worst kept once full, +Infinity before.
      * A scan in index order may skip any scene whose distance is not below it.
+     *
+     * @return the bound for the next offer
      */
     public double bound() {
         return size < distance.length ? Double.POSITIVE_INFINITY : distance[0];
     }
 
+    /** @return how many pairs are kept now */
     public int size() {
         return size;
     }
 
-    /** How many pairs are kept at most (k). */
+    /** @return how many pairs are kept at most (k) */
     public int capacity() {
         return distance.length;
     }
@@ -42,12 +46,19 @@ public final class TopK {
     /**
      * The index of the worst kept pair once full (a scene at exactly {@link #bound()} enters
      * only with a lower index), Integer.MAX_VALUE before.
+     *
+     * @return that index
      */
     public int worstIndex() {
         return size < distance.length ? Integer.MAX_VALUE : index[0];
     }
 
-    /** Keeps the pair if it is among the k best so far. */
+    /**
+     * Keeps the pair if it is among the k best so far.
+     *
+     * @param newDistance the stored scene's distance from the query
+     * @param newIndex the stored scene's knowledge-base index
+     */
     public void offer(double newDistance, int newIndex) {
         if (size < distance.length) {
             int child = size++;

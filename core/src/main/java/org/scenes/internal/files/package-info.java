@@ -1,0 +1,7 @@
+/**
+ * File helpers: atomic output through a temporary file, inputs that may be gzip, the CSV codec.
+ *
+ * <p><b>Internal:</b> part of the scenes implementation, public only for the project's own modules.
+ * Plugins must not depend on it (they use {@link org.scenes.api}); it may change without notice.
+ */
+package org.scenes.internal.files;

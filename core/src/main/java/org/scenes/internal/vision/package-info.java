@@ -1,0 +1,7 @@
+/**
+ * What a player sees: landmarks, vision parameters, fading and the {@code see} writer.
+ *
+ * <p><b>Internal:</b> part of the scenes implementation, public only for the project's own modules.
+ * Plugins must not depend on it (they use {@link org.scenes.api}); it may change without notice.
+ */
+package org.scenes.internal.vision;
