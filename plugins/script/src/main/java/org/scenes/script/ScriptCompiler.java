@@ -109,7 +109,8 @@ final class ScriptCompiler {
         configuration.setSourceEncoding("UTF-8");
         configuration.setDisabledGlobalASTTransformations(Set.of(GRAB_TRANSFORM));
         ImportCustomizer imports = new ImportCustomizer();
-        imports.addStarImports("org.scenes.internal.scene", "org.scenes.internal.match", "org.scenes.api", "org.scenes.internal.experiment");
+        // scripts are plugins: they see the plugin API, never core's internals
+        imports.addStarImports("org.scenes.api");
         imports.addImports("java.util.random.RandomGenerator");
         configuration.addCompilationCustomizers(
                 imports,
