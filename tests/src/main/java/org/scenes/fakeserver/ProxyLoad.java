@@ -23,7 +23,7 @@ import java.util.zip.CRC32;
 import org.scenes.internal.proxylog.Direction;
 import org.scenes.internal.proxylog.ProxyLogLine;
 import org.scenes.logproxy.ClientKind;
-import org.scenes.logproxy.LogFormat;
+import org.scenes.internal.convert.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.ProxyStats;

@@ -30,7 +30,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.internal.proxylog.Direction;
 import org.scenes.logproxy.ClientKind;
-import org.scenes.logproxy.LogFormat;
+import org.scenes.internal.convert.LogFormat;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.ProxyEnvironment;
