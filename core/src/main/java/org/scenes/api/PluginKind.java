@@ -2,8 +2,11 @@ package org.scenes.api;
 
 /** The three plugin families and the service interface each is loaded through. */
 public enum PluginKind {
+    /** Metrics, loaded through {@link MetricProvider}. */
     METRIC("metric", MetricProvider.class),
+    /** Action selectors, loaded through {@link SelectorProvider}. */
     SELECTOR("selector", SelectorProvider.class),
+    /** Scene transforms, loaded through {@link TransformProvider}. */
     TRANSFORM("transform", TransformProvider.class);
 
     private final String label;
@@ -14,10 +17,12 @@ public enum PluginKind {
         this.service = service;
     }
 
+    /** @return the kind's name in messages: metric, selector or transform */
     public String label() {
         return label;
     }
 
+    /** @return the service interface providers of this kind implement */
     public Class<? extends NamedProvider> service() {
         return service;
     }

@@ -49,16 +49,32 @@ public final class PluginRegistry {
         }
     }
 
-    /** The providers on the class path of core itself. */
+    /**
+     * The providers on the class path of core itself.
+     *
+     * @return the registry
+     * @throws PluginException when a provider cannot be loaded or two share a name
+     */
     public static PluginRegistry load() {
         return new PluginRegistry(PluginRegistry.class.getClassLoader());
     }
 
+    /**
+     * @param loader where to look for providers
+     * @return the registry of every provider that loader sees
+     * @throws PluginException when a provider cannot be loaded or two share a name
+     */
     public static PluginRegistry load(ClassLoader loader) {
         return new PluginRegistry(loader);
     }
 
-    /** The providers on the class path plus those in every {@code .jar} of the given directories. */
+    /**
+     * The providers on the class path plus those in every {@code .jar} of the given directories.
+     *
+     * @param pluginDirectories directories of plugin jars; none for the class path alone
+     * @return the registry; jars skipped are in {@link #warnings()}
+     * @throws PluginException when a directory is missing, a provider cannot be loaded or two share a name
+     */
     public static PluginRegistry load(List<Path> pluginDirectories) {
         if (pluginDirectories.isEmpty()) {
             return load();
@@ -108,12 +124,15 @@ public final class PluginRegistry {
         }
     }
 
-    /** Jars on the plugin path that were skipped, one line each, for the command line to print once. */
+    /** @return jars on the plugin path that were skipped, one line each, for the command line to print once */
     public List<String> warnings() {
         return warnings;
     }
 
-    /** Directories named by {@value #PLUGIN_PATH_VARIABLE}-style text, separated by the platform's path separator. */
+    /**
+     * @param text directories as {@value #PLUGIN_PATH_VARIABLE} holds them, separated by the platform's path separator
+     * @return the directories, none for null or blank text
+     */
     public static List<Path> parsePluginPath(String text) {
         if (text == null || text.isBlank()) {
             return List.of();
@@ -136,16 +155,34 @@ public final class PluginRegistry {
         }
     }
 
+    /**
+     * @param spec a metric's name, optionally followed by {@code :argument}
+     * @param config the configuration; its options must be ones the metric lists
+     * @return a new metric
+     * @throws PluginException for an unknown name or option, or a configuration the metric refuses
+     */
     public SceneMetric metric(String spec, PluginConfig config) {
         MetricProvider provider = provider(MetricProvider.class, spec);
         return provider.create(configure(PluginKind.METRIC, provider, spec, config));
     }
 
+    /**
+     * @param spec a selector's name, optionally followed by {@code :argument}
+     * @param config the configuration; its options must be ones the selector lists
+     * @return a new selector
+     * @throws PluginException for an unknown name or option, or a configuration the selector refuses
+     */
     public ActionSelector selector(String spec, PluginConfig config) {
         SelectorProvider provider = provider(SelectorProvider.class, spec);
         return provider.create(configure(PluginKind.SELECTOR, provider, spec, config));
     }
 
+    /**
+     * @param spec a transform's name, optionally followed by {@code :argument}
+     * @param config the configuration; its options must be ones the transform lists
+     * @return a new transform, for one sequence of scenes
+     * @throws PluginException for an unknown name or option, or a configuration the transform refuses
+     */
     public SceneTransform transform(String spec, PluginConfig config) {
         TransformProvider provider = provider(TransformProvider.class, spec);
         return provider.create(configure(PluginKind.TRANSFORM, provider, spec, config));
@@ -154,6 +191,7 @@ public final class PluginRegistry {
     /**
      * The provider of one service interface that a spec names, typed: no cast at the caller.
      *
+     * @param <P> the service interface
      * @param service {@link MetricProvider}, {@link SelectorProvider} or {@link TransformProvider}
      * @param spec the provider's name, optionally followed by {@code :argument}
      * @return the provider
@@ -163,7 +201,14 @@ public final class PluginRegistry {
         return service.cast(find(PluginKind.of(service), spec));
     }
 
-    /** The provider a spec names; fails with the list of available names. */
+    /**
+     * The provider a spec names; fails with the list of available names.
+     *
+     * @param kind metric, selector or transform
+     * @param spec the provider's name, optionally followed by {@code :argument}
+     * @return the provider
+     * @throws PluginException when no provider of that kind has the name
+     */
     public NamedProvider find(PluginKind kind, String spec) {
         String name = nameOf(spec);
         NamedProvider provider = providers.get(kind).get(name);
@@ -175,7 +220,14 @@ public final class PluginRegistry {
         return provider;
     }
 
-    /** Checks the spec's provider exists and accepts the config's options, without creating anything. */
+    /**
+     * Checks the spec's provider exists and accepts the config's options, without creating anything.
+     *
+     * @param kind metric, selector or transform
+     * @param spec the provider's name, optionally followed by {@code :argument}
+     * @param config the configuration to check
+     * @throws PluginException for an unknown name or option
+     */
     public void check(PluginKind kind, String spec, PluginConfig config) {
         configure(kind, find(kind, spec), spec, config);
     }
@@ -200,11 +252,15 @@ public final class PluginRegistry {
         return (colon < 0 ? spec : spec.substring(0, colon)).trim().toLowerCase(Locale.ROOT);
     }
 
+    /**
+     * @param kind metric, selector or transform
+     * @return the names of that kind's providers, sorted
+     */
     public List<String> names(PluginKind kind) {
         return List.copyOf(providers.get(kind).keySet());
     }
 
-    /** Every provider of every kind, sorted by kind then name. */
+    /** @return every provider of every kind, sorted by kind then name */
     public List<PluginInfo> list() {
         List<PluginInfo> infos = new ArrayList<>();
         for (PluginKind kind : PluginKind.values()) {
