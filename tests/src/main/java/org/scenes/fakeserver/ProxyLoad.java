@@ -216,7 +216,7 @@ final class ProxyLoad {
                     + "sense_body per client and cycle); Java %s, %d CPUs, load average %.2f%n", clients, cycles,
                     seeBody.length + 12, System.getProperty("java.version"),
                     Runtime.getRuntime().availableProcessors(), loadBefore);
-            System.out.println("cycle  heap-after-gc-MB  rss-MB  datagrams/s");
+            System.out.println(" cycle  heap-after-gc-MB  heap-committed-MB  rss-MB  datagrams/s");
             sample(0, 0, 0);
             long lost = 0;
             long started = System.nanoTime();
@@ -293,8 +293,10 @@ final class ProxyLoad {
 
     private static void sample(int cycle, long datagrams, long nanos) {
         System.gc();
-        long heap = ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed();
-        System.out.printf(Locale.ROOT, "%5d  %16.1f  %6.1f  %s%n", cycle, heap / 1e6, residentMegabytes(),
+        var heap = ManagementFactory.getMemoryMXBean().getHeapMemoryUsage();
+        // committed: what the JVM holds for the heap, most of the resident set's changes
+        System.out.printf(Locale.ROOT, "%6d  %16.1f  %17.1f  %6.1f  %s%n", cycle, heap.getUsed() / 1e6,
+                heap.getCommitted() / 1e6, residentMegabytes(),
                 nanos == 0 ? "-" : String.format(Locale.ROOT, "%.0f", datagrams / (nanos / 1e9)));
     }
 

@@ -67,6 +67,17 @@ class InterruptedWriteTest {
                 .redirectOutput(workDir.resolve("child.out").toFile()).start();
     }
 
+    /** After {@code millis}, SIGKILL or SIGTERM; waits (bounded) until the child is gone. */
+    private static void stop(Process child, long millis, boolean kill) throws InterruptedException {
+        Thread.sleep(millis);
+        if (kill) {
+            child.destroyForcibly();
+        } else {
+            child.destroy();
+        }
+        assertTrue(child.waitFor(120, TimeUnit.SECONDS), "the child stops");
+    }
+
     private static int run(Path workDir, String... args) throws Exception {
         Process process = start(workDir, args);
         assertTrue(process.waitFor(600, TimeUnit.SECONDS), "the child finishes: " + Arrays.toString(args));
@@ -143,13 +154,7 @@ class InterruptedWriteTest {
                 assertEquals(0, run(work, writer.oldRun().toArray(String[]::new)), Files.readString(work.resolve("child.out")));
                 byte[] before = Files.readAllBytes(target);
                 Process child = start(work, writer.newRun().toArray(String[]::new));
-                Thread.sleep(runMillis / 4 + (long) (random.nextDouble() * runMillis));
-                if (kill) {
-                    child.destroyForcibly();
-                } else {
-                    child.destroy();
-                }
-                assertTrue(child.waitFor(120, TimeUnit.SECONDS), "the child stops");
+                stop(child, runMillis / 4 + (long) (random.nextDouble() * runMillis), kill);
                 String output = Files.readString(work.resolve("child.out"));
                 byte[] after = Files.readAllBytes(target);
                 if (!Arrays.equals(before, after)) {
@@ -210,13 +215,7 @@ class InterruptedWriteTest {
 
             Process child = start(work, "convert", bigLog.toString(), "-o", target.toString());
             // a random point of the run: JVM start, reading, writing, the rename, or after it
-            Thread.sleep(runMillis / 5 + (long) (random.nextDouble() * runMillis * 1.1));
-            if (kill) {
-                child.destroyForcibly();
-            } else {
-                child.destroy();
-            }
-            assertTrue(child.waitFor(120, TimeUnit.SECONDS), "the child stops");
+            stop(child, runMillis / 5 + (long) (random.nextDouble() * runMillis * 1.1), kill);
             String output = Files.readString(work.resolve("child.out"));
             byte[] after = Files.readAllBytes(target);
             if (!Arrays.equals(before, after)) {
