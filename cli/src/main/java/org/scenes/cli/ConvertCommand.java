@@ -110,7 +110,8 @@ final class ConvertCommand implements Callable<Integer> {
     int threads = Runtime.getRuntime().availableProcessors();
 
     @Option(names = "--commands-first", description = {"Game logs: within a step, a player's commands came"
-            + " before its see (as in the simulator's own games), not after it (default)."})
+            + " before its see. Default: before it only when the player already had a see taken after its last"
+            + " command, otherwise after it."})
     boolean commandsFirst;
 
     private int warningsShown;
