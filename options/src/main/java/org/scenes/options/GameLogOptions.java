@@ -25,7 +25,8 @@ public final class GameLogOptions {
     private long fadingSeed;
 
     @Option(names = "--commands-first", description = {"Game logs: within a step, a player's commands came"
-            + " before its see (as in the simulator's own games), not after it (default)."})
+            + " before its see. Default: before it only when the player already had a see taken after its last"
+            + " command, otherwise after it."})
     private boolean commandsFirst;
 
     /** The team chosen, null for both. */
