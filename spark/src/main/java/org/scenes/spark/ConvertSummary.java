@@ -51,37 +51,24 @@ final class ConvertSummary implements Serializable {
         this.failureCount = failureCount;
     }
 
-    /** One game's results. */
+    /** One game's results: each log's counts and lines, merged. */
     static ConvertSummary of(int game, List<GameConversion.LogResult> results) {
-        long lines = 0;
-        long bytes = 0;
-        long sees = 0;
-        long repeated = 0;
-        long scenes = 0;
-        long malformed = 0;
-        long written = 0;
-        EnumMap<DropReason, Long> dropped = new EnumMap<>(DropReason.class);
-        ArrayList<Line> warnings = new ArrayList<>();
-        ArrayList<Line> failures = new ArrayList<>();
+        ConvertSummary total = new ConvertSummary(0, 0, 0, 0, 0, 0, 0, new EnumMap<>(DropReason.class), 0,
+                new ArrayList<>(), 0, new ArrayList<>(), 0);
         for (GameConversion.LogResult log : results) {
-            lines += log.lines();
-            bytes += log.bytes();
-            sees += log.sees();
-            repeated += log.repeatedSees();
-            scenes += log.scenes();
-            malformed += log.malformed();
-            log.dropped().forEach((reason, count) -> dropped.merge(reason, count, Long::sum));
+            ArrayList<Line> warnings = new ArrayList<>();
             for (String warning : log.warnings()) {
-                warnings.add(new Line(game, warnings.size(), warning));
+                warnings.add(new Line(game, (int) total.warningCount + warnings.size(), warning));
             }
+            ArrayList<Line> failures = new ArrayList<>();
             if (log.error() != null) {
-                failures.add(new Line(game, failures.size(), log.error()));
-            } else {
-                written++;
+                failures.add(new Line(game, (int) total.failureCount, log.error()));
             }
+            total = merge(total, new ConvertSummary(1, log.lines(), log.bytes(), log.sees(), log.repeatedSees(),
+                    log.scenes(), log.malformed(), new EnumMap<>(log.dropped()), log.error() == null ? 1 : 0, warnings,
+                    warnings.size(), failures, failures.size()));
         }
-        return new ConvertSummary(results.size(), lines, bytes, sees, repeated, scenes, malformed, dropped, written,
-                first(warnings, List.of()), warnings.size(), first(failures, List.of()), failures.size());
+        return total;
     }
 
     /** Both summaries' totals; associative and commutative, as Spark's reduce needs. */

@@ -79,14 +79,8 @@ final class DistributedFolds implements AutoCloseable {
         if (tasks.isEmpty()) {
             return results;
         }
-        Broadcast<SceneData> scenes = data;
-        String jobId = job;
-        Folds.Protocol folds = protocol;
-        ArrayList<String> plugins = pluginPath;
-        List<FoldFigures> collected = spark.parallelize(tasks, tasks.size()).map(task -> {
-            Map<String, Double> figures = FoldValidation.figures(validate(task, scenes, jobId, folds, plugins));
-            return new FoldFigures(task.index(), figures.values().stream().mapToDouble(Double::doubleValue).toArray());
-        }).collect();
+        List<FoldFigures> collected = collect(tasks, (task, report) -> new FoldFigures(task.index(),
+                FoldValidation.figures(report).values().stream().mapToDouble(Double::doubleValue).toArray()));
         FoldFigures[] byTask = new FoldFigures[tasks.size()];
         for (FoldFigures f : collected) {
             byTask[f.task()] = f;
@@ -118,12 +112,7 @@ final class DistributedFolds implements AutoCloseable {
         if (tasks.isEmpty()) {
             return results;
         }
-        Broadcast<SceneData> scenes = data;
-        String jobId = job;
-        Folds.Protocol folds = protocol;
-        ArrayList<String> plugins = pluginPath;
-        List<Predictions> predictions = spark.parallelize(tasks, tasks.size())
-                .map(task -> Predictions.of(task.index(), validate(task, scenes, jobId, folds, plugins))).collect();
+        List<Predictions> predictions = collect(tasks, (task, report) -> Predictions.of(task.index(), report));
         Predictions[] byTask = new Predictions[tasks.size()];
         for (Predictions p : predictions) {
             byTask[p.task] = p;
@@ -141,6 +130,21 @@ final class DistributedFolds implements AutoCloseable {
             results.put(config, Folds.of(reports, protocol));
         }
         return results;
+    }
+
+    /** What a task sends back of its fold's report. */
+    private interface TaskResult<T> extends Serializable {
+        T of(Task task, ValidationReport report);
+    }
+
+    /** Runs the tasks as one job, each validating its fold and sending back {@code result} of the report. */
+    private <T> List<T> collect(List<Task> tasks, TaskResult<T> result) {
+        Broadcast<SceneData> scenes = data;
+        String jobId = job;
+        Folds.Protocol folds = protocol;
+        ArrayList<String> plugins = pluginPath;
+        return spark.parallelize(tasks, tasks.size())
+                .map(task -> result.of(task, validate(task, scenes, jobId, folds, plugins))).collect();
     }
 
     /** A task per (configuration, fold), configurations checked first. */
