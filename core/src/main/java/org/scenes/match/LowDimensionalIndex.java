@@ -68,6 +68,8 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     /** Coordinates compared by the pair cost (a, b and, with a row weight, the row) and floats of a slot's box. */
     private final int[] coordinate;
     private final int slotBox;
+    /** Where a slot's box starts within a node's floats; slots no stored scene holds have none (-1). */
+    private final int[] slotBoxAt;
     private final int boxStride;
     private final float[] nodeBox;
 
@@ -91,8 +93,14 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         this.indices = indices;
         this.coordinate = rowAt >= 0 ? new int[] {0, 1, rowAt} : new int[] {0, 1};
         this.slotBox = 2 * coordinate.length + 1;
-        this.boxStride = slotGroup.length * slotBox;
         int nodes = tree.from.size();
+        int anywhere = nodes == 0 ? 0 : tree.some.get(0);
+        this.slotBoxAt = new int[slotGroup.length];
+        int boxes = 0;
+        for (int s = 0; s < slotGroup.length; s++) {
+            slotBoxAt[s] = (anywhere & 1 << s) != 0 ? slotBox * boxes++ : -1;
+        }
+        this.boxStride = boxes * slotBox;
         this.nodeInts = new int[nodes * NODE_INTS];
         this.nodeBox = new float[nodes * boxStride];
         for (int node = 0; node < nodes; node++) {
@@ -106,7 +114,10 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             nodeInts[at + CLASSES] = tree.classes.get(node);
             nodeInts[at + INDEX] = tree.index.get(node);
             for (int s = 0; s < slotGroup.length; s++) {
-                int box = node * boxStride + s * slotBox;
+                if (slotBoxAt[s] < 0) {
+                    continue;
+                }
+                int box = node * boxStride + slotBoxAt[s];
                 for (int c = 0; c < coordinate.length; c++) {
                     nodeBox[box + 2 * c] = tree.min.get(node * width + s * stride + coordinate[c]);
                     nodeBox[box + 2 * c + 1] = tree.max.get(node * width + s * stride + coordinate[c]);
@@ -290,7 +301,8 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             }
         }
         Tree tree = new Tree();
-        buckets(tree, order, bucketStarts.stream().mapToInt(Integer::intValue).toArray(), 0, bucketStarts.size() - 1);
+        int root = node(tree, order, 0, points);
+        buckets(tree, order, bucketStarts.stream().mapToInt(Integer::intValue).toArray(), 0, bucketStarts.size() - 1, root);
         // points in tree order, with their indices
         float[] sortedValues = new float[values.length];
         int[] sortedMask = new int[points];
@@ -314,13 +326,14 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     }
 
     /**
-     * A node over buckets [first, last) (bucket b being points starts[b] to starts[b + 1]): one
-     * bucket is split by its floats; several are halved at the bucket boundary nearest the middle
-     * point, so buckets of every size sit under one root.
+     * The children of a node over buckets [first, last) (bucket b being points starts[b] to
+     * starts[b + 1]): one bucket is split by its floats; several are halved at the bucket boundary
+     * nearest the middle point, so buckets of every size sit under one root.
      */
-    private int buckets(Tree tree, int[] order, int[] starts, int first, int last) {
+    private void buckets(Tree tree, int[] order, int[] starts, int first, int last, int node) {
         if (last - first == 1) {
-            return split(tree, order, starts[first], starts[last]);
+            split(tree, order, node);
+            return;
         }
         int from = starts[first];
         int to = starts[last];
@@ -330,12 +343,21 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
                 middle = b;
             }
         }
-        int node = node(tree, order, from, to);
-        int left = buckets(tree, order, starts, first, middle);
-        int right = buckets(tree, order, starts, middle, last);
+        int left = children(tree, order, node, starts[middle]);
+        buckets(tree, order, starts, first, middle, left);
+        buckets(tree, order, starts, middle, last, left + 1);
+    }
+
+    /**
+     * Two children of the node, split at point {@code middle}, made one after the other: a query
+     * computes both bounds together, from one run of memory. Returns the left one.
+     */
+    private int children(Tree tree, int[] order, int node, int middle) {
+        int left = node(tree, order, tree.from.get(node), middle);
+        int right = node(tree, order, middle, tree.to.get(node));
         tree.left.set(node, left);
         tree.right.set(node, right);
-        return node;
+        return left;
     }
 
     /**
@@ -392,11 +414,12 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         return node;
     }
 
-    /** A node over order[from, to) within one bucket and, above a leaf's size, children split at the median of the widest weighted float. */
-    private int split(Tree tree, int[] order, int from, int to) {
-        int node = node(tree, order, from, to);
+    /** Below a node within one bucket and above a leaf's size, children split at the median of the widest weighted float. */
+    private void split(Tree tree, int[] order, int node) {
+        int from = tree.from.get(node);
+        int to = tree.to.get(node);
         if (to - from <= LEAF) {
-            return node;
+            return;
         }
         float[] low = new float[width];
         float[] high = new float[width];
@@ -418,7 +441,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             }
         }
         if (widest < 0) {
-            return node; // all points alike in every compared float (cannot happen for distinct points)
+            return; // all points alike in every compared float (cannot happen for distinct points)
         }
         int middle = (from + to) >>> 1;
         // sorted as primitive keys: the float made order-preserving in the high half, the point in the low
@@ -432,11 +455,9 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         for (int r = from; r < to; r++) {
             order[r] = (int) keys[r - from];
         }
-        int left = split(tree, order, from, middle);
-        int right = split(tree, order, middle, to);
-        tree.left.set(node, left);
-        tree.right.set(node, right);
-        return node;
+        int left = children(tree, order, node, middle);
+        split(tree, order, left);
+        split(tree, order, left + 1);
     }
 
     @Override
@@ -494,9 +515,9 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         double lower = memoryAction > 0 && (nodeInts[at + CLASSES] & 1 << (qClass + 1)) == 0 ? memoryAction : 0;
         int some = nodeInts[at + SOME];
         int all = nodeInts[at + ALL];
-        int box = node * boxStride;
         int leastAt = 2 * coordinate.length;
-        for (int s = 0; s < slots; s++, box += slotBox) {
+        for (int s = 0; s < slots; s++) {
+            int box = node * boxStride + slotBoxAt[s]; // read only where some point holds the slot
             boolean held = (some & 1 << s) != 0;
             boolean lacked = (all & 1 << s) == 0;
             double gap;
