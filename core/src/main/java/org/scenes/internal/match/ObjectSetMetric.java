@@ -281,13 +281,18 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     private record Placed(double distance, float a, float b, float penalty, float row) {
     }
 
+    private static final Comparator<Placed> NEAREST_FIRST = Comparator.comparingDouble(Placed::distance);
+    /** The encoding of an empty group, shared (encodings are never written to). */
+    private static final float[] NO_OBJECTS = new float[0];
+
     Encoded encode(Scene scene, boolean withMemory) {
         if (scene == null) {
             return new Encoded(new float[GROUPS][0], null, NO_ACTIONS);
         }
+        // lists only for weighted groups: the others stay empty (a query is encoded on every decision)
         List<List<Placed>> groups = new ArrayList<>(GROUPS);
         for (int group = 0; group < GROUPS; group++) {
-            groups.add(new ArrayList<>());
+            groups.add(groupWeight[group] > 0 ? new ArrayList<>() : null);
         }
         for (SeenObject object : scene.objects()) {
             int group = groupOf(object);
@@ -301,7 +306,11 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         float[][] packed = new float[GROUPS][];
         for (int group = 0; group < GROUPS; group++) {
             List<Placed> objects = groups.get(group);
-            objects.sort(Comparator.comparingDouble(Placed::distance));
+            if (objects == null || objects.isEmpty()) {
+                packed[group] = NO_OBJECTS;
+                continue;
+            }
+            objects.sort(NEAREST_FIRST);
             int kept = settings.nearestPlayers() && playerGroup(group) ? Math.min(1, objects.size()) : objects.size();
             float[] values = new float[kept * stride];
             for (int i = 0; i < kept; i++) {
