@@ -23,7 +23,14 @@ public final class Recognizer {
     private final ThreadLocal<SceneMetric> metrics;
     private final Object[] encoded;
     private final PackedMetric.PackedScenes packed;
-    /** decoded scenes for metrics with neither fast path, which compare whole scenes */
+    /**
+     * Knowledge bases of at most this many scenes are kept decoded (a few megabytes), so a decision
+     * does not decode its neighbours: on a condensed knowledge base that decoding would cost more
+     * than the search itself (ball-goal on 137 scenes).
+     */
+    static final int KEEP_DECODED = 4096;
+
+    /** decoded scenes for metrics with neither fast path, which compare whole scenes, and for small knowledge bases */
     private final List<Scene> decoded;
     /** The knowledge base split by see age, or null when all its scenes have one age. */
     private final java.util.NavigableMap<Integer, AgePartition> byAge;
@@ -73,7 +80,8 @@ public final class Recognizer {
         } else {
             encoded = null;
         }
-        decoded = packed == null && encoded == null ? List.copyOf(knowledge.scenes()) : null;
+        decoded = packed == null && encoded == null || knowledge.size() <= KEEP_DECODED
+                ? List.copyOf(knowledge.scenes()) : null;
     }
 
     /** The scenes of one see age, searched on their own, and where they are in the whole knowledge base. */
@@ -173,7 +181,7 @@ public final class Recognizer {
         List<Neighbour> result = new ArrayList<>(top.size());
         for (int slot : top.sortedSlots()) {
             int index = top.index(slot);
-            result.add(new Neighbour(knowledge.scene(index), index, top.distance(slot)));
+            result.add(new Neighbour(decoded != null ? decoded.get(index) : knowledge.scene(index), index, top.distance(slot)));
         }
         return result;
     }
