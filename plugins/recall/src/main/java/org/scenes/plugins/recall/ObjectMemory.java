@@ -62,7 +62,7 @@ final class ObjectMemory implements SceneTransform {
         }
         checkGrid(scene);
         if (last != null) {
-            move(scene.cycle() - last.cycle(), last.actions());
+            move(scene.cycle() - last.cycle(), last.actions(), observedTurn(last, scene));
         }
         Set<String> seen = new HashSet<>();
         for (SeenObject object : scene.objects()) {
@@ -105,8 +105,47 @@ final class ObjectMemory implements SceneTransform {
                 || (entry.direction() >= grid.minAngle() && entry.direction() <= grid.maxAngle());
     }
 
-    /** Moves every remembered object over {@code cycles} cycles, then by the player's own commands. */
-    private void move(int cycles, List<Action> commands) {
+    /**
+     * How far the view turned between two scenes as the landmarks seen in both show it: the median
+     * of their direction changes, reversed; NaN when they share none. A command sent after one see
+     * takes effect by the next see only about half the time in the recorded games (the client sends
+     * it at no fixed point of the cycle), so the landmarks say better than the command whether the
+     * turn has happened yet.
+     */
+    static double observedTurn(Scene before, Scene after) {
+        Map<String, Double> directions = new java.util.HashMap<>();
+        for (SeenObject object : before.objects()) {
+            if (landmark(object)) {
+                directions.put(object.identity(), object.direction());
+            }
+        }
+        List<Double> turns = new ArrayList<>();
+        for (SeenObject object : after.objects()) {
+            Double earlier = landmark(object) ? directions.get(object.identity()) : null;
+            if (earlier != null) {
+                turns.add(normalize(earlier - object.direction()));
+            }
+        }
+        if (turns.isEmpty()) {
+            return Double.NaN;
+        }
+        turns.sort(null);
+        int middle = turns.size() / 2;
+        return turns.size() % 2 == 1 ? turns.get(middle) : (turns.get(middle - 1) + turns.get(middle)) / 2;
+    }
+
+    /** Flags and goals stay put, so a change of their direction is the player's own turn (and a little parallax). */
+    private static boolean landmark(SeenObject object) {
+        return (object.kind() == org.scenes.scene.ObjectKind.FLAG || object.kind() == org.scenes.scene.ObjectKind.GOAL)
+                && !object.remembered() && identityOf(object) != null;
+    }
+
+    /**
+     * Moves every remembered object over {@code cycles} cycles, then by the player's own motion:
+     * the view's turn as the landmarks show it ({@code observedTurn}), or without landmarks in both
+     * scenes the turns commanded; the dash commanded.
+     */
+    private void move(int cycles, List<Action> commands, double observedTurn) {
         double turn = 0;
         double ahead = 0;
         for (Action command : commands) {
@@ -115,6 +154,9 @@ final class ObjectMemory implements SceneTransform {
             } else if (command.type() == ActionType.DASH && Double.isNaN(command.second())) {
                 ahead += DASH_RATE * finite(command.first());
             }
+        }
+        if (!Double.isNaN(observedTurn)) {
+            turn = observedTurn;
         }
         for (Map.Entry<String, Remembered> entry : memory.entrySet()) {
             Remembered old = entry.getValue();
