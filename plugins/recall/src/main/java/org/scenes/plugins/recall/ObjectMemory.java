@@ -21,11 +21,12 @@ import org.scenes.scene.SeenObject;
  * <ol>
  * <li>by its own last reported changes, {@code distChange} and {@code dirChange} per cycle
  *     elapsed (objects seen without changes stay put);</li>
- * <li>by the player's own motion, from the commands of the scene before: a {@code turn} of
- *     moment m turns the body (and so the view) by m, a {@code turn_neck} turns the view by its
- *     angle, a {@code dash} of power p moves the player {@value #DASH_RATE} p metres ahead.
- *     Scenes carry no {@code sense_body}, so the turn is taken at rest (the server divides the
- *     moment by 1 + inertia x speed) and the dash without effort or stamina.</li>
+ * <li>by the player's own motion: the view's turn as the flags and goals seen in both scenes
+ *     show it ({@link #observedTurn}); only without such landmarks from the commands of the
+ *     scene before (a {@code turn} of moment m turns the body, and so the view, by m, a
+ *     {@code turn_neck} the view by its angle, taken at rest: scenes carry no {@code sense_body});
+ *     a {@code dash} of power p moves the player {@value #DASH_RATE} p metres ahead, without
+ *     effort or stamina.</li>
  * </ol>
  * A remembered object that the move puts inside the view cone (the grid's angle range) or
  * within the {@value #FEEL_DISTANCE} m the server senses around the player, but that the scene
