@@ -29,7 +29,16 @@ public final class Recognizer {
     private final ThreadLocal<SceneMetric> metrics;
     private final Object[] encoded;
     private final PackedMetric.PackedScenes packed;
-    /** decoded scenes for metrics with neither fast path, which compare whole scenes */
+    /**
+     * Knowledge bases of at most this many scenes are kept decoded (a few megabytes), so a decision
+     * does not decode its neighbours: on a condensed knowledge base that decoding would cost more
+     * than the search itself (ball-goal on 137 scenes).
+     */
+    static final int KEEP_DECODED = 4096;
+    /** The index of the entries that bound a search from the start; no stored scene has it. */
+    private static final int PLACEHOLDER = Integer.MAX_VALUE;
+
+    /** decoded scenes for metrics with neither fast path, which compare whole scenes, and for small knowledge bases */
     private final List<Scene> decoded;
     /** The knowledge base split by see age, or null when all its scenes have one age. */
     private final java.util.NavigableMap<Integer, AgePartition> byAge;
@@ -79,7 +88,8 @@ public final class Recognizer {
         } else {
             encoded = null;
         }
-        decoded = packed == null && encoded == null ? List.copyOf(knowledge.scenes()) : null;
+        decoded = packed == null && encoded == null || knowledge.size() <= KEEP_DECODED
+                ? List.copyOf(knowledge.scenes()) : null;
     }
 
     /** The scenes of one see age, searched on their own, and where they are in the whole knowledge base. */
@@ -136,11 +146,14 @@ public final class Recognizer {
      * returned as images, with their stored index); on equal distance the query's own come first.
      */
     public List<Neighbour> nearest(Scene query) {
-        List<Neighbour> direct = nearestAsIs(query);
+        List<Neighbour> direct = nearestAsIs(query, Double.POSITIVE_INFINITY);
         if (queryImage == null) {
             return direct;
         }
-        List<Neighbour> mirrored = nearestAsIs(queryImage.apply(query));
+        // only image neighbours nearer than the query's own k-th can enter, so the second search starts bounded by it
+        double bound = direct.size() == Math.min(k, knowledge.size()) ? direct.get(direct.size() - 1).distance()
+                : Double.POSITIVE_INFINITY;
+        List<Neighbour> mirrored = nearestAsIs(queryImage.apply(query), bound);
         List<Neighbour> merged = new ArrayList<>(direct.size());
         int d = 0;
         int m = 0;
@@ -156,11 +169,17 @@ public final class Recognizer {
         return merged;
     }
 
-    private List<Neighbour> nearestAsIs(Scene query) {
+    /** The k nearest of the query as it is; with a finite {@code bound}, only those below or at it. */
+    private List<Neighbour> nearestAsIs(Scene query, double bound) {
         if (byAge != null) {
-            return nearestOfAge(query);
+            return nearestOfAge(query, bound);
         }
         TopK top = new TopK(Math.min(k, knowledge.size()));
+        if (bound < Double.POSITIVE_INFINITY) { // false for NaN
+            for (int i = 0; i < top.capacity(); i++) {
+                top.offer(bound, PLACEHOLDER); // any scene at the bound has a lower index and still enters
+            }
+        }
         SceneMetric metric = metrics.get();
         if (packed != null) {
             packed.scan(query, top);
@@ -176,17 +195,21 @@ public final class Recognizer {
                 top.offer(metric.distance(query, decoded.get(i)), i);
             }
         }
-        return top.neighbours(knowledge::scene);
+        // placeholders hold the bound's slots until scenes below it arrive: they are no neighbours
+        List<Neighbour> result = top.neighbours(i -> i == PLACEHOLDER ? null
+                : decoded != null ? decoded.get(i) : knowledge.scene(i));
+        result.removeIf(found -> found.index() == PLACEHOLDER);
+        return result;
     }
 
     /** Searches the partition of the query's see age, or of the nearest age stored (the lower on a tie). */
-    private List<Neighbour> nearestOfAge(Scene query) {
+    private List<Neighbour> nearestOfAge(Scene query, double bound) {
         int age = query.seeAge();
         Integer below = byAge.floorKey(age);
         Integer above = byAge.ceilingKey(age);
         int chosen = below == null ? above : above == null || age - below <= above - age ? below : above;
         AgePartition partition = byAge.get(chosen);
-        List<Neighbour> found = partition.recognizer().nearest(query);
+        List<Neighbour> found = partition.recognizer().nearestAsIs(query, bound);
         List<Neighbour> result = new ArrayList<>(found.size());
         for (Neighbour neighbour : found) {
             result.add(new Neighbour(neighbour.scene(), partition.indices()[neighbour.index()], neighbour.distance()));

@@ -20,6 +20,9 @@ import org.scenes.api.SeenObject;
  * those of the mirrored directions in the default grid (other grids are refused).
  */
 public final class Mirror {
+    /** Mirrored flag and line names, made once each: mirror:match mirrors every query and what it finds. */
+    private static final java.util.Map<String, String> SWAPPED = new java.util.concurrent.ConcurrentHashMap<>();
+
     private Mirror() {
     }
 
@@ -35,7 +38,7 @@ public final class Mirror {
 
     static SeenObject mirror(SeenObject object) {
         String name = object.kind() == ObjectKind.FLAG || object.kind() == ObjectKind.LINE
-                ? swapTopAndBottom(object.name()) : object.name();
+                ? SWAPPED.computeIfAbsent(object.name(), Mirror::swapTopAndBottom) : object.name();
         return new SeenObject(object.kind(), name, object.team(), object.uniformNumber(), object.goalie(),
                 object.relation(), object.distance(), -object.direction(), object.distanceChange(),
                 -object.directionChange(), -object.bodyFacing(), -object.headFacing(), -object.pointingDirection(),

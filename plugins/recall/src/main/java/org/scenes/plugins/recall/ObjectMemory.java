@@ -21,11 +21,12 @@ import org.scenes.api.SeenObject;
  * <ol>
  * <li>by its own last reported changes, {@code distChange} and {@code dirChange} per cycle
  *     elapsed (objects seen without changes stay put);</li>
- * <li>by the player's own motion, from the commands of the scene before: a {@code turn} of
- *     moment m turns the body (and so the view) by m, a {@code turn_neck} turns the view by its
- *     angle, a {@code dash} of power p moves the player {@value #DASH_RATE} p metres ahead.
- *     Scenes carry no {@code sense_body}, so the turn is taken at rest (the server divides the
- *     moment by 1 + inertia x speed) and the dash without effort or stamina.</li>
+ * <li>by the player's own motion: the view's turn as the flags and goals seen in both scenes
+ *     show it ({@link #observedTurn}); only without such landmarks from the commands of the
+ *     scene before (a {@code turn} of moment m turns the body, and so the view, by m, a
+ *     {@code turn_neck} the view by its angle, taken at rest: scenes carry no {@code sense_body});
+ *     a {@code dash} of power p moves the player {@value #DASH_RATE} p metres ahead, without
+ *     effort or stamina.</li>
  * </ol>
  * A remembered object that the move puts inside the view cone (the grid's angle range) or
  * within the {@value #FEEL_DISTANCE} m the server senses around the player, but that the scene
@@ -62,7 +63,7 @@ final class ObjectMemory implements SceneTransform {
         }
         checkGrid(scene);
         if (last != null) {
-            move(scene.cycle() - last.cycle(), last.actions());
+            move(scene.cycle() - last.cycle(), last.actions(), observedTurn(last, scene));
         }
         Set<String> seen = new HashSet<>();
         for (SeenObject object : scene.objects()) {
@@ -105,8 +106,47 @@ final class ObjectMemory implements SceneTransform {
                 || (entry.direction() >= grid.minAngle() && entry.direction() <= grid.maxAngle());
     }
 
-    /** Moves every remembered object over {@code cycles} cycles, then by the player's own commands. */
-    private void move(int cycles, List<Action> commands) {
+    /**
+     * How far the view turned between two scenes as the landmarks seen in both show it: the median
+     * of their direction changes, reversed; NaN when they share none. A command sent after one see
+     * takes effect by the next see only about half the time in the recorded games (the client sends
+     * it at no fixed point of the cycle), so the landmarks say better than the command whether the
+     * turn has happened yet.
+     */
+    static double observedTurn(Scene before, Scene after) {
+        Map<String, Double> directions = new java.util.HashMap<>();
+        for (SeenObject object : before.objects()) {
+            if (landmark(object)) {
+                directions.put(object.identity(), object.direction());
+            }
+        }
+        List<Double> turns = new ArrayList<>();
+        for (SeenObject object : after.objects()) {
+            Double earlier = landmark(object) ? directions.get(object.identity()) : null;
+            if (earlier != null) {
+                turns.add(normalize(earlier - object.direction()));
+            }
+        }
+        if (turns.isEmpty()) {
+            return Double.NaN;
+        }
+        turns.sort(null);
+        int middle = turns.size() / 2;
+        return turns.size() % 2 == 1 ? turns.get(middle) : (turns.get(middle - 1) + turns.get(middle)) / 2;
+    }
+
+    /** Flags and goals stay put, so a change of their direction is the player's own turn (and a little parallax). */
+    private static boolean landmark(SeenObject object) {
+        return (object.kind() == org.scenes.api.ObjectKind.FLAG || object.kind() == org.scenes.api.ObjectKind.GOAL)
+                && !object.remembered() && identityOf(object) != null;
+    }
+
+    /**
+     * Moves every remembered object over {@code cycles} cycles, then by the player's own motion:
+     * the view's turn as the landmarks show it ({@code observedTurn}), or without landmarks in both
+     * scenes the turns commanded; the dash commanded.
+     */
+    private void move(int cycles, List<Action> commands, double observedTurn) {
         double turn = 0;
         double ahead = 0;
         for (Action command : commands) {
@@ -115,6 +155,9 @@ final class ObjectMemory implements SceneTransform {
             } else if (command.type() == ActionType.DASH && Double.isNaN(command.second())) {
                 ahead += DASH_RATE * finite(command.first());
             }
+        }
+        if (!Double.isNaN(observedTurn)) {
+            turn = observedTurn;
         }
         for (Map.Entry<String, Remembered> entry : memory.entrySet()) {
             Remembered old = entry.getValue();

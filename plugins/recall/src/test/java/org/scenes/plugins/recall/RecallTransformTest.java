@@ -27,7 +27,12 @@ class RecallTransformTest {
                 dirChange, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, GRID.cell(distance, direction));
     }
 
-    private static final SeenObject FLAG = SeenObject.simple(ObjectKind.FLAG, "f c", Relation.NONE, 30, 0, GRID);
+    private static final SeenObject FLAG = flag(0);
+
+    /** The centre flag, 30 m away: as the player turns by m, its direction changes by -m. */
+    private static SeenObject flag(double direction) {
+        return SeenObject.simple(ObjectKind.FLAG, "f c", Relation.NONE, 30, direction, GRID);
+    }
 
     private static Scene scene(int cycle, Action action, SeenObject... objects) {
         return new Scene(cycle, Observer.UNKNOWN, List.of(objects), List.of(action));
@@ -48,21 +53,36 @@ class RecallTransformTest {
         assertEquals(2, seen.objects().size(), "nothing to remember yet");
         assertFalse(rememberedBall(seen).remembered());
         // one cycle later: +2 of its own, +10 because the player turned 10 to the left
-        Scene first = recall.apply(scene(11, Action.turn(-10), FLAG));
+        Scene first = recall.apply(scene(11, Action.turn(-10), flag(10)));
         SeenObject ball = rememberedBall(first);
         assertTrue(ball.remembered());
         assertEquals(52, ball.direction(), 1e-9);
         assertEquals(10, ball.distance(), 1e-9);
         assertEquals(GRID.cell(10, 52), ball.cell());
         assertEquals(1 - 2 / 5.0, ball.confidence(), 1e-12);
-        Scene second = recall.apply(scene(12, Action.dash(100), FLAG));
+        Scene second = recall.apply(scene(12, Action.dash(100), flag(20)));
         assertEquals(64, rememberedBall(second).direction(), 1e-9);
         assertTrue(rememberedBall(second).confidence() < ball.confidence(), "confidence falls with age");
         // the dash moves the player 0.6 m ahead: the ball, to its side, ends a little farther back
-        SeenObject third = rememberedBall(recall.apply(scene(13, Action.turn(0), FLAG)));
+        SeenObject third = rememberedBall(recall.apply(scene(13, Action.turn(0), flag(20))));
         assertTrue(third.direction() > 66, "direction " + third.direction());
         assertEquals(1 / 5.0, third.confidence(), 1e-12);
-        assertEquals(1, recall.apply(scene(14, Action.turn(0), FLAG)).objects().size(), "past the horizon");
+        assertEquals(1, recall.apply(scene(14, Action.turn(0), flag(20))).objects().size(), "past the horizon");
+    }
+
+    @Test
+    void theLandmarksSayWhetherTheCommandedTurnHasHappenedYet() {
+        SceneTransform recall = recall("recall:5");
+        recall.apply(scene(1, Action.turn(-10), ball(10, 50, 0, 0), flag(0)));
+        // the command has not taken effect by the next see: the flag has not moved, nor has the ball
+        assertEquals(50, rememberedBall(recall.apply(scene(2, Action.turn(0), flag(0)))).direction(), 1e-9);
+        // it has by the one after
+        assertEquals(60, rememberedBall(recall.apply(scene(3, Action.turn(-20), flag(10)))).direction(), 1e-9);
+        // no landmark in both scenes: the commanded turn is all there is
+        assertEquals(80, rememberedBall(recall.apply(scene(4, Action.turn(0)))).direction(), 1e-9);
+        assertEquals(20, ObjectMemory.observedTurn(scene(5, Action.turn(0), flag(-5), SeenObject.simple(ObjectKind.GOAL, "g r",
+                Relation.NONE, 50, 30, GRID)), scene(6, Action.turn(0), flag(-25), SeenObject.simple(ObjectKind.GOAL, "g r",
+                Relation.NONE, 50, 10, GRID))), 1e-9);
     }
 
     @Test
