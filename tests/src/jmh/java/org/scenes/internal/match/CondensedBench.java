@@ -20,7 +20,9 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import org.scenes.api.Grid;
+import org.scenes.api.Neighbour;
 import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.plugins.coverage.Condenser;
 
