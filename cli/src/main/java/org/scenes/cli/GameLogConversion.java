@@ -27,7 +27,13 @@ final class GameLogConversion {
 
     /** The server's logs among the inputs, null when they are players' logs. */
     static GameLogConversion of(List<Path> inputs) throws IOException {
-        GameLogs logs = GameLogs.among(inputs);
+        GameLogs logs;
+        try {
+            logs = GameLogs.among(inputs);
+        } catch (IllegalArgumentException e) {
+            // the inputs named on the command line do not make one game (a game log and its command log)
+            throw new UsageException(e.getMessage());
+        }
         return logs == null ? null : new GameLogConversion(logs);
     }
 

@@ -5,6 +5,7 @@ import org.scenes.api.Grid;
 import org.scenes.api.PluginException;
 import org.scenes.api.PluginRegistry;
 import org.scenes.internal.scene.SceneFileException;
+import org.scenes.options.OptionException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.IVersionProvider;
 import picocli.CommandLine.Mixin;
@@ -60,7 +61,9 @@ final class ScenesCommand implements Runnable {
             e.printStackTrace(err);
         }
         err.flush();
-        if (e instanceof UsageException || e instanceof PluginException || e instanceof IllegalArgumentException) {
+        // usage is typed (a bad option is a UsageException or the options module's OptionException); any
+        // other failure, an IllegalArgumentException from core about the data included, is failed work
+        if (e instanceof UsageException || e instanceof OptionException || e instanceof PluginException) {
             return ExitCodes.USAGE;
         }
         return ExitCodes.FAILURE;

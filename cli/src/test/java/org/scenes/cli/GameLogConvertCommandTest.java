@@ -101,4 +101,16 @@ class GameLogConvertCommandTest {
         assertEquals(2, run("convert", rcg, "--out-dir", dir.resolve("s")));
         assertTrue(err.contains("no command log beside"), err);
     }
+
+    @Test
+    void aBadLineOfTheGameLogIsFailedWorkNamingFileAndLine() throws IOException {
+        Path rcg = game();
+        List<String> lines = new ArrayList<>(Files.readAllLines(rcg));
+        lines.add(10, "(frobnicate 1)");
+        Files.write(rcg, lines);
+        // a GameLogException, as a LogException of a player's log: the data is at fault, exit 1
+        assertEquals(1, run("convert", rcg, "--out-dir", dir.resolve("s")));
+        assertTrue(err.contains(rcg + ":11: unknown line '(frobnicate 1)'"), err);
+        assertEquals(1, err.strip().lines().count(), err);
+    }
 }

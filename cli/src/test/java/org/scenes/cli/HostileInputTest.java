@@ -98,6 +98,25 @@ class HostileInputTest {
     }
 
     @Test
+    void aSceneTooLargeToLearnIsFailedWorkNotAUsageError() throws Exception {
+        // core says so with an IllegalArgumentException: the data is at fault, so exit 1, not 2
+        Observer observer = new Observer("T", Side.LEFT, 1);
+        List<SeenObject> crowd = new ArrayList<>();
+        for (int i = 0; i < 100_000; i++) {
+            crowd.add(SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, 1 + i % 50, i % 90, Grid.DEFAULT));
+        }
+        Path huge = dir.resolve("huge.json");
+        try (SceneFileWriter writer = SceneFileWriter.create(huge,
+                SceneFileHeader.of(Grid.DEFAULT, new SceneSource("huge", observer)))) {
+            writer.write(new Scene(0, observer, crowd, List.of(Action.dash(50))));
+            writer.commit();
+        }
+        Path test = scenes("test", 2, 30);
+        assertEquals(ExitCodes.FAILURE, cli.run("validate", "--train", huge, "--test", test, "--metric", "cell"));
+        oneLine("scene 0 is too large to store");
+    }
+
+    @Test
     void configurationKeysThatAreUnknownOrOfTheWrongTypeAreErrorsNamingKeyAndFile() throws Exception {
         Path train = scenes("train", 1, 50);
         Path many = text("many.json", "{\"k\": \"many\"}");

@@ -19,7 +19,9 @@ public enum ActionLabel {
     /** Body and neck both right. */
     BOTH("bothAccuracy");
 
+    /** The class of a scene without the action looked at. */
     public static final String NONE = "none";
+    /** The class of a command that changes nothing, e.g. {@code (turn 0)}. */
     public static final String NO_OP = "noop";
 
     private final String figure;
@@ -28,12 +30,21 @@ public enum ActionLabel {
         this.figure = figure;
     }
 
-    /** The name of this label's accuracy in reports and JSON: {@code accuracy}, {@code bodyAccuracy}, ... */
+    /**
+     * The name of this label's accuracy in reports and JSON: {@code accuracy}, {@code bodyAccuracy}, ...
+     *
+     * @return the figure's name
+     */
     public String figure() {
         return figure;
     }
 
-    /** The class of a scene's (or a prediction's) actions, primary first. */
+    /**
+     * The class of a scene's (or a prediction's) actions, primary first.
+     *
+     * @param actions the actions, primary first
+     * @return a type key, {@value #NONE}, {@value #NO_OP}, or body and neck joined by {@code +}
+     */
     public String of(List<Action> actions) {
         return switch (this) {
             case PRIMARY -> actions.isEmpty() ? NONE : actions.get(0).type().key();
@@ -43,7 +54,12 @@ public enum ActionLabel {
         };
     }
 
-    /** The first world-changing action, or null. */
+    /**
+     * The first world-changing action, or null.
+     *
+     * @param actions the actions, primary first
+     * @return the body command or null
+     */
     public static Action bodyAction(List<Action> actions) {
         for (Action action : actions) {
             if (action.type().worldChanging()) {
@@ -53,7 +69,12 @@ public enum ActionLabel {
         return null;
     }
 
-    /** The first turn_neck, or null. */
+    /**
+     * The first turn_neck, or null.
+     *
+     * @param actions the actions, primary first
+     * @return the neck command or null
+     */
     public static Action neckAction(List<Action> actions) {
         for (Action action : actions) {
             if (action.type() == ActionType.TURN_NECK) {
@@ -63,7 +84,12 @@ public enum ActionLabel {
         return null;
     }
 
-    /** Whether the server, executing this command, changes nothing: a turn, dash, kick or turn_neck of 0. */
+    /**
+     * Whether the server, executing this command, changes nothing: a turn, dash, kick or turn_neck of 0.
+     *
+     * @param action the command
+     * @return true when its first parameter is 0 for one of those types
+     */
     public static boolean changesNothing(Action action) {
         return switch (action.type()) {
             case TURN, DASH, KICK, TURN_NECK -> action.first() == 0;

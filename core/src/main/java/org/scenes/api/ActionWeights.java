@@ -6,8 +6,14 @@ package org.scenes.api;
  * {@code kick=2,turn_neck=0}, where types not named keep weight 1.
  */
 public record ActionWeights(double[] weights) {
+    /** Every action type weighs 1. */
     public static final ActionWeights DEFAULT = uniform();
 
+    /**
+     * Copies the weights and checks them: one per action type, finite and not negative.
+     *
+     * @param weights one weight per {@link ActionType}, in its order
+     */
     public ActionWeights {
         if (weights.length != ActionType.values().length) {
             throw new IllegalArgumentException("action weights need " + ActionType.values().length + " values");
@@ -26,10 +32,22 @@ public record ActionWeights(double[] weights) {
         return new ActionWeights(weights);
     }
 
+    /**
+     * The weight of one type.
+     *
+     * @param type the action type
+     * @return its weight
+     */
     public double weight(ActionType type) {
         return weights[type.ordinal()];
     }
 
+    /**
+     * Reads the written form, positional or by name.
+     *
+     * @param text e.g. {@code 1/1/2/1/1/1/1} or {@code kick=2,turn_neck=0}
+     * @return the weights; a malformed text is an {@code IllegalArgumentException}
+     */
     public static ActionWeights parse(String text) {
         String[] names = new String[ActionType.values().length];
         for (ActionType type : ActionType.values()) {
@@ -39,11 +57,17 @@ public record ActionWeights(double[] weights) {
         return new ActionWeights(parsed);
     }
 
+    /** @return a copy of the weights, one per action type in its order */
     @Override
     public double[] weights() {
         return weights.clone();
     }
 
+    /**
+     * The positional form, {@code 1/1/2/1/1/1/1/1}.
+     *
+     * @return the weights, slash-separated
+     */
     public String format() {
         return Weights.format(weights);
     }

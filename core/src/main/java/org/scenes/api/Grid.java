@@ -22,6 +22,14 @@ public final class Grid {
     /** Every cell, row after row, made once (decoding a knowledge base asks for millions); null for huge grids. */
     private final Cell[] cells;
 
+    /**
+     * A grid over any angle range.
+     *
+     * @param columns how many angle slices, at least 1
+     * @param minAngle the left edge of the range, degrees relative to the head
+     * @param maxAngle the right edge, degrees, above {@code minAngle}
+     * @param bounds the distances in metres separating the rows, positive and ascending
+     */
     public Grid(int columns, double minAngle, double maxAngle, double[] bounds) {
         if (columns < 1) {
             throw new IllegalArgumentException("a grid needs at least one column, not " + columns);
@@ -47,31 +55,49 @@ public final class Grid {
         }
     }
 
-    /** A grid with {@code columns} columns and {@code bounds.length + 1} rows over the default angle range. */
+    /**
+     * A grid with {@code columns} columns and {@code bounds.length + 1} rows over the default angle range.
+     *
+     * @param columns how many angle slices over [-45, 45] degrees
+     * @param bounds the distances in metres separating the rows
+     * @return the grid
+     */
     public static Grid of(int columns, double... bounds) {
         return new Grid(columns, DEFAULT.minAngle, DEFAULT.maxAngle, bounds);
     }
 
+    /** @return how many angle slices (columns) */
     public int columns() {
         return columns;
     }
 
+    /** @return how many distance rings (rows): one more than the bounds */
     public int rows() {
         return bounds.length + 1;
     }
 
+    /** @return the left edge of the angle range, in degrees */
     public double minAngle() {
         return minAngle;
     }
 
+    /** @return the right edge of the angle range, in degrees */
     public double maxAngle() {
         return maxAngle;
     }
 
+    /** @return a copy of the distances in metres separating the rows, ascending */
     public double[] bounds() {
         return bounds.clone();
     }
 
+    /**
+     * Column of a direction; directions outside the range fall into the outermost column, and an
+     * object whose direction the server did not send into the middle one.
+     *
+     * @param direction degrees relative to the head, positive to the right
+     * @return the column, from 0 (left)
+     */
     public int column(double direction) {
         if (Double.isNaN(direction)) {
             return columns / 2;
@@ -80,7 +106,12 @@ public final class Grid {
         return Math.max(0, Math.min(columns - 1, column));
     }
 
-    /** Row of a distance; an object whose distance the server did not send is taken as far. */
+    /**
+     * Row of a distance; an object whose distance the server did not send is taken as far.
+     *
+     * @param distance metres
+     * @return the row, from 0 (nearest)
+     */
     public int row(double distance) {
         if (Double.isNaN(distance)) {
             return bounds.length;
@@ -92,6 +123,13 @@ public final class Grid {
         return row;
     }
 
+    /**
+     * Cell of an object seen at a distance and direction.
+     *
+     * @param distance metres
+     * @param direction degrees relative to the head, positive to the right
+     * @return the cell of {@link #column} and {@link #row}
+     */
     public Cell cell(double distance, double direction) {
         int column = column(direction);
         int row = row(distance);
@@ -103,6 +141,8 @@ public final class Grid {
      * the first source whose grid differs is named beside the first source's.
      *
      * @param sources what the user knows each grid by (a file name), in the order of {@code grids}
+     * @param grids the grids, at least one
+     * @return the grid they share
      * @throws MismatchException when two grids differ: a fault of the data, not of the call
      */
     public static Grid common(List<?> sources, List<Grid> grids) {
@@ -119,7 +159,11 @@ public final class Grid {
         return first;
     }
 
-    /** "5x3 [-45,45] bounds 1,5": the form shown in reports and errors. */
+    /**
+     * "5x3 [-45,45] bounds 1,5": the form shown in reports and errors.
+     *
+     * @return the description
+     */
     public String describe() {
         StringBuilder text = new StringBuilder().append(columns).append('x').append(rows())
                 .append(" [").append(format(minAngle)).append(',').append(format(maxAngle)).append("] bounds ");

@@ -8,13 +8,25 @@ package org.scenes.api;
  * @param uniformNumber uniform number from the {@code init} reply; 0 when unknown
  */
 public record Observer(String team, Side side, int uniformNumber) {
+    /** A player of unknown team, side and number (a log without {@code init}). */
     public static final Observer UNKNOWN = new Observer("", null, 0);
 
+    /**
+     * A null team becomes empty.
+     *
+     * @param team team name, null or empty when unknown
+     * @param side the side, null when unknown
+     * @param uniformNumber uniform number, 0 when unknown
+     */
     public Observer {
         team = team == null ? "" : team;
     }
 
-    /** "Carleton 3 (l)" style label for reports. */
+    /**
+     * "Carleton 3 (l)" style label for reports.
+     *
+     * @return team, number when known and side letter when known
+     */
     public String label() {
         StringBuilder label = new StringBuilder(team.isEmpty() ? "?" : team);
         if (uniformNumber > 0) {

@@ -18,7 +18,15 @@ public record PluginConfig(ObjectWeights objectWeights, ActionWeights actionWeig
     public static final PluginConfig DEFAULT = new PluginConfig(ObjectWeights.DEFAULT, ActionWeights.DEFAULT,
             Map.of(), 1L, "");
 
-    /** Copies the options, sorted; a null argument becomes empty. */
+    /**
+     * Copies the options, sorted; a null argument becomes empty.
+     *
+     * @param objectWeights weights of the object classes
+     * @param actionWeights weights of the action types
+     * @param options plugin-specific options
+     * @param seed seed of every random choice
+     * @param argument text after the colon in {@code name:argument}, or null
+     */
     public PluginConfig {
         options = Map.copyOf(new TreeMap<>(options));
         argument = argument == null ? "" : argument;

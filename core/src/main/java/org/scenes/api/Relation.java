@@ -9,12 +9,32 @@ import java.util.Locale;
  * observer's side was never learned.
  */
 public enum Relation {
-    NONE, OWN, OPPONENT, TEAMMATE, UNKNOWN;
+    /** No relation: the ball, flags and lines. */
+    NONE,
+    /** The observer's own goal. */
+    OWN,
+    /** The opponents' goal, or a player of the other team. */
+    OPPONENT,
+    /** A player of the observer's team. */
+    TEAMMATE,
+    /** A player whose team could not be read, or a goal while the observer's side is unknown. */
+    UNKNOWN;
 
+    /**
+     * Lower-case name used in scene files.
+     *
+     * @return the key, e.g. {@code opponent}
+     */
     public String key() {
         return name().toLowerCase(Locale.ROOT);
     }
 
+    /**
+     * The relation of a key, the inverse of {@link #key()}.
+     *
+     * @param key a key such as {@code own}
+     * @return the relation; an unknown key is an {@code IllegalArgumentException}
+     */
     public static Relation fromKey(String key) {
         for (Relation relation : values()) {
             if (relation.key().equals(key)) {

@@ -26,20 +26,46 @@ import java.util.stream.Collectors;
  */
 public record Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions, Scene previous,
                     int seeAge) {
+    /** The most actions a scene holds: the primary one and one more (e.g. a turn_neck). */
     public static final int MAX_ACTIONS = 2;
     /** The longest chain of remembered scenes a scene may carry ({@link #withHistory}). */
     public static final int MAX_MEMORY = 8;
 
-    /** A scene without memory, made from the see of its own cycle. */
+    /**
+     * A scene without memory, made from the see of its own cycle.
+     *
+     * @param cycle the server cycle of the {@code see}
+     * @param observer the player who saw (null for unknown)
+     * @param objects the seen objects, in server order
+     * @param actions at most {@link #MAX_ACTIONS} actions, primary first
+     */
     public Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions) {
         this(cycle, observer, objects, actions, null, 0);
     }
 
-    /** A scene made from the see of its own cycle. */
+    /**
+     * A scene made from the see of its own cycle.
+     *
+     * @param cycle the server cycle of the {@code see}
+     * @param observer the player who saw (null for unknown)
+     * @param objects the seen objects, in server order
+     * @param actions at most {@link #MAX_ACTIONS} actions, primary first
+     * @param previous the same player's scene before this one, or null
+     */
     public Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions, Scene previous) {
         this(cycle, observer, objects, actions, previous, 0);
     }
 
+    /**
+     * Copies the lists, bounds the memory chain and checks the action count and see age.
+     *
+     * @param cycle the server cycle of the {@code see}
+     * @param observer the player who saw (null for unknown)
+     * @param objects the seen objects, in server order
+     * @param actions at most {@link #MAX_ACTIONS} actions, primary first
+     * @param previous the same player's scene before this one, or null
+     * @param seeAge cycles between the {@code see} and {@code cycle}, 0 or more
+     */
     public Scene {
         observer = observer == null ? Observer.UNKNOWN : observer;
         objects = List.copyOf(objects);
@@ -56,7 +82,12 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
         }
     }
 
-    /** The same scene remembering {@code earlier} (its own memory dropped), or forgetting when null. */
+    /**
+     * The same scene remembering {@code earlier} (its own memory dropped), or forgetting when null.
+     *
+     * @param earlier the scene to remember, or null
+     * @return the scene with one remembered scene at most
+     */
     public Scene withPrevious(Scene earlier) {
         return new Scene(cycle, observer, objects, actions, earlier == null ? null : earlier.withPrevious(null), seeAge);
     }
@@ -64,12 +95,19 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
     /**
      * The same scene remembering {@code earlier} with the chain {@code earlier} remembers, cut
      * after {@link #MAX_MEMORY} scenes in all: what a transform keeping several steps builds.
+     *
+     * @param earlier the scene to remember, with its own memory
+     * @return the scene with the chain
      */
     public Scene withHistory(Scene earlier) {
         return new Scene(cycle, observer, objects, actions, earlier, seeAge);
     }
 
-    /** How many remembered scenes this one carries: 0 without memory. */
+    /**
+     * How many remembered scenes this one carries: 0 without memory.
+     *
+     * @return the length of the chain of {@link #previous} scenes
+     */
     public int memoryDepth() {
         int depth = 0;
         for (Scene s = previous; s != null; s = s.previous) {
@@ -83,17 +121,30 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
                 : new Scene(cycle, observer, objects, actions, previous == null ? null : previous.truncated(depth - 1), seeAge);
     }
 
-    /** The primary action, or null for a scene without action. */
+    /**
+     * The primary action, or null for a scene without action.
+     *
+     * @return the first action or null
+     */
     public Action primaryAction() {
         return actions.isEmpty() ? null : actions.get(0);
     }
 
-    /** The primary action's type, {@link ActionType#NONE} when there is none. */
+    /**
+     * The primary action's type, {@link ActionType#NONE} when there is none.
+     *
+     * @return the type of the first action
+     */
     public ActionType actionType() {
         return actions.isEmpty() ? ActionType.NONE : actions.get(0).type();
     }
 
-    /** The same scene (cycle, observer, actions, memory, see age) holding other objects. */
+    /**
+     * The same scene (cycle, observer, actions, memory, see age) holding other objects.
+     *
+     * @param newObjects the objects it holds instead
+     * @return the copy
+     */
     public Scene withObjects(List<SeenObject> newObjects) {
         return new Scene(cycle, observer, newObjects, actions, previous, seeAge);
     }
@@ -105,7 +156,12 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
      * objects keep their order and values, the other's follow in theirs.
      */
 
-    /** This scene's objects, then those of {@code other} whose identity none of this scene's has. */
+    /**
+     * This scene's objects, then those of {@code other} whose identity none of this scene's has.
+     *
+     * @param other the scene whose objects are added
+     * @return this scene with the union of the objects
+     */
     public Scene union(Scene other) {
         Set<String> own = identities(this);
         List<SeenObject> joined = new ArrayList<>(objects);
@@ -118,13 +174,23 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
         return withObjects(joined);
     }
 
-    /** This scene's objects whose identity {@code other} holds too. */
+    /**
+     * This scene's objects whose identity {@code other} holds too.
+     *
+     * @param other the scene whose objects are kept
+     * @return this scene with the common objects
+     */
     public Scene intersection(Scene other) {
         Set<String> theirs = identities(other);
         return keep(object -> theirs.contains(object.identity()));
     }
 
-    /** This scene's objects whose identity {@code other} does not hold. */
+    /**
+     * This scene's objects whose identity {@code other} does not hold.
+     *
+     * @param other the scene whose objects are dropped
+     * @return this scene with the objects only it holds
+     */
     public Scene difference(Scene other) {
         Set<String> theirs = identities(other);
         return keep(object -> !theirs.contains(object.identity()));
@@ -138,7 +204,12 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
         return scene.objects.stream().map(SeenObject::identity).collect(Collectors.toSet());
     }
 
-    /** The same scene with objects re-assigned to the cells of another grid. */
+    /**
+     * The same scene with objects re-assigned to the cells of another grid.
+     *
+     * @param grid the grid giving the new cells
+     * @return the copy, its remembered scenes re-gridded too
+     */
     public Scene regrid(Grid grid) {
         return new Scene(cycle, observer,
                 objects.stream().map(o -> o.withCell(grid.cell(o.distance(), o.direction()))).toList(), actions,

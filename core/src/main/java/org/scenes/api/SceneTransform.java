@@ -31,12 +31,19 @@ public interface SceneTransform {
      * scenes in both) returns the map to it, an involution such as the mirror image, applied to
      * the fully transformed query; the {@link Recognizer} then returns scenes found for the image
      * as their own images. Default: null, one orientation.
+     *
+     * @return the map to the second orientation, or null
      */
     default java.util.function.UnaryOperator<Scene> queryImage() {
         return null;
     }
 
-    /** The one query image of a sequence's transforms, or null; two are refused (they would undo each other). */
+    /**
+     * The one query image of a sequence's transforms, or null; two are refused (they would undo each other).
+     *
+     * @param transforms the transforms, in the order they apply
+     * @return the one non-null {@link #queryImage()}, or null
+     */
     static java.util.function.UnaryOperator<Scene> queryImage(java.util.List<SceneTransform> transforms) {
         java.util.function.UnaryOperator<Scene> found = null;
         for (SceneTransform transform : transforms) {

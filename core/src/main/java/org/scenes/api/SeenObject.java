@@ -31,9 +31,28 @@ public record SeenObject(ObjectKind kind, String name, String team, int uniformN
                          double bodyFacing, double headFacing, double pointingDirection,
                          char mark, Cell cell, double confidence) {
 
+    /** The {@link #mark} of an object the server gave no mark (neither tackling nor kicked). */
     public static final char NO_MARK = ' ';
 
-    /** An object the server reported in this {@code see} (confidence 1). */
+    /**
+     * An object the server reported in this {@code see} (confidence 1).
+     *
+     * @param kind ball, goal, flag, line or player
+     * @param name the server's short name, upper case when sensed behind
+     * @param team player's team, empty or null when not readable
+     * @param uniformNumber player's uniform number, 0 when not readable
+     * @param goalie whether the player carries the goalie mark
+     * @param relation relation to the observer
+     * @param distance distance in metres
+     * @param direction direction in degrees relative to the observer's head, positive to the right
+     * @param distanceChange distance change per cycle, in metres
+     * @param directionChange direction change per cycle, in degrees
+     * @param bodyFacing a player's body direction relative to the observer's head, in degrees
+     * @param headFacing a player's head direction relative to the observer's head, in degrees
+     * @param pointingDirection the direction a player points to, in degrees
+     * @param mark {@code 't'}, {@code 'k'} or {@link #NO_MARK}
+     * @param cell the object's cell in the scene's grid
+     */
     public SeenObject(ObjectKind kind, String name, String team, int uniformNumber, boolean goalie,
                       Relation relation, double distance, double direction,
                       double distanceChange, double directionChange,
@@ -43,6 +62,26 @@ public record SeenObject(ObjectKind kind, String name, String team, int uniformN
                 bodyFacing, headFacing, pointingDirection, mark, cell, 1);
     }
 
+    /**
+     * Checks the components: confidence in (0, 1], kind, name, relation and cell given, a known mark.
+     *
+     * @param kind ball, goal, flag, line or player
+     * @param name the server's short name, upper case when sensed behind
+     * @param team player's team, empty or null when not readable
+     * @param uniformNumber player's uniform number, 0 when not readable
+     * @param goalie whether the player carries the goalie mark
+     * @param relation relation to the observer
+     * @param distance distance in metres
+     * @param direction direction in degrees relative to the observer's head, positive to the right
+     * @param distanceChange distance change per cycle, in metres
+     * @param directionChange direction change per cycle, in degrees
+     * @param bodyFacing a player's body direction relative to the observer's head, in degrees
+     * @param headFacing a player's head direction relative to the observer's head, in degrees
+     * @param pointingDirection the direction a player points to, in degrees
+     * @param mark {@code 't'}, {@code 'k'} or {@link #NO_MARK}
+     * @param cell the object's cell in the scene's grid
+     * @param confidence 1 for an object reported now, in (0, 1) for a remembered one
+     */
     public SeenObject {
         if (!(confidence > 0 && confidence <= 1)) {
             throw new IllegalArgumentException("an object's confidence lies in (0, 1], not " + confidence);
@@ -56,7 +95,17 @@ public record SeenObject(ObjectKind kind, String name, String team, int uniformN
         }
     }
 
-    /** A landmark or ball seen with distance and direction only. */
+    /**
+     * A landmark or ball seen with distance and direction only.
+     *
+     * @param kind what it is
+     * @param name the server's short name, e.g. {@code b} or {@code f p r b}
+     * @param relation relation to the observer ({@link Relation#NONE} for the ball and flags)
+     * @param distance distance in metres
+     * @param direction direction in degrees relative to the observer's head, positive to the right
+     * @param grid the grid that gives the object's cell
+     * @return the object, with confidence 1 and every other number {@code NaN}
+     */
     public static SeenObject simple(ObjectKind kind, String name, Relation relation, double distance,
                                     double direction, Grid grid) {
         return new SeenObject(kind, name, "", 0, false, relation, distance, direction,
@@ -64,18 +113,31 @@ public record SeenObject(ObjectKind kind, String name, String team, int uniformN
                 grid.cell(distance, direction));
     }
 
-    /** Whether the server reported this object in upper case: sensed behind, without identity. */
+    /**
+     * Whether the server reported this object in upper case: sensed behind, without identity.
+     *
+     * @return true for an upper-case name
+     */
     public boolean behind() {
         return Character.isUpperCase(name.charAt(0));
     }
 
-    /** The same object with another cell, e.g. after re-discretising with another grid. */
+    /**
+     * The same object with another cell, e.g. after re-discretising with another grid.
+     *
+     * @param newCell the cell it takes
+     * @return a copy that differs in its cell only
+     */
     public SeenObject withCell(Cell newCell) {
         return new SeenObject(kind, name, team, uniformNumber, goalie, relation, distance, direction,
                 distanceChange, directionChange, bodyFacing, headFacing, pointingDirection, mark, newCell, confidence);
     }
 
-    /** Whether a transform carried this object from earlier scenes rather than the server reporting it now. */
+    /**
+     * Whether a transform carried this object from earlier scenes rather than the server reporting it now.
+     *
+     * @return true when its confidence is below 1
+     */
     public boolean remembered() {
         return confidence < 1;
     }
@@ -83,6 +145,12 @@ public record SeenObject(ObjectKind kind, String name, String team, int uniformN
     /**
      * The same object remembered at another place with the given confidence (below 1), its cell
      * taken from {@code grid}; the changes the server reported are kept, for further extrapolation.
+     *
+     * @param newDistance where it is believed to be now: distance in metres
+     * @param newDirection and direction in degrees relative to the observer's head
+     * @param newConfidence how sure, above 0 and below 1
+     * @param grid the grid that gives its new cell
+     * @return the remembered copy
      */
     public SeenObject remembered(double newDistance, double newDirection, double newConfidence, Grid grid) {
         if (!(newConfidence < 1)) {
@@ -97,6 +165,8 @@ public record SeenObject(ObjectKind kind, String name, String team, int uniformN
      * What names this object across scenes: kind, name, relation, and a player's team and
      * uniform number. Objects sensed behind (upper-case names) and players without a readable
      * number have no identity of their own; for them this says only what they are.
+     *
+     * @return the identity as one string, equal for the same object in two scenes
      */
     public String identity() {
         return kind.key() + '|' + name + '|' + relation.key() + '|' + team + '|' + uniformNumber;

@@ -54,12 +54,12 @@ public final class GameLogOptions {
     /**
      * Checks the options: the fading is known and the number one of a team's.
      *
-     * @throws IllegalArgumentException naming the option
+     * @throws OptionException naming the option
      */
     public void check() {
         fading();
         if (unum < 0 || unum > 11) {
-            throw new IllegalArgumentException("--unum: a uniform number from 1 to 11, not " + unum);
+            throw new OptionException("--unum: a uniform number from 1 to 11, not " + unum);
         }
     }
 
@@ -67,7 +67,7 @@ public final class GameLogOptions {
     public Fading fading() {
         Fading named = Fading.named(fading, fadingSeed);
         if (named == null) {
-            throw new IllegalArgumentException("--fading: expected dice or halfway, not '" + fading + "'");
+            throw new OptionException("--fading: expected dice or halfway, not '" + fading + "'");
         }
         return named;
     }

@@ -17,7 +17,7 @@ public final class GridOptions {
     /**
      * The grid the options describe.
      *
-     * @throws IllegalArgumentException naming the option, for a malformed or inconsistent grid
+     * @throws OptionException naming the option, for a malformed or inconsistent grid
      */
     public Grid grid() {
         int x = grid.indexOf('x');
@@ -27,23 +27,23 @@ public final class GridOptions {
             columns = Integer.parseInt(grid.substring(0, x < 0 ? grid.length() : x).trim());
             rows = x < 0 ? -1 : Integer.parseInt(grid.substring(x + 1).trim());
         } catch (NumberFormatException e) {
-            throw new IllegalArgumentException("--grid must be COLUMNSxROWS, e.g. 5x3, not '" + grid + "'");
+            throw new OptionException("--grid must be COLUMNSxROWS, e.g. 5x3, not '" + grid + "'");
         }
         double[] distances = bounds;
         if (distances == null) {
             if (rows != -1 && rows != 3) {
-                throw new IllegalArgumentException("--grid " + grid + " has " + rows + " rows: give --bounds with "
+                throw new OptionException("--grid " + grid + " has " + rows + " rows: give --bounds with "
                         + (rows - 1) + " distances");
             }
             distances = Grid.DEFAULT.bounds();
         } else if (rows != -1 && distances.length != rows - 1) {
-            throw new IllegalArgumentException("--grid " + grid + " has " + rows + " rows but --bounds gives "
+            throw new OptionException("--grid " + grid + " has " + rows + " rows but --bounds gives "
                     + distances.length + " distances (need " + (rows - 1) + ")");
         }
         try {
             return Grid.of(columns, distances);
         } catch (IllegalArgumentException e) {
-            throw new IllegalArgumentException("bad grid " + grid + " with bounds " + Arrays.toString(distances) + ": " + e.getMessage());
+            throw new OptionException("bad grid " + grid + " with bounds " + Arrays.toString(distances) + ": " + e.getMessage());
         }
     }
 }

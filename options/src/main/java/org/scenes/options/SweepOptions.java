@@ -43,14 +43,14 @@ public final class SweepOptions {
     /**
      * The sweep the script describes.
      *
-     * @throws IllegalArgumentException when the script fails: a sweep script describes the run, so
+     * @throws OptionException when the script fails: a sweep script describes the run, so
      *                                  its failure is a bad command line, like a bad option
      */
     public Sweep load() {
         try {
             return Sweeps.load(sweepFile.toString());
         } catch (ScriptFailure e) {
-            throw new IllegalArgumentException(e.getMessage(), e);
+            throw new OptionException(e.getMessage(), e);
         }
     }
 }

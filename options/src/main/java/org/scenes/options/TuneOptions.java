@@ -38,32 +38,32 @@ public final class TuneOptions {
     /**
      * The passes over the dimensions.
      *
-     * @throws IllegalArgumentException for fewer than one
+     * @throws OptionException for fewer than one
      */
     public int sweeps() {
         if (sweeps < 1) {
-            throw new IllegalArgumentException("--sweeps must be at least 1");
+            throw new OptionException("--sweeps must be at least 1");
         }
         return sweeps;
     }
 
-    /** @throws IllegalArgumentException for an unknown protocol */
+    /** @throws OptionException for an unknown protocol */
     public Folds.Protocol protocol() {
         Folds.Protocol chosen = Folds.Protocol.fromKey(protocol);
         if (chosen == null) {
-            throw new IllegalArgumentException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
+            throw new OptionException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
         }
         return chosen;
     }
 
-    /** @throws IllegalArgumentException for an unknown objective */
+    /** @throws OptionException for an unknown objective */
     public Tuner.Objective objective() {
         return switch (objective) {
             case "mean" -> Tuner.Objective.MEAN;
             case "accuracy" -> Tuner.Objective.ACCURACY;
             case "direction" -> Tuner.Objective.DIRECTION;
             case "macro-f1" -> Tuner.Objective.MACRO_F1;
-            default -> throw new IllegalArgumentException("--objective must be mean, accuracy, direction or macro-f1, not "
+            default -> throw new OptionException("--objective must be mean, accuracy, direction or macro-f1, not "
                     + objective);
         };
     }

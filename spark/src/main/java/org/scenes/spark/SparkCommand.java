@@ -3,6 +3,7 @@ package org.scenes.spark;
 import java.io.PrintWriter;
 import org.scenes.api.PluginException;
 import org.scenes.internal.scene.SceneFileException;
+import org.scenes.options.OptionException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Spec;
@@ -71,7 +72,7 @@ final class SparkCommand implements Runnable {
             e.printStackTrace(err);
         }
         err.flush();
-        if (cause instanceof UsageException || cause instanceof PluginException
+        if (cause instanceof UsageException || cause instanceof PluginException || cause instanceof OptionException
                 || cause.getClass() == IllegalArgumentException.class) {
             return CommandLine.ExitCode.USAGE;
         }

@@ -2,7 +2,10 @@ package org.scenes.internal.convert;
 
 import java.nio.file.Path;
 
-/** A log that cannot be read or a malformed line under {@code --strict}, naming file and line. */
+/**
+ * A log that cannot be read or a malformed line under {@code --strict}, naming file and line.
+ * A game log's twin is {@link org.scenes.internal.gamelog.GameLogException} (see there why there are two).
+ */
 public final class LogException extends RuntimeException {
     private final transient Path file;
     private final long line;

@@ -73,24 +73,10 @@ public enum LogFormat {
     }
 
     static int indexOf(byte[] bytes, int from, int length, byte wanted) {
-        for (int i = from; i < length; i++) {
-            if (bytes[i] == wanted) {
-                return i;
-            }
-        }
-        return -1;
+        return ProxyLogLine.indexOf(bytes, from, length, wanted);
     }
 
     static boolean isDecimal(byte[] bytes, int from, int to) {
-        boolean digit = false;
-        for (int i = from; i < to; i++) {
-            byte c = bytes[i];
-            if (c >= '0' && c <= '9') {
-                digit = true;
-            } else if (c != '.') {
-                return false;
-            }
-        }
-        return digit;
+        return ProxyLogLine.isDecimal(bytes, from, to);
     }
 }

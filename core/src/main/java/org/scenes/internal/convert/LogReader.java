@@ -195,25 +195,15 @@ public final class LogReader implements AutoCloseable {
         if (line[0] == '#') {
             return false;
         }
-        int firstSpace = LogFormat.indexOf(line, 0, lineLength, (byte) ' ');
-        int secondSpace = firstSpace < 0 ? -1 : LogFormat.indexOf(line, firstSpace + 1, lineLength, (byte) ' ');
-        int directionEnd = secondSpace < 0 ? lineLength : secondSpace;
-        if (firstSpace <= 0 || !LogFormat.isDecimal(line, 0, firstSpace)) {
-            return broken("expected '<seconds> <c2s|s2c> <message>'");
+        // the native format has one reader of its frame, ProxyLogLine's
+        ProxyLogLine.Frame frame = ProxyLogLine.frame(line, lineLength);
+        if (frame.problem() != null) {
+            return broken(frame.problem());
         }
-        if (LogFormat.startsWith(line, firstSpace + 1, directionEnd, Direction.CLIENT_TO_SERVER.token()) && directionEnd - firstSpace == 4) {
-            direction = Direction.CLIENT_TO_SERVER;
-        } else if (LogFormat.startsWith(line, firstSpace + 1, directionEnd, Direction.SERVER_TO_CLIENT.token()) && directionEnd - firstSpace == 4) {
-            direction = Direction.SERVER_TO_CLIENT;
-        } else {
-            return broken("direction must be c2s or s2c");
-        }
-        time = decimal(line, 0, firstSpace);
-        if (secondSpace < 0) {
-            return false; // an empty datagram carries no message
-        }
-        unescape(secondSpace + 1);
-        return messageLength > 0;
+        direction = frame.direction();
+        time = frame.seconds();
+        unescape(frame.messageStart());
+        return messageLength > 0; // an empty datagram carries no message
     }
 
     private boolean capture() {
@@ -238,7 +228,7 @@ public final class LogReader implements AutoCloseable {
                     StandardCharsets.UTF_8) + ", first was " + new String(clientPort, StandardCharsets.UTF_8)
                     + "); split the capture by client port");
         }
-        time = decimal(line, 0, firstSpace);
+        time = ProxyLogLine.decimal(line, 0, firstSpace);
         setMessage(line, thirdSpace + 1, lineLength - thirdSpace - 1);
         return true;
     }
@@ -274,21 +264,6 @@ public final class LogReader implements AutoCloseable {
             problem = "bad escape in the message, " + e.getMessage();
             setMessage(line, from, lineLength - from);
         }
-    }
-
-    private static double decimal(byte[] bytes, int from, int to) {
-        double value = 0;
-        double scale = 0;
-        for (int i = from; i < to; i++) {
-            byte c = bytes[i];
-            if (c == '.') {
-                scale = 1;
-            } else {
-                value = value * 10 + (c - '0');
-                scale *= 10;
-            }
-        }
-        return scale > 0 ? value / scale : value;
     }
 
     // ---- lines ------------------------------------------------------------------------------

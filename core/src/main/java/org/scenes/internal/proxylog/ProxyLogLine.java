@@ -63,6 +63,94 @@ public record ProxyLogLine(long micros, Direction direction, byte[] message) {
         return new ProxyLogLine(micros, direction, message);
     }
 
+    /**
+     * Where a message line's parts are, read from its bytes by {@link #frame}.
+     *
+     * @param seconds the time the line states
+     * @param direction which way the datagram went; null when the frame is broken
+     * @param messageStart the index of the escaped message's first byte, the line's length for an empty datagram
+     * @param problem why the frame is broken, or null when it is fine
+     */
+    public record Frame(double seconds, Direction direction, int messageStart, String problem) {
+        static Frame broken(String problem) {
+            return new Frame(Double.NaN, null, -1, problem);
+        }
+    }
+
+    /**
+     * Reads the frame of a message line ({@code <seconds> <c2s|s2c> }) from its bytes, as a log
+     * reader does for every line: leniently, any decimal seconds; the message is left escaped.
+     * Comment lines ({@code #}) are the caller's to skip.
+     */
+    public static Frame frame(byte[] line, int length) {
+        int firstSpace = indexOf(line, 0, length, (byte) ' ');
+        int secondSpace = firstSpace < 0 ? -1 : indexOf(line, firstSpace + 1, length, (byte) ' ');
+        int directionEnd = secondSpace < 0 ? length : secondSpace;
+        if (firstSpace <= 0 || !isDecimal(line, 0, firstSpace)) {
+            return Frame.broken("expected '<seconds> <c2s|s2c> <message>'");
+        }
+        Direction direction = isToken(line, firstSpace + 1, directionEnd, Direction.CLIENT_TO_SERVER)
+                ? Direction.CLIENT_TO_SERVER
+                : isToken(line, firstSpace + 1, directionEnd, Direction.SERVER_TO_CLIENT) ? Direction.SERVER_TO_CLIENT : null;
+        if (direction == null) {
+            return Frame.broken("direction must be c2s or s2c");
+        }
+        return new Frame(decimal(line, 0, firstSpace), direction, secondSpace < 0 ? length : secondSpace + 1, null);
+    }
+
+    private static boolean isToken(byte[] bytes, int from, int to, Direction direction) {
+        String token = direction.token();
+        if (to - from != token.length()) {
+            return false;
+        }
+        for (int i = 0; i < token.length(); i++) {
+            if (bytes[from + i] != token.charAt(i)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The index of the first {@code wanted} byte in {@code [from, to)}, or -1. */
+    public static int indexOf(byte[] bytes, int from, int to, byte wanted) {
+        for (int i = from; i < to; i++) {
+            if (bytes[i] == wanted) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    /** True when {@code [from, to)} holds digits and dots only, at least one digit. */
+    public static boolean isDecimal(byte[] bytes, int from, int to) {
+        boolean digit = false;
+        for (int i = from; i < to; i++) {
+            byte c = bytes[i];
+            if (c >= '0' && c <= '9') {
+                digit = true;
+            } else if (c != '.') {
+                return false;
+            }
+        }
+        return digit;
+    }
+
+    /** The value of a decimal that {@link #isDecimal} accepted. */
+    public static double decimal(byte[] bytes, int from, int to) {
+        double value = 0;
+        double scale = 0;
+        for (int i = from; i < to; i++) {
+            byte c = bytes[i];
+            if (c == '.') {
+                scale = 1;
+            } else {
+                value = value * 10 + (c - '0');
+                scale *= 10;
+            }
+        }
+        return scale > 0 ? value / scale : value;
+    }
+
     private static long parseMicros(String line, int end) {
         int dot = line.indexOf('.');
         if (dot <= 0 || dot >= end || end - dot - 1 != 6) {

@@ -61,4 +61,30 @@ class ProxyLogLineTest {
             }
         }
     }
+
+    @Test
+    void theByteFrameReadsWhatTheWriterWrote() {
+        ProxyLogLine written = new ProxyLogLine(3_000_042L, Direction.CLIENT_TO_SERVER, "(dash 100)".getBytes(StandardCharsets.UTF_8));
+        byte[] bytes = written.format().getBytes(StandardCharsets.UTF_8);
+        ProxyLogLine.Frame frame = ProxyLogLine.frame(bytes, bytes.length);
+        assertEquals(new ProxyLogLine.Frame(3.000042, Direction.CLIENT_TO_SERVER, 13, null), frame);
+        // an empty datagram: the message starts at the end, with or without the trailing space
+        assertEquals(12, ProxyLogLine.frame("0.000001 s2c".getBytes(StandardCharsets.UTF_8), 12).messageStart());
+        assertEquals(13, ProxyLogLine.frame("0.000001 s2c ".getBytes(StandardCharsets.UTF_8), 13).messageStart());
+    }
+
+    @Test
+    void theByteFrameNamesWhatIsBroken() {
+        assertEquals("expected '<seconds> <c2s|s2c> <message>'", frame("x1 c2s (dash 1)").problem());
+        assertEquals("expected '<seconds> <c2s|s2c> <message>'", frame("12.5").problem());
+        assertEquals("direction must be c2s or s2c", frame("12.5 c2sx (dash 1)").problem());
+        assertEquals("direction must be c2s or s2c", frame("12.5 up").problem());
+        // lenient about the seconds, which the strict parse is not
+        assertEquals(12.5, frame("12.5 s2c (see 0)").seconds());
+    }
+
+    private static ProxyLogLine.Frame frame(String line) {
+        byte[] bytes = line.getBytes(StandardCharsets.UTF_8);
+        return ProxyLogLine.frame(bytes, bytes.length);
+    }
 }
