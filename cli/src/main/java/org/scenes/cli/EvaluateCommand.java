@@ -235,12 +235,8 @@ final class EvaluateCommand implements Callable<Integer> {
             about.put("imitator learnt from", setup.trainGames() + " teacher games of " + setup.cycles()
                     + " cycles against the same opponent, seeds " + trainingSeeds + " (" + imitator.scenes() + " scenes)");
         } else {
-            KnowledgeBase knowledge;
-            try {
-                knowledge = KnowledgeBase.load(setup.sceneFiles(), matching.transforms());
-            } catch (IllegalArgumentException e) {
-                throw new UsageException(e.getMessage());
-            }
+            // a file the knowledge base cannot hold is failed work (exit 1), its message names the file
+            KnowledgeBase knowledge = KnowledgeBase.load(setup.sceneFiles(), matching.transforms());
             imitator = Learner.of(knowledge, matching);
             about.put("imitator learnt from", setup.sceneFiles().size() + " scene files (" + imitator.scenes()
                     + " scenes): " + String.join(" ", setup.sceneFiles().stream().map(Path::toString).toList()));

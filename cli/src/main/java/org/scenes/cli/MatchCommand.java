@@ -172,13 +172,13 @@ final class MatchCommand implements Callable<Integer> {
             config = configs.get(0);
         }
         Learner.Matching matching;
-        KnowledgeBase knowledge;
         try {
             matching = Learner.Matching.of(config, top.global.registry());
-            knowledge = KnowledgeBase.load(files, matching.transforms());
         } catch (IllegalArgumentException e) {
             throw new UsageException(option + ": " + e.getMessage());
         }
+        // a file the knowledge base cannot hold is failed work (exit 1), its message names the file
+        KnowledgeBase knowledge = KnowledgeBase.load(files, matching.transforms());
         Learner.Imitator imitator = Learner.of(knowledge, matching);
         try {
             return new Side(new GameSetup.Team(name, players, PacedBrain.pace(imitator.brains(), thinkSteps)),

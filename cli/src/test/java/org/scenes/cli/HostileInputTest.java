@@ -97,9 +97,8 @@ class HostileInputTest {
         assertEquals("", cli.out());
     }
 
-    @Test
-    void aSceneTooLargeToLearnIsFailedWorkNotAUsageError() throws Exception {
-        // core says so with an IllegalArgumentException: the data is at fault, so exit 1, not 2
+    /** A scene file whose one scene sees 100,000 objects: more than a knowledge base stores of one scene. */
+    private Path tooLargeToLearn() throws Exception {
         Observer observer = new Observer("T", Side.LEFT, 1);
         List<SeenObject> crowd = new ArrayList<>();
         for (int i = 0; i < 100_000; i++) {
@@ -111,9 +110,42 @@ class HostileInputTest {
             writer.write(new Scene(0, observer, crowd, List.of(Action.dash(50))));
             writer.commit();
         }
+        return huge;
+    }
+
+    @Test
+    void aSceneTooLargeToLearnIsFailedWorkNotAUsageError() throws Exception {
+        // core says so with an IllegalArgumentException: the data is at fault, so exit 1, not 2
+        Path huge = tooLargeToLearn();
         Path test = scenes("test", 2, 30);
         assertEquals(ExitCodes.FAILURE, cli.run("validate", "--train", huge, "--test", test, "--metric", "cell"));
         oneLine("scene 0 is too large to store");
+    }
+
+    @Test
+    void matchAndEvaluateSayASceneTooLargeToLearnIsFailedWorkNamingTheFile() throws Exception {
+        Path huge = tooLargeToLearn();
+        assertEquals(ExitCodes.FAILURE, cli.run("match", "--left", "imitator:1:" + huge, "--right", "krislet:1",
+                "--cycles", "10"));
+        oneLine(huge + ": scene 0 is too large to store");
+        assertEquals("", cli.out());
+        CommandRunner evaluate = new CommandRunner();
+        assertEquals(ExitCodes.FAILURE, evaluate.run("evaluate", huge, "--players", "1", "--opponent", "krislet:1",
+                "--cycles", "10", "--seeds", "1"));
+        assertTrue(evaluate.err().strip().equals("scenes: " + huge + ": scene 0 is too large to store: 100000 objects"),
+                evaluate.err());
+    }
+
+    @Test
+    void matchAndEvaluateStillCallABadMatchingAUsageError() throws Exception {
+        Path train = scenes("train", 1, 30);
+        assertEquals(ExitCodes.USAGE, cli.run("match", "--left", "imitator:1:" + train, "--right", "krislet:1",
+                "--cycles", "10", "--metric", "no-such-metric"));
+        oneLine("no-such-metric");
+        CommandRunner evaluate = new CommandRunner();
+        assertEquals(ExitCodes.USAGE, evaluate.run("evaluate", train, "--players", "1", "--opponent", "krislet:1",
+                "--cycles", "10", "--seeds", "1", "--metric", "no-such-metric"));
+        assertTrue(evaluate.err().contains("no-such-metric"), evaluate.err());
     }
 
     @Test

@@ -107,7 +107,12 @@ public final class KnowledgeBase {
                 } else {
                     Grid.common(List.of(paths.get(0), path), List.of(grid, fileGrid));
                 }
-                builder.addSequence(() -> reader, transforms.get());
+                try {
+                    builder.addSequence(() -> reader, transforms.get());
+                } catch (IllegalArgumentException e) {
+                    // a scene the knowledge base cannot hold: the data is at fault, so say whose
+                    throw new IllegalArgumentException(path + ": " + e.getMessage(), e);
+                }
             }
         }
         return builder.build();
