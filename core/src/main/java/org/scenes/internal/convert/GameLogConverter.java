@@ -497,8 +497,7 @@ public final class GameLogConverter {
         }
 
         boolean truncated(GameLogException e) {
-            String message = e.getMessage();
-            return frames > 0 && (message.contains("ends inside a list") || message.contains("ends before its closing"));
+            return frames > 0 && e.cutOff();
         }
 
         Player slot(GameFrame frame, PlayerState state) {

@@ -11,11 +11,25 @@ import java.nio.file.Path;
 public final class GameLogException extends IOException {
     private final Path file;
     private final long line;
+    private final boolean cutOff;
 
     GameLogException(Path file, long line, String problem) {
+        this(file, line, problem, false);
+    }
+
+    GameLogException(Path file, long line, String problem, boolean cutOff) {
         super(file + ":" + line + ": " + problem);
         this.file = file;
         this.line = line;
+        this.cutOff = cutOff;
+    }
+
+    /**
+     * Whether the log ends inside a record (a list left open, a JSON array never closed), as the
+     * log of a server stopped mid-write does; the records before it are whole.
+     */
+    public boolean cutOff() {
+        return cutOff;
     }
 
     public Path file() {

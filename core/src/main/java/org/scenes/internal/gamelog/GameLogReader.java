@@ -116,7 +116,8 @@ public final class GameLogReader {
             try {
                 textLine(line);
             } catch (IllegalArgumentException | IndexOutOfBoundsException | ClassCastException e) {
-                throw new GameLogException(file, number, e.getMessage() == null ? "ill-formed line" : e.getMessage());
+                throw new GameLogException(file, number, e.getMessage() == null ? "ill-formed line" : e.getMessage(),
+                        e instanceof Sexp.OpenList);
             }
         }
     }
@@ -267,7 +268,7 @@ public final class GameLogReader {
             JsonToken token;
             while ((token = json.nextToken()) != JsonToken.END_ARRAY) {
                 if (token == null) {
-                    throw new GameLogException(file, line(json), "the JSON game log ends before its closing ]");
+                    throw new GameLogException(file, line(json), "the JSON game log ends before its closing ]", true);
                 }
                 long line = line(json);
                 if (token != JsonToken.START_OBJECT) {
@@ -459,6 +460,13 @@ public final class GameLogReader {
             this.text = text;
         }
 
+        /** A line that ends before a list closes: the log was cut there (typed, so no one matches the text). */
+        static final class OpenList extends IllegalArgumentException {
+            OpenList() {
+                super("unbalanced parentheses: the line ends inside a list");
+            }
+        }
+
         static List<Object> parse(String text) {
             Sexp sexp = new Sexp(text);
             sexp.skipSpace();
@@ -479,7 +487,7 @@ public final class GameLogReader {
             while (true) {
                 skipSpace();
                 if (pos >= text.length()) {
-                    throw new IllegalArgumentException("unbalanced parentheses: the line ends inside a list");
+                    throw new OpenList();
                 }
                 char c = text.charAt(pos);
                 if (c == ')') {

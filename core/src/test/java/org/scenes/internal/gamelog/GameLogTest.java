@@ -259,14 +259,17 @@ class GameLogTest {
         Files.writeString(file, "ULG6\n(show 1 ((b) 0 0 0 0)\n");
         e = assertThrows(GameLogException.class, () -> GameLogReader.readAll(file));
         assertTrue(e.getMessage().contains(":2: unbalanced"), e.getMessage());
+        assertTrue(e.cutOff(), "a list left open is where the log was cut");
 
         Files.writeString(file, "ULG3\n");
         e = assertThrows(GameLogException.class, () -> GameLogReader.readAll(file));
         assertTrue(e.getMessage().contains(":1: not a text game log"), e.getMessage());
+        assertFalse(e.cutOff());
 
         Files.writeString(file, "[\n{\"show\":{\"time\":1,\"ball\":{\"x\":1},\"players\":[]}}\n]\n");
         e = assertThrows(GameLogException.class, () -> GameLogReader.readAll(file));
         assertEquals(2, e.line());
+        assertFalse(e.cutOff());
     }
 
     @Test
