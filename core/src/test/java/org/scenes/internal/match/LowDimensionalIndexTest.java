@@ -7,7 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -15,13 +14,11 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.scenes.api.Action;
 import org.scenes.api.Grid;
-import org.scenes.api.Neighbour;
 import org.scenes.api.ObjectKind;
 import org.scenes.api.ObjectWeights;
 import org.scenes.api.PluginConfig;
 import org.scenes.api.Relation;
 import org.scenes.api.Scene;
-import org.scenes.api.SceneMetric;
 import org.scenes.api.SeenObject;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.testing.RequiresSharedData;
@@ -237,36 +234,10 @@ class LowDimensionalIndexTest {
     /** Every query against the recognizer at k = 1, 5, 15: same indices, bit-identical distances. */
     private static void check(Map<String, String> options, ObjectSetMetric.Space space, double cycles, ObjectWeights weights,
                               List<Scene> stored, List<Scene> queries) {
-        ObjectSetMetric reference = metric(options, space, cycles, weights, false);
-        List<List<Neighbour>> expected = new ArrayList<>();
-        for (Scene query : queries) {
-            expected.add(exhaustive(reference, stored, query));
-        }
         assertInstanceOf(LowDimensionalIndex.class, metric(options, space, cycles, weights, true).pack(stored),
                 "the index serves " + options + " " + weights);
-        for (int k : new int[] {1, 5, 15}) {
-            Recognizer recognizer = new Recognizer(KnowledgeBase.of(Grid.DEFAULT, stored),
-                    () -> metric(options, space, cycles, weights, true), k);
-            for (int q = 0; q < queries.size(); q++) {
-                List<Neighbour> actual = recognizer.nearest(queries.get(q));
-                assertEquals(k, actual.size());
-                for (int i = 0; i < k; i++) {
-                    String what = "query " + q + ", neighbour " + i + " with " + options + ", space " + space
-                            + ", cycles " + cycles + ", k=" + k;
-                    assertEquals(expected.get(q).get(i).index(), actual.get(i).index(), what);
-                    assertEquals(expected.get(q).get(i).distance(), actual.get(i).distance(), 0.0, what);
-                }
-            }
-        }
-    }
-
-    /** Every distance through the scene-level method (no bound), sorted by distance then index. */
-    private static List<Neighbour> exhaustive(SceneMetric metric, List<Scene> stored, Scene query) {
-        List<Neighbour> all = new ArrayList<>();
-        for (int i = 0; i < stored.size(); i++) {
-            all.add(new Neighbour(stored.get(i), i, metric.distance(query, stored.get(i))));
-        }
-        all.sort(Comparator.comparingDouble(Neighbour::distance).thenComparingInt(Neighbour::index));
-        return all;
+        ExhaustiveScan.assertRecognizerAgrees(metric(options, space, cycles, weights, false),
+                () -> metric(options, space, cycles, weights, true), stored, queries,
+                options + ", space " + space + ", cycles " + cycles);
     }
 }

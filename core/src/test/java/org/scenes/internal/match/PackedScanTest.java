@@ -9,13 +9,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.scenes.api.Grid;
-import org.scenes.api.Neighbour;
 import org.scenes.api.ObjectWeights;
 import org.scenes.api.PluginConfig;
 import org.scenes.api.Scene;
@@ -204,33 +202,8 @@ class PackedScanTest {
     private static void check(Map<String, String> options, ObjectSetMetric.Space space, double cycles, ObjectWeights weights,
                               List<Scene> stored, List<Scene> queries) {
         PluginConfig config = PluginConfig.DEFAULT.withOptions(options).withObjectWeights(weights);
-        ObjectSetMetric metric = new ObjectSetMetric(ObjectSetMetric.settings(config, space, cycles));
-        List<List<Neighbour>> expected = new ArrayList<>();
-        for (Scene query : queries) {
-            expected.add(exhaustive(metric, stored, query));
-        }
-        for (int k : new int[] {1, 5, 15}) {
-            Recognizer recognizer = new Recognizer(KnowledgeBase.of(Grid.DEFAULT, stored),
-                    () -> new ObjectSetMetric(ObjectSetMetric.settings(config, space, cycles)), k);
-            for (int q = 0; q < queries.size(); q++) {
-                List<Neighbour> actual = recognizer.nearest(queries.get(q));
-                assertEquals(k, actual.size());
-                for (int i = 0; i < k; i++) {
-                    String what = "query " + q + ", neighbour " + i + " with " + options + ", k=" + k;
-                    assertEquals(expected.get(q).get(i).index(), actual.get(i).index(), what);
-                    assertEquals(expected.get(q).get(i).distance(), actual.get(i).distance(), 0.0, what);
-                }
-            }
-        }
-    }
-
-    /** Every distance through the scene-level method (no bound), sorted by distance then index. */
-    private static List<Neighbour> exhaustive(SceneMetric metric, List<Scene> stored, Scene query) {
-        List<Neighbour> all = new ArrayList<>();
-        for (int i = 0; i < stored.size(); i++) {
-            all.add(new Neighbour(stored.get(i), i, metric.distance(query, stored.get(i))));
-        }
-        all.sort(Comparator.comparingDouble(Neighbour::distance).thenComparingInt(Neighbour::index));
-        return all;
+        ExhaustiveScan.assertRecognizerAgrees(new ObjectSetMetric(ObjectSetMetric.settings(config, space, cycles)),
+                () -> new ObjectSetMetric(ObjectSetMetric.settings(config, space, cycles)), stored, queries,
+                options.toString());
     }
 }
