@@ -78,6 +78,17 @@ class LiveTeamTest {
         assertEquals(count, server.clients().size(), "clients connected");
     }
 
+    /** A team of one player with the brain, playing on the server, and the server's side of that player. */
+    private record OnePlayer(Future<List<PlayerReport>> reports, FakeSoccerServer.Client client) {
+    }
+
+    private OnePlayer onePlayer(FakeSoccerServer server, String team, BrainFactory brain) throws InterruptedException {
+        Future<List<PlayerReport>> reports = start(new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER),
+                team), 1, brain, 1, notices::add));
+        awaitClients(server, 1);
+        return new OnePlayer(reports, server.clients().get(0));
+    }
+
     private static void awaitReceived(FakeSoccerServer.Client client, int count) throws InterruptedException {
         for (int i = 0; i < 300 && client.receivedCount() < count; i++) {
             Thread.sleep(10);
@@ -203,11 +214,9 @@ class LiveTeamTest {
     @Test
     void garbageIsCountedLoggedOnceAndSkipped() throws Exception {
         try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
-            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Sturdy"), 1,
-                    DASHER, 1, notices::add);
-            Future<List<PlayerReport>> reports = start(runner);
-            awaitClients(server, 1);
-            FakeSoccerServer.Client client = server.clients().get(0);
+            OnePlayer one = onePlayer(server, "Sturdy", DASHER);
+            Future<List<PlayerReport>> reports = one.reports();
+            FakeSoccerServer.Client client = one.client();
             send(client, "(see 1 ((b) 10 0)");
             send(client, "(see abc)");
             send(client, "garbage");
@@ -242,11 +251,9 @@ class LiveTeamTest {
     @Test
     void aServerThatSendsOnlyGarbageEndsThePlayerWithAClearReason() throws Exception {
         try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
-            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Puzzled"), 1,
-                    DASHER, 1, notices::add);
-            Future<List<PlayerReport>> reports = start(runner);
-            awaitClients(server, 1);
-            FakeSoccerServer.Client client = server.clients().get(0);
+            OnePlayer one = onePlayer(server, "Puzzled", DASHER);
+            Future<List<PlayerReport>> reports = one.reports();
+            FakeSoccerServer.Client client = one.client();
             // garbage every 20 ms, never silent: without a parseable message the player must still end
             for (int i = 0; i < 500 && !reports.isDone(); i++) {
                 send(client, "(see " + i + " ((b) 10 0)");
@@ -264,11 +271,9 @@ class LiveTeamTest {
     void aFloodFromAnotherPortDoesNotHideThatTheServerIsGone() throws Exception {
         try (FakeSoccerServer server = FakeSoccerServer.start(List.of());
                 DatagramChannel flood = DatagramChannel.open()) {
-            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Flooded"), 1,
-                    DASHER, 1, notices::add);
-            Future<List<PlayerReport>> reports = start(runner);
-            awaitClients(server, 1);
-            InetSocketAddress player = server.clients().get(0).address;
+            OnePlayer one = onePlayer(server, "Flooded", DASHER);
+            Future<List<PlayerReport>> reports = one.reports();
+            InetSocketAddress player = one.client().address;
             flood.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
             java.nio.ByteBuffer junk = java.nio.ByteBuffer.wrap("(see 1 ((b) 10 0))\0".getBytes(StandardCharsets.UTF_8));
             // bounded: at most 5 million datagrams, or until the player gives up
@@ -357,11 +362,9 @@ class LiveTeamTest {
             }
         };
         try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
-            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Held"), 1, held, 1,
-                    notices::add);
-            Future<List<PlayerReport>> reports = start(runner);
-            awaitClients(server, 1);
-            FakeSoccerServer.Client client = server.clients().get(0);
+            OnePlayer one = onePlayer(server, "Held", held);
+            Future<List<PlayerReport>> reports = one.reports();
+            FakeSoccerServer.Client client = one.client();
             send(client, before);
             send(client, "(sense_body 5 (view_mode high normal))");
             send(client, "(see 5 ((b) 10 0))");
@@ -421,11 +424,9 @@ class LiveTeamTest {
             }
         };
         try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
-            TeamRunner runner = new TeamRunner(options(server.address(FakeSoccerServer.Port.PLAYER), "Home"), 1, placed, 1,
-                    notices::add);
-            Future<List<PlayerReport>> reports = start(runner);
-            awaitClients(server, 1);
-            FakeSoccerServer.Client client = server.clients().get(0);
+            OnePlayer one = onePlayer(server, "Home", placed);
+            Future<List<PlayerReport>> reports = one.reports();
+            FakeSoccerServer.Client client = one.client();
             send(client, "(player_type (id 0))");
             send(client, "(sense_body 1 (view_mode high normal))");
             send(client, "(see 1 ((b) 10 0))");
