@@ -214,17 +214,25 @@ public final class FakeSoccerServer implements AutoCloseable {
     @Override
     public void close() throws IOException {
         running = false;
+        stopLoop(selector, thread);
+    }
+
+    /**
+     * Ends a selector loop whose running flag was just cleared: wakes it, gives its thread 5 s, then
+     * closes every channel registered with the selector (the init ports and the clients') and the selector.
+     */
+    static void stopLoop(Selector selector, Thread thread) throws IOException {
+        if (!selector.isOpen()) {
+            return; // stopped already: close twice is allowed
+        }
         selector.wakeup();
         try {
             thread.join(5000);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        for (Client client : clients) {
-            client.channel.close();
-        }
-        for (DatagramChannel channel : initPorts.values()) {
-            channel.close();
+        for (SelectionKey key : selector.keys()) {
+            key.channel().close();
         }
         selector.close();
     }

@@ -171,16 +171,7 @@ final class ProxyLoad {
         @Override
         public void close() throws IOException {
             running = false;
-            selector.wakeup();
-            try {
-                thread.join(5000);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-            for (SelectionKey key : selector.keys()) {
-                key.channel().close();
-            }
-            selector.close();
+            FakeSoccerServer.stopLoop(selector, thread);
         }
     }
 
