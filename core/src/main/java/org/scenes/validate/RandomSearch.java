@@ -380,6 +380,11 @@ public final class RandomSearch {
         }
         boolean lowDimensional = weights[2] == 0 && weights[3] == 0 && weights[4] == 0 && weights[5] == 0
                 && weights[6] == 0 && weights[7] == 0;
+        if (!lowDimensional) {
+            // the previous scene's flags, lines or players: no packed form, each query decodes and
+            // compares whole scenes (the dearest configurations by far); memory of actions packs
+            memory = 0;
+        }
         Map<String, String> options = new HashMap<>();
         // optimal matching only where groups are small: over flags it is far slower and rarely better
         if (lowDimensional && random.nextInt(3) == 0) {
