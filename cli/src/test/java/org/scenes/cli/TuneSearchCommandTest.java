@@ -123,9 +123,14 @@ class TuneSearchCommandTest {
         }
         assertEquals(30, firstRung, "every configuration is scored at the first rung");
         assertTrue(rungs.size() >= 3, "rungs " + rungs);
+        // files of 240 scenes leave no query sample to take: the first rung scores two of the three folds, the last all
+        assertEquals("480", rows.get(0).get("queries"));
+        assertEquals("720", rows.get(rows.size() - 1).get("queries"));
         // more than ball and goal were tried, and memory, and several selectors
         assertTrue(rows.stream().anyMatch(r -> !r.get("objectWeights").matches("1/[^/]*/0/0/0/0/0/0")), "wider weights");
         assertTrue(rows.stream().anyMatch(r -> r.get("transforms").equals("memory")));
+        assertTrue(rows.stream().anyMatch(r -> r.get("transforms").equals("long-memory") && r.get("options").contains("memory-depth")),
+                "deeper memory of actions");
         assertTrue(rows.stream().map(r -> r.get("selector") + r.get("k")).distinct().count() >= 3);
         // the winner scores at least as well as every configuration of the last rung
         int last = rungs.stream().mapToInt(Integer::parseInt).max().orElseThrow();

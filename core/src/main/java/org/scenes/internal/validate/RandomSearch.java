@@ -142,11 +142,11 @@ public final class RandomSearch {
     }
 
     /**
-     * Scores a bracket rung by rung; the rows of every rung, the last rung's last. A rung with a
-     * ETA-th of the next one's budget scores on a ETA-th of its queries: every stride-th query
-     * (at least {@link #FIRST_RUNG_QUERIES} per fold) of a subset of the folds (at least two, the
-     * same seeded order for every rung), since each fold costs a knowledge-base pack or index per
-     * configuration; the last rung scores every query of every fold.
+     * Scores a bracket rung by rung; the rows of every rung, the last rung's last. Each rung
+     * spends a third of the next one's queries per configuration: every stride-th query of each
+     * fold (at least {@link #FIRST_RUNG_QUERIES} per fold), and what that cannot take off comes
+     * off the folds (a seeded subset, the same order for every rung, at least two), since each
+     * fold costs a pack or index per metric setting; the last rung scores every query of every fold.
      */
     private List<Tried> halve(List<MatchConfig> candidates, long seed, int firstId, Progress progress, double[] best) {
         int longest = files.stream().mapToInt(f -> f.scenes().size()).max().orElse(1);
@@ -380,6 +380,11 @@ public final class RandomSearch {
         }
         boolean lowDimensional = weights[2] == 0 && weights[3] == 0 && weights[4] == 0 && weights[5] == 0
                 && weights[6] == 0 && weights[7] == 0;
+        if (!lowDimensional) {
+            // the previous scene's flags, lines or players: no packed form, each query decodes and
+            // compares whole scenes (the dearest configurations by far); memory of actions packs
+            memory = 0;
+        }
         Map<String, String> options = new HashMap<>();
         // optimal matching only where groups are small: over flags it is far slower and rarely better
         if (lowDimensional && random.nextInt(3) == 0) {

@@ -187,6 +187,8 @@ public final class Tuner {
                 c -> withMemory(c, 0, 10),
                 c -> withMemory(c, 0, 100),
                 c -> withMemory(c, 0.5, 100),
+                // the previous action first, then the previous scene's objects: Krislet's kicks and turn signs
+                c -> withMemory(c, 0.3, 1000),
                 c -> withMemory(c, 1, 0))));
         dimensions.add(new Dimension("k and selector", List.of(
                 c -> c.withK(1).withSelector("first-valid", Map.of()),
