@@ -16,6 +16,8 @@ import java.util.Map;
 import java.util.TreeMap;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.scenes.api.ActionType;
 import org.scenes.api.Grid;
 import org.scenes.api.ObjectKind;
@@ -58,8 +60,12 @@ class GameLogConverterTest {
     }
 
     private static GameFrame frame(int time, String mode) {
+        return frame(time, mode, (time + 1) / 2);
+    }
+
+    /** Every player's show with {@code dashes} executed. */
+    private static GameFrame frame(int time, String mode, int dashes) {
         List<PlayerState> players = new ArrayList<>();
-        int dashes = (time + 1) / 2;
         for (Side side : Side.values()) {
             for (int unum = 1; unum <= 2; unum++) {
                 double x = (side == Side.LEFT ? -10 : 10) * unum;
@@ -188,6 +194,44 @@ class GameLogConverterTest {
         assertTrue(before.size() > half / 4 && after.size() > (FRAMES - half) / 4, before.size() + ", " + after.size());
         assertTrue(before.stream().allMatch(c -> c % 3 != 1), before.toString());
         assertTrue(after.stream().allMatch(c -> c % 3 != 0), after.toString());
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {0, 1, 2})
+    void anAsynchronousPlayersSeePhaseIsInferredFromWhenItsCommandsCame(int seeless) throws IOException {
+        // every player dashes in the cycles of its sees, which are those t mod 3 != seeless (a see
+        // every 150 ms: two steps in three); the first step's clock gives t mod 3 != 1
+        Path game = dir.resolve("game.rcg");
+        try (GameLogWriter writer = GameLogWriter.create(game, List.of("(server_param (send_step 150)"
+                + "(simulator_step 100))"))) {
+            int dashes = 0;
+            for (int time = 0; time < FRAMES; time++) {
+                writer.write(frame(time, time == 0 ? "kick_off_l" : "play_on", dashes));
+                dashes += time % 3 != seeless ? 1 : 0; // executed at the end of the cycle: in the next show
+            }
+            writer.commit();
+        }
+        Path commands = dir.resolve("game.rcl");
+        try (CommandLogWriter writer = CommandLogWriter.create(commands)) {
+            writer.referee(0, 0, "kick_off_l");
+            for (int time = 0; time < FRAMES; time++) {
+                for (String team : List.of(LEFT, RIGHT)) {
+                    for (int unum = 1; unum <= 2 && time % 3 != seeless; unum++) {
+                        writer.received(time, 0, team, unum, "(dash 50)");
+                    }
+                }
+            }
+            writer.commit();
+        }
+        for (GameLogConverter.SeePhase phase : GameLogConverter.SeePhase.values()) {
+            List<Scene> scenes = new ArrayList<>();
+            new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.HALFWAY, GameLogConverter.only(LEFT, 1), 1)
+                    .seePhase(phase).convert(game, commands, observer -> scenes::add);
+            List<Integer> cycles = scenes.stream().map(Scene::cycle).toList();
+            int expected = phase == GameLogConverter.SeePhase.INFER ? seeless : 1;
+            assertTrue(cycles.size() > FRAMES / 2, phase + ": " + cycles.size());
+            assertTrue(cycles.stream().allMatch(c -> c % 3 != expected), phase + ": " + cycles);
+        }
     }
 
     @Test
