@@ -615,19 +615,31 @@ public final class GameLogConverter {
             }
             readThrough(time + PHASE_WINDOW);
             long shift = step - time + 1;
+            // the stoppage steps of the cycles passed (a goal, half time) shift the later ones
+            int cycle = time;
+            int cycleStoppage = 0;
             List<Long> steps = new ArrayList<>();
             for (CommandLogReader.Entry entry : ahead) {
                 if (entry.time() >= time + PHASE_WINDOW) {
                     break;
                 }
-                if (entry.time() < time || entry.referee() || entry.stoppage() != 0
-                        || !key.equals(entry.team() + "_" + entry.unum()) || entry.text().startsWith("(init ")) {
+                if (entry.time() < time) {
+                    continue;
+                }
+                if (entry.time() != cycle) {
+                    shift += cycleStoppage;
+                    cycle = entry.time();
+                    cycleStoppage = 0;
+                }
+                cycleStoppage = Math.max(cycleStoppage, entry.stoppage());
+                if (entry.referee() || !key.equals(entry.team() + "_" + entry.unum())
+                        || entry.text().startsWith("(init ")) {
                     continue;
                 }
                 if (entry.text().contains("(change_view ")) {
                     break;
                 }
-                steps.add(entry.time() + shift);
+                steps.add(entry.time() + entry.stoppage() + shift);
             }
             double period = period(state);
             List<Double> candidates = candidates(initSteps.get(key), period);

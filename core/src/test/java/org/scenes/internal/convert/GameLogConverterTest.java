@@ -14,6 +14,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.function.IntPredicate;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -232,6 +233,62 @@ class GameLogConverterTest {
             assertTrue(cycles.size() > FRAMES / 2, phase + ": " + cycles.size());
             assertTrue(cycles.stream().allMatch(c -> c % 3 != expected), phase + ": " + cycles);
         }
+    }
+
+    @ParameterizedTest
+    @ValueSource(booleans = {false, true})
+    void rcssserversSeeClockStartsAtTheTickAfterTheInitAndRunsThroughTheHalfTimeBreak(boolean everyCycle)
+            throws IOException {
+        // as rcssserver logs it: players connect in step 26 of cycle 0, kick-off at 0,300; no show of
+        // cycle 0 nor of the half-time break (150,0 to 150,19). The counter's first tick after step 26
+        // (2625, 2662.5 or 2700 ms) puts the sees of the first half in the cycles t mod 3 != 2, != 1
+        // or != 0; after 19 more steps, != 1, != 0, != 2. Dashing every cycle tells nothing: the first
+        // tick; dashing in the cycles t mod 3 != 1 tells the second.
+        int half = 150;
+        IntPredicate dashing = t -> t != half && (everyCycle || (t < half ? t % 3 != 1 : t % 3 != 0));
+        Path game = dir.resolve("game.rcg");
+        try (GameLogWriter writer = GameLogWriter.create(game, List.of("(server_param (send_step 150)"
+                + "(simulator_step 100))"))) {
+            int dashes = 0;
+            for (int time = 1; time < FRAMES; time++) {
+                if (time != half) {
+                    writer.write(frame(time, time == 1 || time == half + 1 ? "kick_off_l" : "play_on", dashes));
+                }
+                dashes += dashing.test(time) ? 1 : 0;
+            }
+            writer.commit();
+        }
+        Path commands = dir.resolve("game.rcl");
+        try (CommandLogWriter writer = CommandLogWriter.create(commands)) {
+            for (String team : List.of(LEFT, RIGHT)) {
+                for (int unum = 1; unum <= 2; unum++) {
+                    writer.received(0, 26, team, unum, "(init " + team + " (version 9))");
+                }
+            }
+            writer.referee(0, 300, "kick_off_l");
+            for (int time = 1; time < FRAMES; time++) {
+                if (time == half) {
+                    writer.referee(time, 0, "half_time");
+                    writer.referee(time, 0, "before_kick_off");
+                    writer.referee(time, 19, "kick_off_l");
+                }
+                for (String team : List.of(LEFT, RIGHT)) {
+                    for (int unum = 1; unum <= 2 && dashing.test(time); unum++) {
+                        writer.received(time, 0, team, unum, "(dash 50)");
+                    }
+                }
+            }
+            writer.commit();
+        }
+        List<Scene> scenes = new ArrayList<>();
+        new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.HALFWAY, GameLogConverter.only(LEFT, 1), 1)
+                .convert(game, commands, observer -> scenes::add);
+        int seeless = everyCycle ? 2 : 1;
+        List<Integer> first = scenes.stream().map(Scene::cycle).filter(c -> c < half).toList();
+        List<Integer> second = scenes.stream().map(Scene::cycle).filter(c -> c > half + 1).toList();
+        assertTrue(first.size() > half / 2 && second.size() > (FRAMES - half) / 2, first.size() + ", " + second.size());
+        assertTrue(first.stream().allMatch(c -> c % 3 != seeless), first.toString());
+        assertTrue(second.stream().allMatch(c -> c % 3 != (seeless + 2) % 3), second.toString());
     }
 
     @Test
