@@ -30,9 +30,9 @@ public final class GameLogOptions {
     private boolean commandsFirst;
 
     @Option(names = "--see-phase", paramLabel = "infer|first-step", defaultValue = "infer",
-            description = {"Game logs: where an asynchronous player's see clock starts: infer (per player, from"
-                    + " when its commands came, as rcssserver's clock starts at the player's connection; default)"
-                    + " or first-step (multiples of the see period from the first step, as the project's simulator"
+            description = {"Game logs: where an asynchronous player's see clock starts: infer (as rcssserver's,"
+                    + " at the player's connection: from its init's step and when its commands came; default) or"
+                    + " first-step (multiples of the see period from the first step, as the project's simulator"
                     + " keeps it)."})
     private String seePhase;
 

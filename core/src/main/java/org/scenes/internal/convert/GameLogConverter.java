@@ -58,9 +58,11 @@ public final class GameLogConverter {
         /** Multiples of the see period from the first step, as the project's simulator keeps it. */
         FIRST_STEP,
         /**
-         * rcssserver's: the player's own see counter, started at its connection, which the logs do not
-         * record; inferred per player from when its commands came (a see-driven player answers in the
-         * cycle of a see), the first step's kept unless another phase explains clearly more of them.
+         * rcssserver's: the player's own see counter, started at the first tick after its connection;
+         * the command log gives the connection's step, not the tick: of the candidates the one that
+         * explains clearly most of the player's commands (a see-driven player answers in the cycle
+         * of a see), else the first. Without the step, the first step's unless another phase
+         * explains clearly more commands.
          */
         INFER
     }
@@ -603,11 +605,11 @@ public final class GameLogConverter {
         }
 
         /**
-         * The phase of an asynchronous player's see clock, in ms from the first step's start: the
-         * offset whose sees fall in the steps of most of the player's commands of the next
-         * {@link #PHASE_WINDOW} cycles (up to its first {@code change_view}), scanned in
-         * {@link #PHASE_GRAIN} ms; 0 unless another explains clearly more. A command logged in a
-         * cycle belongs to the step after that cycle's show, the step its see is sent in.
+         * The phase of an asynchronous player's see clock, in ms from the first step's start: of the
+         * {@link #candidates}, the one whose sees fall in the steps of most of the player's commands
+         * of the next {@link #PHASE_WINDOW} cycles (up to its first {@code change_view}); the first
+         * unless another explains clearly more. A command logged in a cycle belongs to the step
+         * after that cycle's show, the step its see is sent in.
          */
         double seeOffset(String key, int time, PlayerState state) throws IOException {
             if (seePhase == SeePhase.FIRST_STEP) {
@@ -662,7 +664,8 @@ public final class GameLogConverter {
          * (rcssserver's command log counts the steps before kick-off as stoppage), its counter's
          * first tick is one of the 2 or 3 {@code send_step / 4} ticks of the 100 ms after that step,
          * and its first see {@code interval} ticks on; the first tick is taken unless commands tell
-         * otherwise. Without it (or at step 0, as the project's simulator logs every init), any offset in {@link #PHASE_GRAIN} ms, 0 first.
+         * otherwise. Without it (or at step 0, as the project's simulator logs every init), any
+         * offset in {@link #PHASE_GRAIN} ms steps, 0 first.
          */
         List<Double> candidates(Long initStep, double period) {
             List<Double> offsets = new ArrayList<>();
@@ -676,7 +679,7 @@ public final class GameLogConverter {
             long interval = Math.max(1, Math.round(period / tick));
             double from = initStep * simulatorStep;
             for (long t = (long) Math.floor(from / tick + 1e-9) + 1; t * tick <= from + simulatorStep + 1e-9; t++) {
-                // the server's step g sends the sees of the cycle its start makes, this converter's step g - shift + 1
+                // the server's step g sends the sees of the cycle it makes: this converter's step g - shift + 1
                 double see = (t + interval - 1) * tick - (serverShift - 1) * simulatorStep;
                 offsets.add(((see % period) + period) % period);
             }
