@@ -481,6 +481,8 @@ public final class GameLogConverter {
         long step;
         /** The server's step of {@link #step} 0: the steps before the game log's first show. */
         long serverShift;
+        /** The cycle of the last goal the referee announced. */
+        int goalCycle = -1;
         /** The server's step of each player's init, by TEAM_UNUM. */
         final Map<String, Long> initSteps = new HashMap<>();
         String leftTeam = "";
@@ -633,9 +635,11 @@ public final class GameLogConverter {
                     cycle = entry.time();
                     cycleStoppage = 0;
                 }
+                if (entry.referee()) {
+                    continue; // the kick-off after a goal is logged past the cycle's last step
+                }
                 cycleStoppage = Math.max(cycleStoppage, entry.stoppage());
-                if (entry.referee() || !key.equals(entry.team() + "_" + entry.unum())
-                        || entry.text().startsWith("(init ")) {
+                if (!key.equals(entry.team() + "_" + entry.unum()) || entry.text().startsWith("(init ")) {
                     continue;
                 }
                 if (entry.text().contains("(change_view ")) {
@@ -696,15 +700,25 @@ public final class GameLogConverter {
             return count;
         }
 
-        /** The last stoppage of a command log entry of cycle {@code time} still ahead, at least {@code from}. */
+        /**
+         * The last step of cycle {@code time} the command log shows (its last stoppage still ahead,
+         * at least {@code from}). rcssserver logs the kick-off after a goal one stoppage past the
+         * cycle's last step (its players get 51 {@code sense_body} of the goal's cycle, the kick-off
+         * is at stoppage 51); before kick-off and at half time, in the last step.
+         */
         int lastStoppageAt(int time, int from) throws IOException {
             readThrough(time);
             int last = from;
+            boolean goal = goalCycle == time;
             for (CommandLogReader.Entry entry : ahead) {
                 if (entry.time() > time) {
                     break;
                 }
-                if (entry.time() == time) {
+                if (entry.time() != time) {
+                    continue;
+                }
+                goal |= entry.referee() && entry.text().startsWith("goal_");
+                if (!(goal && entry.referee() && entry.text().startsWith("kick_off_"))) {
                     last = Math.max(last, entry.stoppage());
                 }
             }
@@ -793,6 +807,9 @@ public final class GameLogConverter {
         void route(CommandLogReader.Entry entry, List<Sent> into) {
             lastLine = entry.line();
             if (entry.referee()) {
+                if (entry.text().startsWith("goal_")) {
+                    goalCycle = entry.time();
+                }
                 return;
             }
             String team = entry.team();

@@ -240,7 +240,7 @@ class GameLogConverterTest {
     void rcssserversSeeClockStartsAtTheTickAfterTheInitAndRunsThroughTheHalfTimeBreak(boolean everyCycle)
             throws IOException {
         // as rcssserver logs it: players connect in step 26 of cycle 0, kick-off at 0,300; no show of
-        // cycle 0 nor of the half-time break (150,0 to 150,19). The counter's first tick after step 26
+        // cycle 0 nor of the half-time break (150,0 to 150,19, its last step told by the players). The counter's first tick after step 26
         // (2625, 2662.5 or 2700 ms) puts the sees of the first half in the cycles t mod 3 != 2, != 1
         // or != 0; after 19 more steps, != 1, != 0, != 2. Dashing every cycle tells nothing: the first
         // tick; dashing in the cycles t mod 3 != 1 tells the second.
@@ -271,6 +271,9 @@ class GameLogConverterTest {
                     writer.referee(time, 0, "half_time");
                     writer.referee(time, 0, "before_kick_off");
                     writer.referee(time, 19, "kick_off_l");
+                    for (int unum = 1; unum <= 2; unum++) {
+                        writer.received(time, 19, LEFT, unum, "(turn_neck 0)"); // the break's last step
+                    }
                 }
                 for (String team : List.of(LEFT, RIGHT)) {
                     for (int unum = 1; unum <= 2 && dashing.test(time); unum++) {
