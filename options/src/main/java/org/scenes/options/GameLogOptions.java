@@ -29,6 +29,13 @@ public final class GameLogOptions {
             + " command, otherwise after it."})
     private boolean commandsFirst;
 
+    @Option(names = "--see-phase", paramLabel = "infer|first-step", defaultValue = "infer",
+            description = {"Game logs: where an asynchronous player's see clock starts: infer (as rcssserver's,"
+                    + " at the player's connection: from its init's step and when its commands came; default) or"
+                    + " first-step (multiples of the see period from the first step, as the project's simulator"
+                    + " keeps it)."})
+    private String seePhase;
+
     /** The team chosen, null for both. */
     public String team() {
         return team;
@@ -51,6 +58,15 @@ public final class GameLogOptions {
         return commandsFirst;
     }
 
+    /** The see phase the options name. */
+    public GameLogConverter.SeePhase seePhase() {
+        return switch (seePhase) {
+            case "infer" -> GameLogConverter.SeePhase.INFER;
+            case "first-step" -> GameLogConverter.SeePhase.FIRST_STEP;
+            default -> throw new OptionException("--see-phase: expected infer or first-step, not '" + seePhase + "'");
+        };
+    }
+
     /**
      * Checks the options: the fading is known and the number one of a team's.
      *
@@ -58,6 +74,7 @@ public final class GameLogOptions {
      */
     public void check() {
         fading();
+        seePhase();
         if (unum < 0 || unum > 11) {
             throw new OptionException("--unum: a uniform number from 1 to 11, not " + unum);
         }

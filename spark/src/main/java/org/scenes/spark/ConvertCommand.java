@@ -67,7 +67,8 @@ final class ConvertCommand implements Callable<Integer> {
         GameLogOptions g = gameLogOptions;
         g.check();
         GameConversion.Settings settings = GameConversion.Settings.of(gridOptions.grid(), pairingOptions.pairing(), pairingOptions.strict(),
-                new GameConversion.GameLogSettings(g.team(), g.unum(), g.fadingName(), g.fadingSeed(), g.commandsFirst()));
+                new GameConversion.GameLogSettings(g.team(), g.unum(), g.fadingName(), g.fadingSeed(), g.commandsFirst(),
+                        g.seePhase()));
         HadoopFiles hadoop = HadoopFiles.fromEnvironment();
         List<GameConversion.Game> games = games(hadoop);
         for (GameConversion.Game game : games) {

@@ -67,12 +67,13 @@ final class GameConversion {
     static final int WARNINGS_KEPT = 10;
 
     /** The options of {@code scenes convert} for game logs (a null team: any; unum 0: any). */
-    record GameLogSettings(String team, int unum, String fading, long fadingSeed, boolean commandsFirst)
+    record GameLogSettings(String team, int unum, String fading, long fadingSeed, boolean commandsFirst,
+                           GameLogConverter.SeePhase seePhase)
             implements Serializable {
         GameLogConverter converter(Grid grid, Pairing pairing) {
             // one thread: the job's parallelism is its games
             return new GameLogConverter(grid, pairing, Fading.named(fading, fadingSeed),
-                    GameLogConverter.only(team, unum), 1).commandsBeforeSee(commandsFirst);
+                    GameLogConverter.only(team, unum), 1).commandsBeforeSee(commandsFirst).seePhase(seePhase);
         }
     }
 

@@ -46,6 +46,26 @@ public final class GameLogConverter {
     private static final double DISAGREEMENT_REFUSED = 0.2;
     /** Player steps compared before judging. */
     private static final int AGREEMENT_SAMPLE = 200;
+    /** Cycles of a player's commands read ahead to infer the phase of its see clock. */
+    private static final int PHASE_WINDOW = 300;
+    /** Commands more that another phase must explain, as a share of those read, to replace the first step's. */
+    private static final double PHASE_MARGIN = 0.1;
+    /** Steps of the candidate phases, in ms. */
+    private static final double PHASE_GRAIN = 2.5;
+
+    /** Where an asynchronous player's see clock starts. */
+    public enum SeePhase {
+        /** Multiples of the see period from the first step, as the project's simulator keeps it. */
+        FIRST_STEP,
+        /**
+         * rcssserver's: the player's own see counter, started at the first tick after its connection;
+         * the command log gives the connection's step, not the tick: of the candidates the one that
+         * explains clearly most of the player's commands (a see-driven player answers in the cycle
+         * of a see), else the first. Without the step, the first step's unless another phase
+         * explains clearly more commands.
+         */
+        INFER
+    }
 
     /** Where one player's scenes go. */
     @FunctionalInterface
@@ -74,6 +94,7 @@ public final class GameLogConverter {
     private final Predicate<Observer> selected;
     private final int threads;
     private boolean commandsBeforeSee;
+    private SeePhase seePhase = SeePhase.INFER;
 
     /**
      * @param grid and {@code pairing} make the scenes, as for player logs
@@ -100,6 +121,12 @@ public final class GameLogConverter {
      */
     public GameLogConverter commandsBeforeSee(boolean before) {
         this.commandsBeforeSee = before;
+        return this;
+    }
+
+    /** Where asynchronous players' see clocks start (default {@link SeePhase#INFER}). */
+    public GameLogConverter seePhase(SeePhase phase) {
+        this.seePhase = Objects.requireNonNull(phase, "phase");
         return this;
     }
 
@@ -155,6 +182,8 @@ public final class GameLogConverter {
         SceneConverter.Feed feed;
         SeeWriter writer;
         boolean synchSee;
+        /** Where the player's asynchronous see clock starts, in ms from the first step's start. */
+        final double seeOffset;
         int type = -1;
         /** The executed command counts at the last show, and whether a body command was sent since. */
         int executed = -1;
@@ -166,7 +195,8 @@ public final class GameLogConverter {
         long disagreed;
 
         Player(Observer observer, String key, SceneConverter.SceneSink sink, Worker worker, int version,
-               boolean synchSee, Fading fading) {
+               boolean synchSee, double seeOffset, Fading fading) {
+            this.seeOffset = seeOffset;
             this.observer = observer;
             this.key = key;
             this.sink = sink;
@@ -374,11 +404,7 @@ public final class GameLogConverter {
                 int every = (int) Math.max(1, Math.round(factor * 1.5));
                 return next % every == 0 ? 1 : 0;
             }
-            double period = run.sendStep * factor * (state.viewQuality() == 'h' ? 1 : 0.5);
-            double begin = next * run.simulatorStep;
-            double end = begin + run.simulatorStep;
-            double first = Math.ceil(begin / period - 1e-9) * period;
-            return first < end - 1e-9 ? (int) Math.floor((end - 1e-9 - first) / period) + 1 : 0;
+            return asynchSees(next, run.period(state), player.seeOffset, run.simulatorStep);
         }
 
         void see(Player player, PlayerState self, GameFrame frame) throws IOException {
@@ -453,6 +479,12 @@ public final class GameLogConverter {
         int lastStoppage;
         String lastMode;
         long step;
+        /** The server's step of {@link #step} 0: the steps before the game log's first show. */
+        long serverShift;
+        /** The cycle of the last goal the referee announced. */
+        int goalCycle = -1;
+        /** The server's step of each player's init, by TEAM_UNUM. */
+        final Map<String, Long> initSteps = new HashMap<>();
         String leftTeam = "";
         String rightTeam = "";
         double visibleAngle = 90;
@@ -535,10 +567,14 @@ public final class GameLogConverter {
             if (frames == 0) {
                 // steps from 0; a standing clock's first step has stoppage 1
                 step = time + Math.max(0, stoppage - 1);
+                // the server's steps before: those of cycle 0 (before kick-off) when the log starts later
+                serverShift = time > 0 ? lastStoppageAt(0, 0) : 0;
             } else if (time == lastTime) {
                 step += stoppage - lastStoppage;
             } else {
-                step += (time - lastTime) + stoppage;
+                // stoppage steps of the cycles since the previous show that the game log skipped
+                // (rcssserver's JSON log has no show of the half-time break): the command log tells
+                step += (time - lastTime) + stoppage + skippedStoppage(lastTime, lastStoppage, time);
             }
             // what was sent before this show: the players' inits (versions) come before their first show
             List<Sent> before = new ArrayList<>();
@@ -563,6 +599,143 @@ public final class GameLogConverter {
             lastStoppage = stoppage;
             lastMode = mode;
             frames++;
+        }
+
+        /** The period of a player's asynchronous sees in its view mode, in ms. */
+        double period(PlayerState state) {
+            return sendStep * state.viewWidth() / visibleAngle * (state.viewQuality() == 'h' ? 1 : 0.5);
+        }
+
+        /**
+         * The phase of an asynchronous player's see clock, in ms from the first step's start: of the
+         * {@link #candidates}, the one whose sees fall in the steps of most of the player's commands
+         * of the next {@link #PHASE_WINDOW} cycles (up to its first {@code change_view}); the first
+         * unless another explains clearly more. A command logged in a cycle belongs to the step
+         * after that cycle's show, the step its see is sent in.
+         */
+        double seeOffset(String key, int time, PlayerState state) throws IOException {
+            if (seePhase == SeePhase.FIRST_STEP) {
+                return 0;
+            }
+            readThrough(time + PHASE_WINDOW);
+            long shift = step - time + 1;
+            // the stoppage steps of the cycles passed (a goal, half time) shift the later ones
+            int cycle = time;
+            int cycleStoppage = 0;
+            List<Long> steps = new ArrayList<>();
+            for (CommandLogReader.Entry entry : ahead) {
+                if (entry.time() >= time + PHASE_WINDOW) {
+                    break;
+                }
+                if (entry.time() < time) {
+                    continue;
+                }
+                if (entry.time() != cycle) {
+                    shift += cycleStoppage;
+                    cycle = entry.time();
+                    cycleStoppage = 0;
+                }
+                if (entry.referee()) {
+                    continue; // the kick-off after a goal is logged past the cycle's last step
+                }
+                cycleStoppage = Math.max(cycleStoppage, entry.stoppage());
+                if (!key.equals(entry.team() + "_" + entry.unum()) || entry.text().startsWith("(init ")) {
+                    continue;
+                }
+                if (entry.text().contains("(change_view ")) {
+                    break;
+                }
+                steps.add(entry.time() + entry.stoppage() + shift);
+            }
+            double period = period(state);
+            List<Double> candidates = candidates(initSteps.get(key), period);
+            double first = candidates.get(0);
+            double bestOffset = first;
+            int firstScore = explained(steps, period, first);
+            int best = firstScore;
+            for (double offset : candidates) {
+                int score = explained(steps, period, offset);
+                if (score > best) {
+                    best = score;
+                    bestOffset = offset;
+                }
+            }
+            return best - firstScore > PHASE_MARGIN * steps.size() ? bestOffset : first;
+        }
+
+        /**
+         * The offsets the player's see clock may have, the likeliest first. With its init's step known
+         * (rcssserver's command log counts the steps before kick-off as stoppage), its counter's
+         * first tick is one of the 2 or 3 {@code send_step / 4} ticks of the 100 ms after that step,
+         * and its first see {@code interval} ticks on; the first tick is taken unless commands tell
+         * otherwise. Without it (or at step 0, as the project's simulator logs every init), any
+         * offset in {@link #PHASE_GRAIN} ms steps, 0 first.
+         */
+        List<Double> candidates(Long initStep, double period) {
+            List<Double> offsets = new ArrayList<>();
+            if (initStep == null || initStep == 0) {
+                for (double offset = 0; offset < period - 1e-9; offset += PHASE_GRAIN) {
+                    offsets.add(offset);
+                }
+                return offsets;
+            }
+            double tick = sendStep / 4;
+            long interval = Math.max(1, Math.round(period / tick));
+            double from = initStep * simulatorStep;
+            for (long t = (long) Math.floor(from / tick + 1e-9) + 1; t * tick <= from + simulatorStep + 1e-9; t++) {
+                // the server's step g sends the sees of the cycle it makes: this converter's step g - shift + 1
+                double see = (t + interval - 1) * tick - (serverShift - 1) * simulatorStep;
+                offsets.add(((see % period) + period) % period);
+            }
+            return offsets;
+        }
+
+        private int explained(List<Long> steps, double period, double offset) {
+            int count = 0;
+            for (long s : steps) {
+                if (asynchSees(s, period, offset, simulatorStep) > 0) {
+                    count++;
+                }
+            }
+            return count;
+        }
+
+        /**
+         * The last step of cycle {@code time} the command log shows (its last stoppage still ahead,
+         * at least {@code from}). rcssserver logs the kick-off after a goal one stoppage past the
+         * cycle's last step (its players get 51 {@code sense_body} of the goal's cycle, the kick-off
+         * is at stoppage 51); before kick-off and at half time, in the last step.
+         */
+        int lastStoppageAt(int time, int from) throws IOException {
+            readThrough(time);
+            int last = from;
+            boolean goal = goalCycle == time;
+            for (CommandLogReader.Entry entry : ahead) {
+                if (entry.time() > time) {
+                    break;
+                }
+                if (entry.time() != time) {
+                    continue;
+                }
+                goal |= entry.referee() && entry.text().startsWith("goal_");
+                if (!(goal && entry.referee() && entry.text().startsWith("kick_off_"))) {
+                    last = Math.max(last, entry.stoppage());
+                }
+            }
+            return last;
+        }
+
+        /**
+         * The stoppage steps the command log holds for the cycles from {@code from} (after its
+         * stoppage {@code counted}) to before {@code to}, which no show between them counted.
+         */
+        long skippedStoppage(int from, int counted, int to) throws IOException {
+            long skipped = 0;
+            for (int time = from; time < to && time <= from + 1000; time++) {
+                int base = time == from ? counted : 0;
+                skipped += lastStoppageAt(time, base) - base;
+            }
+            return skipped;
         }
 
         /** The stoppage of the referee's announcement of {@code mode} at {@code time}, or -1. */
@@ -634,6 +807,9 @@ public final class GameLogConverter {
         void route(CommandLogReader.Entry entry, List<Sent> into) {
             lastLine = entry.line();
             if (entry.referee()) {
+                if (entry.text().startsWith("goal_")) {
+                    goalCycle = entry.time();
+                }
                 return;
             }
             String team = entry.team();
@@ -646,6 +822,8 @@ public final class GameLogConverter {
             String message = entry.text();
             if (message.startsWith("(init ")) {
                 versions.put(key, version(message));
+                // the clock stands before kick-off: its steps are the stoppage
+                initSteps.put(key, entry.time() == 0 ? entry.stoppage() : entry.time() + serverShift + entry.stoppage());
                 return;
             }
             Player player = players.get(key);
@@ -675,7 +853,7 @@ public final class GameLogConverter {
                         // cones only synchronous vision has (60 and 120 degrees): a log without the init
                         || Math.abs(factor - 2.0 / 3) < 1e-6 || Math.abs(factor - 4.0 / 3) < 1e-6;
                 player = new Player(observer, key, output.open(observer), workers.get(nextWorker++ % threads),
-                        version, synch, fading.forObserver(key));
+                        version, synch, synch ? 0 : seeOffset(key, frame.time(), state), fading.forObserver(key));
                 if (state.unum() >= 0 && state.unum() < 64) {
                     slots[state.side() == Side.LEFT ? 0 : 1][state.unum()] = player;
                 }
@@ -779,6 +957,17 @@ public final class GameLogConverter {
                 return 3;
             }
         }
+    }
+
+    /**
+     * How many asynchronous sees fall in step {@code step}: those at {@code offset} plus multiples
+     * of {@code period} (ms) from the first step's start.
+     */
+    static int asynchSees(long step, double period, double offset, double simulatorStep) {
+        double begin = step * simulatorStep - offset;
+        double end = begin + simulatorStep;
+        double first = Math.ceil(begin / period - 1e-9) * period;
+        return first < end - 1e-9 ? (int) Math.floor((end - 1e-9 - first) / period) + 1 : 0;
     }
 
     /** Whether a line a player sent holds a body command, which the server counts once executed. */

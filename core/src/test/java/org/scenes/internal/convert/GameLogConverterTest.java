@@ -14,8 +14,11 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.function.IntPredicate;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.scenes.api.ActionType;
 import org.scenes.api.Grid;
 import org.scenes.api.ObjectKind;
@@ -58,8 +61,12 @@ class GameLogConverterTest {
     }
 
     private static GameFrame frame(int time, String mode) {
+        return frame(time, mode, (time + 1) / 2);
+    }
+
+    /** Every player's show with {@code dashes} executed. */
+    private static GameFrame frame(int time, String mode, int dashes) {
         List<PlayerState> players = new ArrayList<>();
-        int dashes = (time + 1) / 2;
         for (Side side : Side.values()) {
             for (int unum = 1; unum <= 2; unum++) {
                 double x = (side == Side.LEFT ? -10 : 10) * unum;
@@ -188,6 +195,103 @@ class GameLogConverterTest {
         assertTrue(before.size() > half / 4 && after.size() > (FRAMES - half) / 4, before.size() + ", " + after.size());
         assertTrue(before.stream().allMatch(c -> c % 3 != 1), before.toString());
         assertTrue(after.stream().allMatch(c -> c % 3 != 0), after.toString());
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {0, 1, 2})
+    void anAsynchronousPlayersSeePhaseIsInferredFromWhenItsCommandsCame(int seeless) throws IOException {
+        // every player dashes in the cycles of its sees, which are those t mod 3 != seeless (a see
+        // every 150 ms: two steps in three); the first step's clock gives t mod 3 != 1
+        Path game = dir.resolve("game.rcg");
+        try (GameLogWriter writer = GameLogWriter.create(game, List.of("(server_param (send_step 150)"
+                + "(simulator_step 100))"))) {
+            int dashes = 0;
+            for (int time = 0; time < FRAMES; time++) {
+                writer.write(frame(time, time == 0 ? "kick_off_l" : "play_on", dashes));
+                dashes += time % 3 != seeless ? 1 : 0; // executed at the end of the cycle: in the next show
+            }
+            writer.commit();
+        }
+        Path commands = dir.resolve("game.rcl");
+        try (CommandLogWriter writer = CommandLogWriter.create(commands)) {
+            writer.referee(0, 0, "kick_off_l");
+            for (int time = 0; time < FRAMES; time++) {
+                for (String team : List.of(LEFT, RIGHT)) {
+                    for (int unum = 1; unum <= 2 && time % 3 != seeless; unum++) {
+                        writer.received(time, 0, team, unum, "(dash 50)");
+                    }
+                }
+            }
+            writer.commit();
+        }
+        for (GameLogConverter.SeePhase phase : GameLogConverter.SeePhase.values()) {
+            List<Scene> scenes = new ArrayList<>();
+            new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.HALFWAY, GameLogConverter.only(LEFT, 1), 1)
+                    .seePhase(phase).convert(game, commands, observer -> scenes::add);
+            List<Integer> cycles = scenes.stream().map(Scene::cycle).toList();
+            int expected = phase == GameLogConverter.SeePhase.INFER ? seeless : 1;
+            assertTrue(cycles.size() > FRAMES / 2, phase + ": " + cycles.size());
+            assertTrue(cycles.stream().allMatch(c -> c % 3 != expected), phase + ": " + cycles);
+        }
+    }
+
+    @ParameterizedTest
+    @ValueSource(booleans = {false, true})
+    void rcssserversSeeClockStartsAtTheTickAfterTheInitAndRunsThroughTheHalfTimeBreak(boolean everyCycle)
+            throws IOException {
+        // as rcssserver logs it: players connect in step 26 of cycle 0, kick-off at 0,300; no show of
+        // cycle 0 nor of the half-time break (150,0 to 150,19, its last step told by the players). The counter's first tick after step 26
+        // (2625, 2662.5 or 2700 ms) puts the sees of the first half in the cycles t mod 3 != 2, != 1
+        // or != 0; after 19 more steps, != 1, != 0, != 2. Dashing every cycle tells nothing: the first
+        // tick; dashing in the cycles t mod 3 != 1 tells the second.
+        int half = 150;
+        IntPredicate dashing = t -> t != half && (everyCycle || (t < half ? t % 3 != 1 : t % 3 != 0));
+        Path game = dir.resolve("game.rcg");
+        try (GameLogWriter writer = GameLogWriter.create(game, List.of("(server_param (send_step 150)"
+                + "(simulator_step 100))"))) {
+            int dashes = 0;
+            for (int time = 1; time < FRAMES; time++) {
+                if (time != half) {
+                    writer.write(frame(time, time == 1 || time == half + 1 ? "kick_off_l" : "play_on", dashes));
+                }
+                dashes += dashing.test(time) ? 1 : 0;
+            }
+            writer.commit();
+        }
+        Path commands = dir.resolve("game.rcl");
+        try (CommandLogWriter writer = CommandLogWriter.create(commands)) {
+            for (String team : List.of(LEFT, RIGHT)) {
+                for (int unum = 1; unum <= 2; unum++) {
+                    writer.received(0, 26, team, unum, "(init " + team + " (version 9))");
+                }
+            }
+            writer.referee(0, 300, "kick_off_l");
+            for (int time = 1; time < FRAMES; time++) {
+                if (time == half) {
+                    writer.referee(time, 0, "half_time");
+                    writer.referee(time, 0, "before_kick_off");
+                    writer.referee(time, 19, "kick_off_l");
+                    for (int unum = 1; unum <= 2; unum++) {
+                        writer.received(time, 19, LEFT, unum, "(turn_neck 0)"); // the break's last step
+                    }
+                }
+                for (String team : List.of(LEFT, RIGHT)) {
+                    for (int unum = 1; unum <= 2 && dashing.test(time); unum++) {
+                        writer.received(time, 0, team, unum, "(dash 50)");
+                    }
+                }
+            }
+            writer.commit();
+        }
+        List<Scene> scenes = new ArrayList<>();
+        new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.HALFWAY, GameLogConverter.only(LEFT, 1), 1)
+                .convert(game, commands, observer -> scenes::add);
+        int seeless = everyCycle ? 2 : 1;
+        List<Integer> first = scenes.stream().map(Scene::cycle).filter(c -> c < half).toList();
+        List<Integer> second = scenes.stream().map(Scene::cycle).filter(c -> c > half + 1).toList();
+        assertTrue(first.size() > half / 2 && second.size() > (FRAMES - half) / 2, first.size() + ", " + second.size());
+        assertTrue(first.stream().allMatch(c -> c % 3 != seeless), first.toString());
+        assertTrue(second.stream().allMatch(c -> c % 3 != (seeless + 2) % 3), second.toString());
     }
 
     @Test
