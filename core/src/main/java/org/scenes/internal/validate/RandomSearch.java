@@ -12,6 +12,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.scenes.api.Action;
 import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionType;
 import org.scenes.api.ActionWeights;
 import org.scenes.api.Neighbour;
 import org.scenes.api.ObjectWeights;
@@ -56,6 +57,8 @@ public final class RandomSearch {
     private static final int ETA = 3;
     /** Queries per fold at the first rung, at least, so that small samples still rank. */
     private static final int FIRST_RUNG_QUERIES = 150;
+    /** Queries per action type per fold in a sample, at least (all of a type that has fewer). */
+    private static final int MIN_PER_ACTION = 8;
     /** 200 configurations: 200, 67, 23, 8, 3; the last rung, on every query, is the dearest. */
     private static final int MAX_RUNGS = 5;
 
@@ -144,7 +147,7 @@ public final class RandomSearch {
     /**
      * Scores a bracket rung by rung; the rows of every rung, the last rung's last. Each rung
      * spends a third of the next one's queries per configuration: every stride-th query of each
-     * fold (at least {@link #FIRST_RUNG_QUERIES} per fold), and what that cannot take off comes
+     * fold and action type ({@link #sample}; at least {@link #FIRST_RUNG_QUERIES} per fold), and what that cannot take off comes
      * off the folds (a seeded subset, the same order for every rung, at least two), since each
      * fold costs a pack or index per metric setting; the last rung scores every query of every fold.
      */
@@ -233,8 +236,10 @@ public final class RandomSearch {
                 List<Scene> test = new ArrayList<>();
                 List<List<Neighbour>> found = new ArrayList<>();
                 List<Integer> positions = new ArrayList<>();
-                long[] nanos = new long[(all.size() + stride - 1) / stride];
-                for (int i = 0, q = 0; i < all.size(); i += stride, q++) {
+                int[] sample = sample(all, stride);
+                long[] nanos = new long[sample.length];
+                for (int q = 0; q < sample.length; q++) {
+                    int i = sample[q];
                     long begin = System.nanoTime();
                     found.add(recognizer.nearest(all.get(i)));
                     nanos[q] = System.nanoTime() - begin;
@@ -273,6 +278,27 @@ public final class RandomSearch {
             }
         });
         return scores;
+    }
+
+    /**
+     * The positions a rung queries in one fold, ascending: every stride-th scene of each action
+     * type (so each type keeps its share), and at least {@link #MIN_PER_ACTION} of a rarer one (all
+     * of it when it has fewer), since a sample holding no kick scores kick F1, and so macro F1, as noise.
+     * Stride 1 is every scene.
+     */
+    static int[] sample(List<Scene> scenes, int stride) {
+        Map<ActionType, List<Integer>> byType = new java.util.EnumMap<>(ActionType.class);
+        for (int i = 0; i < scenes.size(); i++) {
+            byType.computeIfAbsent(scenes.get(i).actionType(), type -> new ArrayList<>()).add(i);
+        }
+        List<Integer> chosen = new ArrayList<>();
+        for (List<Integer> members : byType.values()) {
+            int take = Math.min(members.size(), Math.max(MIN_PER_ACTION, (members.size() + stride - 1) / stride));
+            for (int j = 0; j < take; j++) {
+                chosen.add(members.get((int) ((long) j * members.size() / take))); // evenly spread over the fold
+            }
+        }
+        return chosen.stream().mapToInt(Integer::intValue).sorted().toArray();
     }
 
     /** What decides the neighbours: all but k, selector, action weights and seed. */
