@@ -26,8 +26,8 @@ import org.scenes.internal.scene.SceneFile;
  * The wide search of {@code scenes tune --search random}: seeded random configurations over
  * every object class (ball, goals, flags, lines, players by relation), the three object-set
  * metrics and {@code ball-goal}, both matchings, both spaces, penalties and rows, memory of the
- * previous scene and of one to four previous actions (with decay), k and selectors with vote
- * weights; scored by cross-validation on the training files only and narrowed by successive
+ * previous scene (its directions weighed apart in polar space) and of one to four previous
+ * actions (with decay), k and selectors with vote weights; scored by cross-validation on the training files only and narrowed by successive
  * halving: every configuration is scored on a sample of the queries of a subset of the folds,
  * the best third goes on to three times as many, until the last rung scores the survivors on
  * every query of every fold. Configurations that differ only in k and
@@ -420,7 +420,12 @@ public final class RandomSearch {
         if (polar) {
             options.put("space", "polar");
             options.put("distance-weight", format(pick(random, 1, 3, 10, 30, 100)));
-            options.put("direction-weight", format(pick(random, 0.3, 1, 3, 10, 30, 100)));
+            double direction = pick(random, 0.3, 1, 3, 10, 30, 100);
+            options.put("direction-weight", format(direction));
+            if (memory > 0 && random.nextBoolean()) {
+                // the previous scene's directions weighed less than the current one's (better for Krislet)
+                options.put("memory-direction-weight", format(direction * pick(random, 0.1, 0.3)));
+            }
         }
         if (!name.equals("cell") && random.nextInt(10) < 7) {
             options.put("log-distance", "true");
