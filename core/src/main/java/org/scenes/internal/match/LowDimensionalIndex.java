@@ -175,7 +175,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         for (int i = 0; i < n; i++) {
             Scene scene = scenes.get(i);
             float[][] current = metric.encode(scene, false).groups();
-            float[][] previous = remember ? metric.encode(scene.previous(), false).groups() : null;
+            float[][] previous = remember ? metric.encodePrevious(scene.previous()).groups() : null;
             for (int s = 0; s < slots; s++) {
                 float[] objects = (slotPrevious[s] ? previous : current)[slotGroup[s]];
                 if (objects.length > stride) {
@@ -466,7 +466,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     public void scan(Scene query, TopK top) {
         int slots = slotGroup.length;
         float[][] current = metric.encode(query, false).groups();
-        float[][] previous = slotPrevious[slots - 1] ? metric.encode(query.previous(), false).groups() : null;
+        float[][] previous = slotPrevious[slots - 1] ? metric.encodePrevious(query.previous()).groups() : null;
         float[][] q = new float[slots][];
         int[] qn = new int[slots];
         double[] qPenalty = new double[slots];

@@ -57,11 +57,12 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * @param memoryDecay the i-th action back costs {@code memoryActionWeight · memoryDecay^(i-1)}
      * @param nearestPlayers compare only the nearest player of each player class (all players,
      *        teammates, opponents, unknown), so every group holds at most one object
+     * @param memoryDirectionWeight direction weight of the remembered previous scene (polar)
      */
     public record Settings(ObjectWeights weights, Matching matching, Space space, boolean logDistance,
                            double distanceWeight, double directionWeight, double rowWeight, double penalty, double penaltyScale,
                            double projectCycles, double memoryWeight, double memoryActionWeight, int memoryDepth,
-                           double memoryDecay, boolean nearestPlayers) {
+                           double memoryDecay, boolean nearestPlayers, double memoryDirectionWeight) {
         public Settings {
             if (memoryDepth < 1 || memoryDepth > Scene.MAX_MEMORY) {
                 throw new PluginException("memory-depth must be a whole number from 1 to " + Scene.MAX_MEMORY + ", not " + memoryDepth);
@@ -69,7 +70,8 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             if (!(memoryDecay >= 0) || Double.isInfinite(memoryDecay)) {
                 throw new PluginException("memory-decay must be finite and not negative, not " + memoryDecay);
             }
-            for (double value : new double[] {distanceWeight, directionWeight, rowWeight, penalty, memoryWeight, memoryActionWeight}) {
+            for (double value : new double[] {distanceWeight, directionWeight, rowWeight, penalty, memoryWeight, memoryActionWeight,
+                    memoryDirectionWeight}) {
                 if (!(value >= 0) || Double.isInfinite(value)) {
                     throw new PluginException("metric weights and penalties must be finite and not negative");
                 }
@@ -91,6 +93,8 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         options.put("penalty", "cost of an unmatched object at the observer (default 10)");
         options.put("penalty-scale", "distance at which the unmatched penalty halves (default 10)");
         options.put("memory", "weight of the remembered previous scene (needs the memory transform; default 0)");
+        options.put("memory-direction-weight", "direction-weight of the remembered previous scene, per degree, in polar space"
+                + " (default: direction-weight)");
         options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
         options.put("nearest-players", "true to compare only the nearest player of each weighted player class"
                 + " (teammates, opponents, unknown, all players), which the exact index then serves (default false)");
@@ -139,7 +143,8 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 config.doubleOption("penalty", 10), config.doubleOption("penalty-scale", 10),
                 config.doubleOption("cycles", defaultProjection), config.doubleOption("memory", 0),
                 config.doubleOption("memory-action", 0), memoryDepth(config), config.doubleOption("memory-decay", 0.5),
-                flag(config, "nearest-players"));
+                flag(config, "nearest-players"),
+                config.doubleOption("memory-direction-weight", config.doubleOption("direction-weight", 1)));
     }
 
     /** A true/false option, false by default. */
@@ -285,7 +290,20 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     /** The encoding of an empty group, shared (encodings are never written to). */
     private static final float[] NO_OBJECTS = new float[0];
 
+    /**
+     * The remembered previous scene as the memory term compares it: as {@link #encode(Scene, boolean)}
+     * without memory, but with memory-direction-weight, since the direction that tells a turn from a dash
+     * now may be noise one scene back.
+     */
+    Encoded encodePrevious(Scene previous) {
+        return encode(previous, false, settings.memoryDirectionWeight());
+    }
+
     Encoded encode(Scene scene, boolean withMemory) {
+        return encode(scene, withMemory, settings.directionWeight());
+    }
+
+    private Encoded encode(Scene scene, boolean withMemory, double directionWeight) {
         if (scene == null) {
             return new Encoded(new float[GROUPS][0], null, NO_ACTIONS);
         }
@@ -297,10 +315,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         for (SeenObject object : scene.objects()) {
             int group = groupOf(object);
             if (groupWeight[group] > 0) {
-                groups.get(group).add(place(object));
+                groups.get(group).add(place(object, directionWeight));
             }
             if (object.kind() == ObjectKind.PLAYER && groupWeight[PLAYERS] > 0) {
-                groups.get(PLAYERS).add(place(object));
+                groups.get(PLAYERS).add(place(object, directionWeight));
             }
         }
         float[][] packed = new float[GROUPS][];
@@ -328,7 +346,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             packed[group] = values;
         }
         boolean remember = withMemory && (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0);
-        Encoded previous = remember && settings.memoryWeight() > 0 ? encode(scene.previous(), false) : null;
+        Encoded previous = remember && settings.memoryWeight() > 0 ? encodePrevious(scene.previous()) : null;
         return new Encoded(packed, previous, remember ? rememberedActions(scene) : NO_ACTIONS);
     }
 
@@ -390,7 +408,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     }
 
     /** (a, b, penalty, weighted row) of one object in the configured space, rounded to floats. */
-    private Placed place(SeenObject object) {
+    private Placed place(SeenObject object, double directionWeight) {
         double r = object.distance();
         double direction = Double.isNaN(object.direction()) ? 0 : object.direction();
         if (settings.projectCycles() != 0) {
@@ -416,7 +434,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             }
             case POLAR -> {
                 a = settings.distanceWeight() * radial;
-                b = settings.directionWeight() * direction;
+                b = directionWeight * direction;
             }
             default -> {
                 a = object.cell().column();

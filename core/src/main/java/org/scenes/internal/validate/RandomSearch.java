@@ -12,6 +12,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.scenes.api.Action;
 import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionType;
 import org.scenes.api.ActionWeights;
 import org.scenes.api.Neighbour;
 import org.scenes.api.ObjectWeights;
@@ -25,8 +26,8 @@ import org.scenes.internal.scene.SceneFile;
  * The wide search of {@code scenes tune --search random}: seeded random configurations over
  * every object class (ball, goals, flags, lines, players by relation), the three object-set
  * metrics and {@code ball-goal}, both matchings, both spaces, penalties and rows, memory of the
- * previous scene and of one to four previous actions (with decay), k and selectors with vote
- * weights; scored by cross-validation on the training files only and narrowed by successive
+ * previous scene (its directions weighed apart in polar space) and of one to four previous
+ * actions (with decay), k and selectors with vote weights; scored by cross-validation on the training files only and narrowed by successive
  * halving: every configuration is scored on a sample of the queries of a subset of the folds,
  * the best third goes on to three times as many, until the last rung scores the survivors on
  * every query of every fold. Configurations that differ only in k and
@@ -56,6 +57,8 @@ public final class RandomSearch {
     private static final int ETA = 3;
     /** Queries per fold at the first rung, at least, so that small samples still rank. */
     private static final int FIRST_RUNG_QUERIES = 150;
+    /** Queries per action type per fold in a sample, at least (all of a type that has fewer). */
+    private static final int MIN_PER_ACTION = 8;
     /** 200 configurations: 200, 67, 23, 8, 3; the last rung, on every query, is the dearest. */
     private static final int MAX_RUNGS = 5;
 
@@ -144,7 +147,7 @@ public final class RandomSearch {
     /**
      * Scores a bracket rung by rung; the rows of every rung, the last rung's last. Each rung
      * spends a third of the next one's queries per configuration: every stride-th query of each
-     * fold (at least {@link #FIRST_RUNG_QUERIES} per fold), and what that cannot take off comes
+     * fold and action type ({@link #sample}; at least {@link #FIRST_RUNG_QUERIES} per fold), and what that cannot take off comes
      * off the folds (a seeded subset, the same order for every rung, at least two), since each
      * fold costs a pack or index per metric setting; the last rung scores every query of every fold.
      */
@@ -233,8 +236,10 @@ public final class RandomSearch {
                 List<Scene> test = new ArrayList<>();
                 List<List<Neighbour>> found = new ArrayList<>();
                 List<Integer> positions = new ArrayList<>();
-                long[] nanos = new long[(all.size() + stride - 1) / stride];
-                for (int i = 0, q = 0; i < all.size(); i += stride, q++) {
+                int[] sample = sample(all, stride);
+                long[] nanos = new long[sample.length];
+                for (int q = 0; q < sample.length; q++) {
+                    int i = sample[q];
                     long begin = System.nanoTime();
                     found.add(recognizer.nearest(all.get(i)));
                     nanos[q] = System.nanoTime() - begin;
@@ -273,6 +278,27 @@ public final class RandomSearch {
             }
         });
         return scores;
+    }
+
+    /**
+     * The positions a rung queries in one fold, ascending: every stride-th scene of each action
+     * type (so each type keeps its share), and at least {@link #MIN_PER_ACTION} of a rarer one (all
+     * of it when it has fewer), since a sample holding no kick scores kick F1, and so macro F1, as noise.
+     * Stride 1 is every scene.
+     */
+    static int[] sample(List<Scene> scenes, int stride) {
+        Map<ActionType, List<Integer>> byType = new java.util.EnumMap<>(ActionType.class);
+        for (int i = 0; i < scenes.size(); i++) {
+            byType.computeIfAbsent(scenes.get(i).actionType(), type -> new ArrayList<>()).add(i);
+        }
+        List<Integer> chosen = new ArrayList<>();
+        for (List<Integer> members : byType.values()) {
+            int take = Math.min(members.size(), Math.max(MIN_PER_ACTION, (members.size() + stride - 1) / stride));
+            for (int j = 0; j < take; j++) {
+                chosen.add(members.get((int) ((long) j * members.size() / take))); // evenly spread over the fold
+            }
+        }
+        return chosen.stream().mapToInt(Integer::intValue).sorted().toArray();
     }
 
     /** What decides the neighbours: all but k, selector, action weights and seed. */
@@ -394,7 +420,12 @@ public final class RandomSearch {
         if (polar) {
             options.put("space", "polar");
             options.put("distance-weight", format(pick(random, 1, 3, 10, 30, 100)));
-            options.put("direction-weight", format(pick(random, 0.3, 1, 3, 10, 30, 100)));
+            double direction = pick(random, 0.3, 1, 3, 10, 30, 100);
+            options.put("direction-weight", format(direction));
+            if (memory > 0 && random.nextBoolean()) {
+                // the previous scene's directions weighed less than the current one's (better for Krislet)
+                options.put("memory-direction-weight", format(direction * pick(random, 0.1, 0.3)));
+            }
         }
         if (!name.equals("cell") && random.nextInt(10) < 7) {
             options.put("log-distance", "true");

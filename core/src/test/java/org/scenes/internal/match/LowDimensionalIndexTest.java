@@ -51,7 +51,9 @@ class LowDimensionalIndexTest {
             Map.of("space", "polar", "row-weight", "2", "memory", "0.5"),
             Map.of("matching", "optimal", "space", "polar", "log-distance", "true", "memory", "0.3", "memory-action", "7"),
             Map.of("matching", "optimal", "penalty", "0.5", "penalty-scale", "3"),
-            Map.of("memory-action", "3", "row-weight", "1"));
+            Map.of("memory-action", "3", "row-weight", "1"),
+            Map.of("space", "polar", "direction-weight", "100", "memory-direction-weight", "10", "memory", "0.3",
+                    "memory-action", "1000"));
 
     /** Configurations with the nearest player of each kind, with and without memory terms. */
     private static final List<Map<String, String>> NEAREST_CONFIGURATIONS = List.of(

@@ -130,6 +130,23 @@ class ObjectSetMetricTest {
     }
 
     @Test
+    void thePreviousSceneHasItsOwnDirectionWeight() {
+        // the two previous scenes differ by 20 degrees of ball direction, the current ones by 4
+        Scene a = TestScenes.scene(2, Action.turn(-10), TestScenes.ball(5, -10))
+                .withPrevious(TestScenes.scene(1, null, TestScenes.ball(5, -30)));
+        Scene b = TestScenes.scene(2, Action.turn(-10), TestScenes.ball(5, -6))
+                .withPrevious(TestScenes.scene(1, null, TestScenes.ball(5, -10)));
+        ObjectSetMetric same = metric(Map.of("space", "polar", "direction-weight", "100", "memory", "0.5"),
+                ObjectSetMetric.Space.CARTESIAN);
+        assertEquals(100 * 4 + 0.5 * 100 * 20, same.distance(a, b), 1e-6, "by default the direction weight of both");
+        ObjectSetMetric own = metric(Map.of("space", "polar", "direction-weight", "100", "memory", "0.5",
+                "memory-direction-weight", "3"), ObjectSetMetric.Space.CARTESIAN);
+        assertEquals(100 * 4 + 0.5 * 3 * 20, own.distance(a, b), 1e-6);
+        assertThrows(org.scenes.api.PluginException.class, () -> metric(Map.of("memory-direction-weight", "-1"),
+                ObjectSetMetric.Space.CARTESIAN));
+    }
+
+    @Test
     void deeperMemoryWeighsEarlierActionsWithDecay() {
         Scene third = TestScenes.scene(1, Action.dash(50), TestScenes.ball(5, 0));
         Scene thirdOther = TestScenes.scene(1, Action.kick(50, 0), TestScenes.ball(5, 0));
