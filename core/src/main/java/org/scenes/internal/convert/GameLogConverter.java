@@ -653,7 +653,7 @@ public final class GameLogConverter {
             double bestOffset = first;
             int firstScore = explained(steps, period, first);
             int best = firstScore;
-            for (double offset : candidates) {
+            for (double offset : candidates.subList(1, candidates.size())) {
                 int score = explained(steps, period, offset);
                 if (score > best) {
                     best = score;
