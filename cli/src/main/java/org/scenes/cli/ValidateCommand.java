@@ -14,6 +14,7 @@ import org.scenes.api.ActionType;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
+import org.scenes.internal.files.CsvTables;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.scene.SceneFileException;
@@ -71,6 +72,11 @@ final class ValidateCommand implements Callable<Integer> {
     @Option(names = "--label", paramLabel = "TEXT", description = "Labels of the configurations in tables and the chart (repeatable, in order).")
     List<String> labels = new ArrayList<>();
 
+    @Option(names = "--predictions", paramLabel = "FILE.csv",
+            description = "With --train/--test: write one row per test scene and configuration: file, cycle, recorded and"
+                    + " predicted commands, whether the type and the turn's sign were right.")
+    Path predictions;
+
     @Option(names = "--sequential", description = "Run queries on one thread (same results, for timing comparisons).")
     boolean sequential;
 
@@ -107,6 +113,12 @@ final class ValidateCommand implements Callable<Integer> {
         if (chart != null) {
             OutputPaths.checkFile("--chart", chart, ".png", ".svg");
         }
+        if (predictions != null) {
+            if (!folds.isEmpty()) {
+                throw new UsageException("--predictions lists the predictions of --train/--test or --self, not of --folds");
+            }
+            OutputPaths.checkFile("--predictions", predictions, ".csv");
+        }
         List<MatchConfig> configs = match.configs();
         PluginRegistry registry = top.global.registry();
         for (MatchConfig config : configs) {
@@ -130,6 +142,9 @@ final class ValidateCommand implements Callable<Integer> {
         List<SceneFile> testFiles = self ? trainFiles : all.subList(trainPaths.size(), all.size());
         long queries = (long) configs.size() * testFiles.stream().mapToLong(f -> f.scenes().size()).sum();
         List<Outcome> outcomes = new ArrayList<>();
+        // per configuration, the file and cycle of each query, for --predictions
+        List<List<String>> queryFiles = new ArrayList<>();
+        List<List<Integer>> queryCycles = new ArrayList<>();
         try (ProgressBar bar = progress(queries)) {
             Runnable tick = bar == null ? null : bar::step;
             for (int i = 0; i < configs.size(); i++) {
@@ -140,13 +155,27 @@ final class ValidateCommand implements Callable<Integer> {
                 } else {
                     KnowledgeBase knowledge = KnowledgeBase.fromFiles(trainFiles, config.transformFactory(registry));
                     List<Scene> queriesOf = new ArrayList<>();
-                    for (SceneFile file : testFiles) {
-                        queriesOf.addAll(KnowledgeBase.transform(file.scenes(), config.transformFactory(registry).get()));
+                    List<String> fileOf = new ArrayList<>();
+                    List<Integer> cycleOf = new ArrayList<>();
+                    queryFiles.add(fileOf);
+                    queryCycles.add(cycleOf);
+                    List<Path> testNames = self ? trainPaths : testPaths;
+                    for (int f = 0; f < testFiles.size(); f++) {
+                        List<Scene> transformed = KnowledgeBase.transform(testFiles.get(f).scenes(),
+                                config.transformFactory(registry).get());
+                        queriesOf.addAll(transformed);
+                        for (Scene scene : transformed) {
+                            fileOf.add(String.valueOf(testNames.get(f).getFileName()));
+                            cycleOf.add(scene.cycle());
+                        }
                     }
                     ValidationReport report = Validator.run(knowledge, queriesOf, config, registry, !sequential, tick);
                     outcomes.add(new Outcome(label, config, report, null));
                 }
             }
+        }
+        if (predictions != null) {
+            writePredictions(outcomes, queryFiles, queryCycles);
         }
         PrintWriter out = spec.commandLine().getOut();
         if (json) {
@@ -162,6 +191,30 @@ final class ValidateCommand implements Callable<Integer> {
         }
         out.flush();
         return ExitCodes.OK;
+    }
+
+    /** One row per test scene and configuration, for error analysis (pandas, a spreadsheet). */
+    private void writePredictions(List<Outcome> outcomes, List<List<String>> files, List<List<Integer>> cycles)
+            throws java.io.IOException {
+        List<List<Object>> rows = new ArrayList<>();
+        for (int o = 0; o < outcomes.size(); o++) {
+            Outcome outcome = outcomes.get(o);
+            ValidationReport report = outcome.report();
+            for (int i = 0; i < report.testScenes(); i++) {
+                rows.add(List.of(outcome.label(), files.get(o).get(i), cycles.get(o).get(i), commands(report.recorded().get(i)),
+                        commands(report.predictions().get(i)), report.right(i), report.rightWithDirection(i)));
+            }
+        }
+        CsvTables.write(predictions, List.of("configuration", "file", "cycle", "recorded", "predicted", "type_right",
+                "direction_right"), rows);
+    }
+
+    private static String commands(List<org.scenes.api.Action> actions) {
+        StringBuilder text = new StringBuilder();
+        for (org.scenes.api.Action action : actions) {
+            text.append(action.command());
+        }
+        return text.length() == 0 ? "none" : text.toString();
     }
 
     /**

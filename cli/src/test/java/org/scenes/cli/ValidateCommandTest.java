@@ -96,6 +96,62 @@ class ValidateCommandTest {
     }
 
     @Test
+    void predictionsListEveryTestSceneAsTheReportCountsThem() throws Exception {
+        Path a = player("a", 1, 300);
+        Path b = player("b", 2, 200);
+        Path csv = dir.resolve("predictions.csv");
+        assertEquals(0, run("validate", "--train", a, "--test", b, "--metric", "random,ball-goal", "--predictions", csv,
+                "--json"), cli.err());
+        JsonNode runs = json().get("configurations");
+        List<org.apache.commons.csv.CSVRecord> rows;
+        try (java.io.Reader in = Files.newBufferedReader(csv);
+             org.apache.commons.csv.CSVParser parser = org.apache.commons.csv.CSVParser.parse(in,
+                     org.apache.commons.csv.CSVFormat.DEFAULT.builder().setHeader().setSkipHeaderRecord(true).build())) {
+            assertEquals(List.of("configuration", "file", "cycle", "recorded", "predicted", "type_right", "direction_right"),
+                    parser.getHeaderNames());
+            rows = parser.getRecords();
+        }
+        assertEquals(400, rows.size(), "200 test scenes for each of 2 configurations");
+        for (int run = 0; run < 2; run++) {
+            List<org.apache.commons.csv.CSVRecord> own = rows.subList(200 * run, 200 * (run + 1));
+            assertEquals(runs.get(run).get("label").asText(), own.get(0).get("configuration"));
+            long right = own.stream().filter(r -> r.get("type_right").equals("true")).count();
+            long withDirection = own.stream().filter(r -> r.get("direction_right").equals("true")).count();
+            assertEquals(runs.get(run).get("accuracy").asDouble(), right / 200.0, 1e-12);
+            assertEquals(runs.get(run).get("directionAccuracy").asDouble(), withDirection / 200.0, 1e-12);
+            for (int i = 0; i < own.size(); i++) {
+                assertEquals("b.json", own.get(i).get("file"));
+                assertEquals(Integer.toString(i), own.get(i).get("cycle"));
+                String recorded = own.get(i).get("recorded");
+                String predicted = own.get(i).get("predicted");
+                assertEquals(recorded.substring(0, 3).equals(predicted.substring(0, 3)), own.get(i).get("type_right").equals("true"),
+                        recorded + " against " + predicted);
+            }
+        }
+        assertEquals(ExitCodes.USAGE, run("validate", "--folds", a, b, "--predictions", csv));
+        assertTrue(cli.err().contains("--predictions"), cli.err());
+        assertEquals(ExitCodes.USAGE, run("validate", "--train", a, "--test", b, "--predictions", dir.resolve("p.txt")));
+        assertTrue(cli.err().contains("--predictions"), cli.err());
+    }
+
+    @Test
+    void sideWeightTellsDeadAheadFromOneDegreeOff() throws Exception {
+        // the player dashes only when the ball is at exactly 0 degrees: degrees alone cannot say that
+        Path a = player("a", 1, 600);
+        Path b = player("b", 2, 400);
+        List<Object> polar = List.of("validate", "--train", a, "--test", b, "--metric", "continuous", "--object-weights",
+                "ball=1", "--option", "space=polar", "--option", "distance-weight=3", "--json");
+        assertEquals(0, run(polar.toArray()), cli.err());
+        double plain = json().get("accuracy").asDouble();
+        List<Object> sided = new ArrayList<>(polar);
+        sided.addAll(List.of("--option", "side-weight=100"));
+        assertEquals(0, run(sided.toArray()), cli.err());
+        double withSide = json().get("accuracy").asDouble();
+        assertTrue(plain < 0.97, "without sides: " + plain);
+        assertTrue(withSide > plain + 0.02 && withSide > 0.98, "with sides: " + withSide + ", without: " + plain);
+    }
+
+    @Test
     void foldsTuneAndConfigWorkTogether() throws Exception {
         List<Path> files = new ArrayList<>();
         for (int i = 1; i <= 3; i++) {

@@ -40,7 +40,6 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     private final int stride;
     private final boolean polar;
     private final boolean optimal;
-    private final int rowAt;
     private final double memoryAction;
     /** Per slot (a weighted group of the scene, then of its previous scene) its group and weight. */
     private final int[] slotGroup;
@@ -67,7 +66,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     private static final int INDEX = 7;
     private static final int NODE_INTS = 8;
     private final int[] nodeInts;
-    /** Coordinates compared by the pair cost (a, b and, with a row weight, the row) and floats of a slot's box. */
+    /** Coordinates compared by the pair cost (a, b and the additive ones: weighted row, sides) and floats of a slot's box. */
     private final int[] coordinate;
     private final int slotBox;
     /** Where a slot's box starts within a node's floats; slots no stored scene holds have none (-1). */
@@ -82,7 +81,6 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         ObjectSetMetric.Settings settings = metric.settings();
         this.polar = settings.space() == ObjectSetMetric.Space.POLAR;
         this.optimal = !metric.greedy();
-        this.rowAt = settings.rowWeight() > 0 ? stride - 1 : -1;
         this.memoryAction = settings.memoryActionWeight();
         this.slotGroup = slotGroup;
         this.slotPrevious = slotPrevious;
@@ -93,7 +91,12 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         this.actionClass = actionClass;
         this.indexStart = indexStart;
         this.indices = indices;
-        this.coordinate = rowAt >= 0 ? new int[] {0, 1, rowAt} : new int[] {0, 1};
+        // a and b, then the additive ones (weighted row, sides), whose box gaps add to a bound
+        this.coordinate = new int[2 + stride - metric.additiveAt()];
+        coordinate[1] = 1;
+        for (int c = 2; c < coordinate.length; c++) {
+            coordinate[c] = metric.additiveAt() + c - 2;
+        }
         this.slotBox = 2 * coordinate.length + 1;
         int nodes = tree.from.size();
         int anywhere = nodes == 0 ? 0 : tree.some.get(0);
@@ -532,8 +535,8 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
                     double da = outside(x[0], nodeBox[box], nodeBox[box + 1]);
                     double db = outside(x[1], nodeBox[box + 2], nodeBox[box + 3]);
                     double pair = polar ? da + db : Math.sqrt(da * da + db * db);
-                    if (rowAt >= 0) {
-                        pair += outside(x[rowAt], nodeBox[box + 4], nodeBox[box + 5]);
+                    for (int c = 2; c < coordinate.length; c++) {
+                        pair += outside(x[coordinate[c]], nodeBox[box + 2 * c], nodeBox[box + 2 * c + 1]);
                     }
                     if (optimal) {
                         pair = Math.min(pair, qPenalty[s] + nodeBox[box + leastAt]);

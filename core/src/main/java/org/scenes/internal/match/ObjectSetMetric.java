@@ -58,11 +58,15 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * @param nearestPlayers compare only the nearest player of each player class (all players,
      *        teammates, opponents, unknown), so every group holds at most one object
      * @param memoryDirectionWeight direction weight of the remembered previous scene (polar)
+     * @param sideWeight ws, added to the pair cost when the objects lie on different sides of the
+     *        observer's heading: left, straight ahead, right
+     * @param aheadWidth width in degrees of "straight ahead" (|direction| below half of it)
      */
     public record Settings(ObjectWeights weights, Matching matching, Space space, boolean logDistance,
                            double distanceWeight, double directionWeight, double rowWeight, double penalty, double penaltyScale,
                            double projectCycles, double memoryWeight, double memoryActionWeight, int memoryDepth,
-                           double memoryDecay, boolean nearestPlayers, double memoryDirectionWeight) {
+                           double memoryDecay, boolean nearestPlayers, double memoryDirectionWeight,
+                           double sideWeight, double aheadWidth) {
         public Settings {
             if (memoryDepth < 1 || memoryDepth > Scene.MAX_MEMORY) {
                 throw new PluginException("memory-depth must be a whole number from 1 to " + Scene.MAX_MEMORY + ", not " + memoryDepth);
@@ -71,7 +75,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 throw new PluginException("memory-decay must be finite and not negative, not " + memoryDecay);
             }
             for (double value : new double[] {distanceWeight, directionWeight, rowWeight, penalty, memoryWeight, memoryActionWeight,
-                    memoryDirectionWeight}) {
+                    memoryDirectionWeight, sideWeight, aheadWidth}) {
                 if (!(value >= 0) || Double.isInfinite(value)) {
                     throw new PluginException("metric weights and penalties must be finite and not negative");
                 }
@@ -95,6 +99,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         options.put("memory", "weight of the remembered previous scene (needs the memory transform; default 0)");
         options.put("memory-direction-weight", "direction-weight of the remembered previous scene, per degree, in polar space"
                 + " (default: direction-weight)");
+        options.put("side-weight", "cost added to a pair on different sides of the heading: left, straight ahead, right"
+                + " (default 0); agents that turn until an object is dead ahead decide by its side, not by its degrees");
+        options.put("ahead-width", "degrees counted as straight ahead for side-weight, centred on the heading (default 1:"
+                + " the directions the server rounds to 0)");
         options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
         options.put("nearest-players", "true to compare only the nearest player of each weighted player class"
                 + " (teammates, opponents, unknown, all players), which the exact index then serves (default false)");
@@ -144,7 +152,8 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 config.doubleOption("cycles", defaultProjection), config.doubleOption("memory", 0),
                 config.doubleOption("memory-action", 0), memoryDepth(config), config.doubleOption("memory-decay", 0.5),
                 flag(config, "nearest-players"),
-                config.doubleOption("memory-direction-weight", config.doubleOption("direction-weight", 1)));
+                config.doubleOption("memory-direction-weight", config.doubleOption("direction-weight", 1)),
+                config.doubleOption("side-weight", 0), config.doubleOption("ahead-width", 1));
     }
 
     /** A true/false option, false by default. */
@@ -178,8 +187,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
 
     /**
      * A scene as packed numbers: per group, per object nearest first, {@link #stride()} 32-bit
-     * floats: a and b; the penalty unless it follows from them (see {@link #penalty}); and,
-     * with a row weight, the weighted row.
+     * floats: a and b; the penalty unless it follows from them (see {@link #penalty}); then the
+     * additive coordinates, whose absolute differences add to the pair cost: with a row weight
+     * the weighted row, with a side weight two side coordinates (left (0, 0), ahead (ws/2, ws/2),
+     * right (ws, 0): any two sides are ws apart).
      */
     public record Encoded(float[][] groups, Encoded previous, int[] actions) {
     }
@@ -190,10 +201,12 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     private final boolean polar;
     private final boolean greedy;
     private final boolean rows;
+    private final boolean sides;
     private final int stride;
-    /** Where the penalty and the weighted row are within an object's floats; -1 when not stored. */
+    /** Where the penalty is within an object's floats; -1 when not stored. */
     private final int penaltyAt;
-    private final int rowAt;
+    /** Where the additive coordinates (weighted row, sides) start: up to the stride. */
+    private final int additiveAt;
     private final boolean cell;
     private final double penaltyTimesScale;
     /** Whether {@link #pack} may build the {@link LowDimensionalIndex}. */
@@ -215,9 +228,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         cell = settings.space() == Space.CELL;
         // the penalty is a function of the stored position when that holds the distance itself
         boolean derived = cell || settings.space() == Space.CARTESIAN && !settings.logDistance();
+        sides = settings.sideWeight() > 0;
         penaltyAt = derived ? -1 : 2;
-        rowAt = rows ? (derived ? 2 : 3) : -1;
-        stride = 2 + (derived ? 0 : 1) + (rows ? 1 : 0);
+        additiveAt = derived ? 2 : 3;
+        stride = additiveAt + (rows ? 1 : 0) + (sides ? 2 : 0);
         penaltyTimesScale = settings.penalty() * settings.penaltyScale();
         double[] classWeights = settings.weights().toArray();
         for (int group = 0; group < GROUPS; group++) {
@@ -229,9 +243,14 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         return settings;
     }
 
-    /** Floats per object in the encoded and packed forms: 2 to 4 (see {@link Encoded}). */
+    /** Floats per object in the encoded and packed forms: 2 to 6 (see {@link Encoded}). */
     int stride() {
         return stride;
+    }
+
+    /** Where an object's additive coordinates start: from there to the stride, |differences| add to the pair cost. */
+    int additiveAt() {
+        return additiveAt;
     }
 
     boolean greedy() {
@@ -283,7 +302,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     }
 
     /** One object in the configured space, as stored, and the distance it is sorted by. */
-    private record Placed(double distance, float a, float b, float penalty, float row) {
+    private record Placed(double distance, float a, float b, float penalty, float row, float sideX, float sideY) {
     }
 
     private static final Comparator<Placed> NEAREST_FIRST = Comparator.comparingDouble(Placed::distance);
@@ -339,8 +358,13 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 if (penaltyAt >= 0) {
                     values[at + penaltyAt] = object.penalty();
                 }
+                int additive = at + additiveAt;
                 if (rows) {
-                    values[at + rowAt] = object.row();
+                    values[additive++] = object.row();
+                }
+                if (sides) {
+                    values[additive] = object.sideX();
+                    values[additive + 1] = object.sideY();
                 }
             }
             packed[group] = values;
@@ -444,7 +468,13 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         }
         double l = settings.penaltyScale();
         double penalty = settings.penalty() * l / (l + penaltyDistance);
-        return new Placed(r, (float) a, (float) b, (float) penalty, (float) (settings.rowWeight() * object.cell().row()));
+        // left (0, 0), ahead (ws/2, ws/2), right (ws, 0): every two sides ws apart in |dx| + |dy|
+        double side = settings.sideWeight();
+        boolean ahead = Math.abs(direction) < settings.aheadWidth() / 2;
+        float sideX = (float) (ahead ? side / 2 : direction > 0 ? side : 0);
+        float sideY = (float) (ahead ? side / 2 : 0);
+        return new Placed(r, (float) a, (float) b, (float) penalty, (float) (settings.rowWeight() * object.cell().row()),
+                sideX, sideY);
     }
 
     @Override
@@ -521,7 +551,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             float db = x[i + 1] - y[j + 1];
             cost = (float) Math.sqrt(da * da + db * db);
         }
-        return rows ? Math.abs((double) x[i + rowAt] - y[j + rowAt]) + cost : cost;
+        for (int c = additiveAt; c < stride; c++) {
+            cost += Math.abs((double) x[i + c] - y[j + c]);
+        }
+        return cost;
     }
 
     /**

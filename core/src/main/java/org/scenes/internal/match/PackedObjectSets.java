@@ -70,7 +70,7 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
                     return null;
                 }
                 counts[i * groups.length + g] = (byte) count;
-                length += count * stride; // at most 10 * 255 * 4 floats: always fits a chunk
+                length += count * stride; // at most 10 * 255 * 6 floats: always fits a chunk
             }
             if ((position & IN_CHUNK) + length > CHUNK) {
                 position = (position | IN_CHUNK) + 1; // the next chunk

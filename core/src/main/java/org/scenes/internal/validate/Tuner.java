@@ -183,13 +183,21 @@ public final class Tuner {
                 c -> keepMemory(c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
                         .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.3"))))));
         dimensions.add(new Dimension("memory", List.of(
-                c -> withMemory(c, 0, 0),
-                c -> withMemory(c, 0, 10),
-                c -> withMemory(c, 0, 100),
-                c -> withMemory(c, 0.5, 100),
+                c -> memory(c, 0, 0, 1),
+                c -> memory(c, 0, 10, 1),
+                c -> memory(c, 0, 100, 1),
+                c -> memory(c, 0.5, 100, 1),
                 // the previous action first, then the previous scene's objects: Krislet's kicks and turn signs
-                c -> withMemory(c, 0.3, 1000),
-                c -> withMemory(c, 1, 0))));
+                c -> memory(c, 0.3, 1000, 1),
+                // the previous scene's directions at a tenth or three tenths of the current one's
+                c -> memory(c, 0.7, 1000, 0.3),
+                c -> memory(c, 0.3, 1000, 0.1),
+                c -> memory(c, 1, 0, 1))));
+        dimensions.add(new Dimension("side", List.of(
+                c -> withSide(c, 0),
+                c -> withSide(c, 100),
+                c -> withSide(c, 300),
+                c -> withSide(c, 1000))));
         dimensions.add(new Dimension("k and selector", List.of(
                 c -> c.withK(1).withSelector("first-valid", Map.of()),
                 c -> c.withK(3).withSelector("vote", Map.of()),
@@ -198,10 +206,68 @@ public final class Tuner {
         return dimensions;
     }
 
-    /** A metric variant keeps the memory settings already chosen, so the dimensions stay independent. */
+    /**
+     * A metric variant keeps the memory and side settings already chosen (the previous scene's
+     * direction weight as a share of the direction weight), so the dimensions stay independent.
+     */
     static MatchConfig keepMemory(MatchConfig old, MatchConfig changed) {
-        return withMemory(changed, Double.parseDouble(old.metricOptions().getOrDefault("memory", "0")),
-                Double.parseDouble(old.metricOptions().getOrDefault("memory-action", "0")));
+        Map<String, String> options = old.metricOptions();
+        MatchConfig kept = withMemory(changed, Double.parseDouble(options.getOrDefault("memory", "0")),
+                Double.parseDouble(options.getOrDefault("memory-action", "0")));
+        if (options.containsKey("memory-direction-weight")) {
+            kept = withPreviousDirection(kept, Double.parseDouble(options.get("memory-direction-weight"))
+                    / Double.parseDouble(options.getOrDefault("direction-weight", "1")));
+        }
+        return withSide(kept, Double.parseDouble(options.getOrDefault("side-weight", "0")));
+    }
+
+    /**
+     * A memory variant: the previous scene at {@code weight}, its directions at {@code share} of the
+     * current one's (1: the same, the metric's default), the previous action at {@code actionWeight}.
+     */
+    private static MatchConfig memory(MatchConfig config, double weight, double actionWeight, double share) {
+        MatchConfig with = withMemory(config, weight, actionWeight);
+        if (share != 1) {
+            return withPreviousDirection(with, share);
+        }
+        Map<String, String> options = new HashMap<>(with.metricOptions());
+        options.remove("memory-direction-weight");
+        return with.withMetric(with.metric(), options);
+    }
+
+    /** The object-set metrics (continuous, projection, cell): the ones with side and previous-direction weights. */
+    static boolean objectSet(MatchConfig config) {
+        return switch (config.metric()) {
+            case "continuous", "projection", "cell" -> true;
+            default -> false;
+        };
+    }
+
+    /** The side weight of an object-set metric (0: none); other metrics unchanged. */
+    static MatchConfig withSide(MatchConfig config, double weight) {
+        if (!objectSet(config)) {
+            return config;
+        }
+        Map<String, String> options = new HashMap<>(config.metricOptions());
+        options.remove("side-weight");
+        if (weight > 0) {
+            options.put("side-weight", format(weight));
+        }
+        return config.withMetric(config.metric(), options);
+    }
+
+    /**
+     * The previous scene's direction weight as {@code share} of the current one's, where an
+     * object-set metric in polar space remembers the previous scene; otherwise unchanged.
+     */
+    static MatchConfig withPreviousDirection(MatchConfig config, double share) {
+        Map<String, String> options = config.metricOptions();
+        if (!objectSet(config) || !"polar".equals(options.get("space")) || !options.containsKey("memory")) {
+            return config;
+        }
+        Map<String, String> with = new HashMap<>(options);
+        with.put("memory-direction-weight", format(share * Double.parseDouble(options.getOrDefault("direction-weight", "1"))));
+        return config.withMetric(config.metric(), with);
     }
 
     private static Map<String, String> withRows(Map<String, String> options, double rowWeight) {
@@ -227,6 +293,9 @@ public final class Tuner {
         Map<String, String> options = new HashMap<>(config.metricOptions());
         options.remove("memory");
         options.remove("memory-action");
+        if (weight == 0) {
+            options.remove("memory-direction-weight"); // nothing remembered to weigh
+        }
         if (config.metric().equals("random") || weight == 0 && actionWeight == 0) {
             return config.withMetric(config.metric(), options).withTransforms(List.of());
         }

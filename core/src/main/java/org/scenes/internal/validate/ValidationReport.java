@@ -89,11 +89,10 @@ public final class ValidationReport {
             if (t != p) {
                 continue;
             }
-            boolean directionRight = true;
+            boolean directionRight = rightWithDirection(i);
             switch (t) {
                 case TURN -> {
                     turnPairs++;
-                    directionRight = Math.signum(truth[i].first()) == Math.signum(predicted[i].first());
                     if (directionRight) {
                         turnSignAgree++;
                     }
@@ -241,6 +240,24 @@ public final class ValidationReport {
         double value() {
             return count == 0 ? Double.NaN : sum / count;
         }
+    }
+
+    /** Whether test scene {@code i}'s primary type was predicted. */
+    public boolean right(int i) {
+        return typeOf(truth[i]) == typeOf(predicted[i]);
+    }
+
+    /** Whether test scene {@code i}'s primary type was predicted, and for a turn the sign of its moment. */
+    public boolean rightWithDirection(int i) {
+        if (!right(i)) {
+            return false;
+        }
+        return typeOf(truth[i]) != ActionType.TURN || Math.signum(truth[i].first()) == Math.signum(predicted[i].first());
+    }
+
+    /** Each test scene's recorded actions, in test order. */
+    public List<List<Action>> recorded() {
+        return java.util.Collections.unmodifiableList(truthActions);
     }
 
     /** Each test scene's predicted actions, primary first (empty: none), in test order. */

@@ -53,7 +53,9 @@ class LowDimensionalIndexTest {
             Map.of("matching", "optimal", "penalty", "0.5", "penalty-scale", "3"),
             Map.of("memory-action", "3", "row-weight", "1"),
             Map.of("space", "polar", "direction-weight", "100", "memory-direction-weight", "10", "memory", "0.3",
-                    "memory-action", "1000"));
+                    "memory-action", "1000"),
+            with(with(with(TUNED, "side-weight", "300"), "memory", "0.7"), "memory-direction-weight", "3"),
+            Map.of("side-weight", "4", "row-weight", "1", "matching", "optimal", "memory", "0.5"));
 
     /** Configurations with the nearest player of each kind, with and without memory terms. */
     private static final List<Map<String, String>> NEAREST_CONFIGURATIONS = List.of(

@@ -22,6 +22,15 @@ class ObjectSetMetricTest {
         return new ObjectSetMetric(ObjectSetMetric.settings(PluginConfig.DEFAULT.withOptions(options), space, 0));
     }
 
+    /** The options with more key, value pairs. */
+    private static Map<String, String> with(Map<String, String> options, String... pairs) {
+        Map<String, String> all = new java.util.HashMap<>(options);
+        for (int i = 0; i < pairs.length; i += 2) {
+            all.put(pairs[i], pairs[i + 1]);
+        }
+        return all;
+    }
+
     static void assertTrueMetric(SceneMetric metric, List<Scene> scenes) {
         assertTrue(metric.isTrueMetric());
         for (Scene a : scenes) {
@@ -46,6 +55,8 @@ class ObjectSetMetricTest {
         assertTrueMetric(metric(Map.of("matching", "optimal", "log-distance", "true", "penalty", "1"),
                 ObjectSetMetric.Space.CARTESIAN), scenes);
         assertTrueMetric(metric(Map.of("matching", "optimal", "space", "polar", "direction-weight", "3"),
+                ObjectSetMetric.Space.CARTESIAN), scenes);
+        assertTrueMetric(metric(Map.of("matching", "optimal", "space", "polar", "direction-weight", "3", "side-weight", "5"),
                 ObjectSetMetric.Space.CARTESIAN), scenes);
         assertTrueMetric(metric(Map.of("matching", "optimal", "penalty", "1", "penalty-scale", "1"), ObjectSetMetric.Space.CELL), scenes);
         assertTrueMetric(metric(Map.of("matching", "optimal", "memory", "0.5", "memory-action", "2"),
@@ -143,6 +154,28 @@ class ObjectSetMetricTest {
                 "memory-direction-weight", "3"), ObjectSetMetric.Space.CARTESIAN);
         assertEquals(100 * 4 + 0.5 * 3 * 20, own.distance(a, b), 1e-6);
         assertThrows(org.scenes.api.PluginException.class, () -> metric(Map.of("memory-direction-weight", "-1"),
+                ObjectSetMetric.Space.CARTESIAN));
+    }
+
+    @Test
+    void sideWeightSeparatesLeftAheadAndRight() {
+        Scene ahead = TestScenes.scene(1, Action.dash(50), TestScenes.ball(8, 0));
+        Scene right = TestScenes.scene(2, Action.turn(1), TestScenes.ball(8, 1));
+        Scene farRight = TestScenes.scene(3, Action.turn(9), TestScenes.ball(8, 9));
+        Scene left = TestScenes.scene(4, Action.turn(-1), TestScenes.ball(8, -1));
+        Map<String, String> polar = Map.of("space", "polar", "direction-weight", "10");
+        ObjectSetMetric plain = metric(polar, ObjectSetMetric.Space.CARTESIAN);
+        ObjectSetMetric sided = metric(with(polar, "side-weight", "300"), ObjectSetMetric.Space.CARTESIAN);
+        assertEquals(plain.distance(ahead, right) + 300, sided.distance(ahead, right), 1e-3, "ahead against right");
+        assertEquals(plain.distance(left, right) + 300, sided.distance(left, right), 1e-3, "left against right");
+        assertEquals(plain.distance(ahead, left) + 300, sided.distance(ahead, left), 1e-3, "ahead against left");
+        assertEquals(plain.distance(right, farRight), sided.distance(right, farRight), 1e-3, "the same side costs nothing more");
+        // 1 degree off the heading and dead ahead now differ more than 8 degrees on one side
+        assertTrue(sided.distance(ahead, right) > sided.distance(right, farRight));
+        assertTrue(plain.distance(ahead, right) < plain.distance(right, farRight));
+        ObjectSetMetric wide = metric(with(polar, "side-weight", "300", "ahead-width", "3"), ObjectSetMetric.Space.CARTESIAN);
+        assertEquals(plain.distance(ahead, right), wide.distance(ahead, right), 1e-3, "within 1.5 degrees is ahead");
+        assertThrows(org.scenes.api.PluginException.class, () -> metric(Map.of("side-weight", "-1"),
                 ObjectSetMetric.Space.CARTESIAN));
     }
 

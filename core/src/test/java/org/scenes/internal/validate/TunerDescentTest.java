@@ -56,6 +56,39 @@ class TunerDescentTest {
     }
 
     @Test
+    void theBuiltInSearchCarriesSideAndPreviousDirectionAcrossMetricVariants() {
+        Tuner.Dimension metric = dimension("metric");
+        Tuner.Dimension memory = dimension("memory");
+        Tuner.Dimension side = dimension("side");
+        MatchConfig polar = metric.variants().get(3).apply(MatchConfig.DEFAULT);
+        assertEquals("continuous", polar.metric());
+        assertEquals("10", polar.metricOptions().get("direction-weight"));
+        // memory 0.7 with the previous scene's directions at 0.3 of the current ones: 3 per degree
+        MatchConfig remembered = memory.variants().get(5).apply(polar);
+        assertEquals("0.7", remembered.metricOptions().get("memory"));
+        assertEquals("3", remembered.metricOptions().get("memory-direction-weight"));
+        MatchConfig sided = side.variants().get(2).apply(remembered);
+        assertEquals("300", sided.metricOptions().get("side-weight"));
+        // another polar family keeps both, and plain memory drops the previous direction weight again
+        MatchConfig other = metric.variants().get(4).apply(sided);
+        assertEquals("300", other.metricOptions().get("side-weight"));
+        assertEquals("3", other.metricOptions().get("memory-direction-weight"));
+        assertEquals(0.3, other.objectWeights().goal(), 0.0);
+        assertEquals(null, memory.variants().get(4).apply(other).metricOptions().get("memory-direction-weight"));
+        assertEquals(null, side.variants().get(0).apply(other).metricOptions().get("side-weight"));
+        // ball-goal has neither option: the variants leave it as it is
+        MatchConfig ballGoal = metric.variants().get(0).apply(sided);
+        assertEquals(ballGoal, side.variants().get(3).apply(ballGoal));
+        assertEquals(null, ballGoal.metricOptions().get("side-weight"));
+        assertEquals(null, ballGoal.metricOptions().get("memory-direction-weight"));
+        assertEquals("0.7", ballGoal.metricOptions().get("memory"));
+    }
+
+    private static Tuner.Dimension dimension(String name) {
+        return Tuner.defaultSearch().stream().filter(d -> d.name().equals(name)).findFirst().orElseThrow();
+    }
+
+    @Test
     void stopsAfterASweepWithoutImprovement() {
         Recording evaluation = new Recording(Map.of(1, 0.9, 3, 0.1, 5, 0.1));
         Tuner.Descent descent = Tuner.descend(MatchConfig.DEFAULT, List.of(DIMENSIONS.get(0)), 5, evaluation);
