@@ -61,12 +61,15 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * @param sideWeight ws, added to the pair cost when the objects lie on different sides of the
      *        observer's heading: left, straight ahead, right
      * @param aheadWidth width in degrees of "straight ahead" (|direction| below half of it)
+     * @param ownGoalShare the own goal's weight as a share of the goal class weight (the opponent's
+     *        goal and goals of unknown side keep the whole of it)
+     * @param memoryRowWeight row weight of the remembered previous scene
      */
     public record Settings(ObjectWeights weights, Matching matching, Space space, boolean logDistance,
                            double distanceWeight, double directionWeight, double rowWeight, double penalty, double penaltyScale,
                            double projectCycles, double memoryWeight, double memoryActionWeight, int memoryDepth,
                            double memoryDecay, boolean nearestPlayers, double memoryDirectionWeight,
-                           double sideWeight, double aheadWidth) {
+                           double sideWeight, double aheadWidth, double ownGoalShare, double memoryRowWeight) {
         public Settings {
             if (memoryDepth < 1 || memoryDepth > Scene.MAX_MEMORY) {
                 throw new PluginException("memory-depth must be a whole number from 1 to " + Scene.MAX_MEMORY + ", not " + memoryDepth);
@@ -75,7 +78,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 throw new PluginException("memory-decay must be finite and not negative, not " + memoryDecay);
             }
             for (double value : new double[] {distanceWeight, directionWeight, rowWeight, penalty, memoryWeight, memoryActionWeight,
-                    memoryDirectionWeight, sideWeight, aheadWidth}) {
+                    memoryDirectionWeight, sideWeight, aheadWidth, ownGoalShare, memoryRowWeight}) {
                 if (!(value >= 0) || Double.isInfinite(value)) {
                     throw new PluginException("metric weights and penalties must be finite and not negative");
                 }
@@ -103,6 +106,9 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 + " (default 0); agents that turn until an object is dead ahead decide by its side, not by its degrees");
         options.put("ahead-width", "degrees counted as straight ahead for side-weight, centred on the heading (default 1:"
                 + " the directions the server rounds to 0)");
+        options.put("own-goal-weight", "the own goal's weight as a share of the goal weight (default 1); 0 for agents that"
+                + " look only at the goal they attack");
+        options.put("memory-row-weight", "row-weight of the remembered previous scene (default: row-weight)");
         options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
         options.put("nearest-players", "true to compare only the nearest player of each weighted player class"
                 + " (teammates, opponents, unknown, all players), which the exact index then serves (default false)");
@@ -153,7 +159,9 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
                 config.doubleOption("memory-action", 0), memoryDepth(config), config.doubleOption("memory-decay", 0.5),
                 flag(config, "nearest-players"),
                 config.doubleOption("memory-direction-weight", config.doubleOption("direction-weight", 1)),
-                config.doubleOption("side-weight", 0), config.doubleOption("ahead-width", 1));
+                config.doubleOption("side-weight", 0), config.doubleOption("ahead-width", 1),
+                config.doubleOption("own-goal-weight", 1),
+                config.doubleOption("memory-row-weight", config.doubleOption("row-weight", 0)));
     }
 
     /** A true/false option, false by default. */
@@ -179,6 +187,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     static final int GROUPS = 10;
     private static final int[] CLASS_OF_GROUP = {0, 1, 1, 1, 2, 3, 4, 5, 6, 7};
     private static final int PLAYERS = 6;
+    private static final int OWN_GOAL = 1;
 
     /** Whether a group holds players (all, teammates, opponents, unknown): with nearest-players, its nearest only. */
     private static boolean playerGroup(int group) {
@@ -224,7 +233,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         this.indexed = indexed;
         polar = settings.space() == Space.POLAR;
         greedy = settings.matching() == Matching.GREEDY;
-        rows = settings.rowWeight() > 0;
+        rows = settings.rowWeight() > 0 || settings.memoryRowWeight() > 0;
         cell = settings.space() == Space.CELL;
         // the penalty is a function of the stored position when that holds the distance itself
         boolean derived = cell || settings.space() == Space.CARTESIAN && !settings.logDistance();
@@ -235,7 +244,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         penaltyTimesScale = settings.penalty() * settings.penaltyScale();
         double[] classWeights = settings.weights().toArray();
         for (int group = 0; group < GROUPS; group++) {
-            groupWeight[group] = classWeights[CLASS_OF_GROUP[group]];
+            groupWeight[group] = classWeights[CLASS_OF_GROUP[group]] * (group == OWN_GOAL ? settings.ownGoalShare() : 1);
         }
     }
 
@@ -315,14 +324,14 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      * now may be noise one scene back.
      */
     Encoded encodePrevious(Scene previous) {
-        return encode(previous, false, settings.memoryDirectionWeight());
+        return encode(previous, false, settings.memoryDirectionWeight(), settings.memoryRowWeight());
     }
 
     Encoded encode(Scene scene, boolean withMemory) {
-        return encode(scene, withMemory, settings.directionWeight());
+        return encode(scene, withMemory, settings.directionWeight(), settings.rowWeight());
     }
 
-    private Encoded encode(Scene scene, boolean withMemory, double directionWeight) {
+    private Encoded encode(Scene scene, boolean withMemory, double directionWeight, double rowWeight) {
         if (scene == null) {
             return new Encoded(new float[GROUPS][0], null, NO_ACTIONS);
         }
@@ -334,10 +343,10 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         for (SeenObject object : scene.objects()) {
             int group = groupOf(object);
             if (groupWeight[group] > 0) {
-                groups.get(group).add(place(object, directionWeight));
+                groups.get(group).add(place(object, directionWeight, rowWeight));
             }
             if (object.kind() == ObjectKind.PLAYER && groupWeight[PLAYERS] > 0) {
-                groups.get(PLAYERS).add(place(object, directionWeight));
+                groups.get(PLAYERS).add(place(object, directionWeight, rowWeight));
             }
         }
         float[][] packed = new float[GROUPS][];
@@ -432,7 +441,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     }
 
     /** (a, b, penalty, weighted row) of one object in the configured space, rounded to floats. */
-    private Placed place(SeenObject object, double directionWeight) {
+    private Placed place(SeenObject object, double directionWeight, double rowWeight) {
         double r = object.distance();
         double direction = Double.isNaN(object.direction()) ? 0 : object.direction();
         if (settings.projectCycles() != 0) {
@@ -473,7 +482,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         boolean ahead = Math.abs(direction) < settings.aheadWidth() / 2;
         float sideX = (float) (ahead ? side / 2 : direction > 0 ? side : 0);
         float sideY = (float) (ahead ? side / 2 : 0);
-        return new Placed(r, (float) a, (float) b, (float) penalty, (float) (settings.rowWeight() * object.cell().row()),
+        return new Placed(r, (float) a, (float) b, (float) penalty, (float) (rowWeight * object.cell().row()),
                 sideX, sideY);
     }
 

@@ -430,6 +430,10 @@ public final class RandomSearch {
         if (!name.equals("cell") && random.nextInt(10) < 7) {
             options.put("log-distance", "true");
         }
+        if (random.nextBoolean()) {
+            // dead ahead apart from either side (Krislet dashes only at 0 degrees)
+            options.put("side-weight", format(pick(random, 30, 100, 300, 1000)));
+        }
         double rows = pick(random, 0, 10, 100, 1000, 1000);
         if (rows > 0) {
             options.put("row-weight", format(rows));

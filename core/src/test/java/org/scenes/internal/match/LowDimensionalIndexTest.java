@@ -54,8 +54,10 @@ class LowDimensionalIndexTest {
             Map.of("memory-action", "3", "row-weight", "1"),
             Map.of("space", "polar", "direction-weight", "100", "memory-direction-weight", "10", "memory", "0.3",
                     "memory-action", "1000"),
-            with(with(with(TUNED, "side-weight", "300"), "memory", "0.7"), "memory-direction-weight", "3"),
-            Map.of("side-weight", "4", "row-weight", "1", "matching", "optimal", "memory", "0.5"));
+            with(with(with(with(TUNED, "side-weight", "300"), "memory", "0.7"), "memory-direction-weight", "3"),
+                    "memory-row-weight", "300"),
+            Map.of("row-weight", "0", "memory-row-weight", "5", "memory", "1", "space", "polar"),
+            Map.of("side-weight", "4", "row-weight", "1", "matching", "optimal", "memory", "0.5", "own-goal-weight", "0.3"));
 
     /** Configurations with the nearest player of each kind, with and without memory terms. */
     private static final List<Map<String, String>> NEAREST_CONFIGURATIONS = List.of(

@@ -180,6 +180,44 @@ class ObjectSetMetricTest {
     }
 
     @Test
+    void theOwnGoalHasItsShareOfTheGoalWeight() {
+        Scene both = TestScenes.scene(1, Action.dash(50), TestScenes.ball(8, 0), TestScenes.goal(30, 10),
+                TestScenes.ownGoal(40, -170));
+        Scene opponentOnly = TestScenes.scene(2, Action.dash(50), TestScenes.ball(8, 0), TestScenes.goal(30, 12));
+        Scene ownMoved = TestScenes.scene(3, Action.dash(50), TestScenes.ball(8, 0), TestScenes.goal(30, 10),
+                TestScenes.ownGoal(20, -150));
+        Map<String, String> options = Map.of("space", "polar", "penalty", "1000");
+        ObjectSetMetric whole = metric(options, ObjectSetMetric.Space.CARTESIAN);
+        ObjectSetMetric half = metric(with(options, "own-goal-weight", "0.5"), ObjectSetMetric.Space.CARTESIAN);
+        ObjectSetMetric none = metric(with(options, "own-goal-weight", "0"), ObjectSetMetric.Space.CARTESIAN);
+        double opponentGoal = none.distance(both, opponentOnly);
+        assertEquals(2, opponentGoal, 1e-4, "the opponent goal's 2 degrees alone");
+        double ownGoal = whole.distance(both, opponentOnly) - opponentGoal;
+        assertTrue(ownGoal > 100, "a missing own goal costs its penalty: " + ownGoal);
+        assertEquals(opponentGoal + ownGoal / 2, half.distance(both, opponentOnly), 1e-3);
+        assertEquals(0, none.distance(both, ownMoved), 1e-9);
+        assertTrue(whole.distance(both, ownMoved) > 20);
+        assertThrows(org.scenes.api.PluginException.class, () -> metric(Map.of("own-goal-weight", "-0.5"),
+                ObjectSetMetric.Space.CARTESIAN));
+    }
+
+    @Test
+    void thePreviousSceneHasItsOwnRowWeight() {
+        // the balls are 1 row apart now (4.5 and 5.5 m across the 5 m ring) and one row apart before
+        Scene a = TestScenes.scene(2, Action.turn(1), TestScenes.ball(4.5, 1))
+                .withPrevious(TestScenes.scene(1, null, TestScenes.ball(5.5, 1)));
+        Scene b = TestScenes.scene(2, Action.turn(1), TestScenes.ball(5.5, 1))
+                .withPrevious(TestScenes.scene(1, null, TestScenes.ball(4.5, 1)));
+        Map<String, String> polar = Map.of("space", "polar", "distance-weight", "0", "row-weight", "100", "memory", "0.5");
+        assertEquals(100 + 0.5 * 100, metric(polar, ObjectSetMetric.Space.CARTESIAN).distance(a, b), 1e-6,
+                "by default the row weight of both");
+        assertEquals(100 + 0.5 * 10, metric(with(polar, "memory-row-weight", "10"), ObjectSetMetric.Space.CARTESIAN)
+                .distance(a, b), 1e-6);
+        Map<String, String> memoryRowsOnly = with(polar, "row-weight", "0", "memory-row-weight", "10");
+        assertEquals(0.5 * 10, metric(memoryRowsOnly, ObjectSetMetric.Space.CARTESIAN).distance(a, b), 1e-6);
+    }
+
+    @Test
     void deeperMemoryWeighsEarlierActionsWithDecay() {
         Scene third = TestScenes.scene(1, Action.dash(50), TestScenes.ball(5, 0));
         Scene thirdOther = TestScenes.scene(1, Action.kick(50, 0), TestScenes.ball(5, 0));

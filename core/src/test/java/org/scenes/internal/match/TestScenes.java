@@ -27,6 +27,10 @@ public final class TestScenes {
         return SeenObject.simple(ObjectKind.GOAL, "g r", Relation.OPPONENT, distance, direction, Grid.DEFAULT);
     }
 
+    public static SeenObject ownGoal(double distance, double direction) {
+        return SeenObject.simple(ObjectKind.GOAL, "g l", Relation.OWN, distance, direction, Grid.DEFAULT);
+    }
+
     public static SeenObject flag(double distance, double direction) {
         return SeenObject.simple(ObjectKind.FLAG, "f c", Relation.NONE, distance, direction, Grid.DEFAULT);
     }
