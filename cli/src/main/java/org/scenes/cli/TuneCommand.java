@@ -88,7 +88,7 @@ final class TuneCommand implements Callable<Integer> {
             out.println(line);
             out.flush();
         });
-        Tuner.Result result = tuner.tune(MatchConfig.DEFAULT.withSeed(tuning.seed()), Tuner.defaultSearch(), sweeps);
+        Tuner.Result result = tuner.tune(Tuner.defaultStarts(MatchConfig.DEFAULT.withSeed(tuning.seed())), Tuner.defaultSearch(), sweeps);
         if (table != null) {
             TriedTable.write(table, tuner.tried());
         }

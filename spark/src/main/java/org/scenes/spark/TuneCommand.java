@@ -67,7 +67,7 @@ final class TuneCommand implements Callable<Integer> {
                 out.println(line);
                 out.flush();
             });
-            result = tuner.tune(MatchConfig.DEFAULT.withSeed(tuning.seed()), Tuner.defaultSearch(), sweeps);
+            result = tuner.tune(Tuner.defaultStarts(MatchConfig.DEFAULT.withSeed(tuning.seed())), Tuner.defaultSearch(), sweeps);
             validated = tuner.validated();
         }
         write(hadoop, result.config(), tuning.crossValidation(result, train));

@@ -434,9 +434,16 @@ public final class RandomSearch {
             // dead ahead apart from either side (Krislet dashes only at 0 degrees)
             options.put("side-weight", format(pick(random, 30, 100, 300, 1000)));
         }
-        double rows = pick(random, 0, 10, 100, 1000, 1000);
+        double rows = pick(random, 0, 10, 100, 1000, 1000, 3000);
         if (rows > 0) {
             options.put("row-weight", format(rows));
+            if (memory > 0 && random.nextBoolean()) {
+                // the remembered scene's rings weighed less than the current one's
+                options.put("memory-row-weight", format(rows * pick(random, 0.1, 0.3)));
+            }
+        }
+        if (random.nextInt(3) == 0) {
+            options.put("own-goal-weight", "0"); // only the goal attacked
         }
         options.put("penalty", format(name.equals("cell") ? pick(random, 1, 10, 100) : pick(random, 10, 100, 1000, 20000, 20000)));
         options.put("penalty-scale", format(name.equals("cell") ? pick(random, 1, 3) : pick(random, 10, 100, 10000)));

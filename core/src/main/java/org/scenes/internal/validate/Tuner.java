@@ -125,9 +125,21 @@ public final class Tuner {
         return List.copyOf(tried);
     }
 
-    public Result tune(MatchConfig start, List<Dimension> dimensions, int sweeps) {
-        Descent descent = descend(start, dimensions, sweeps, this::evaluate);
+    public Result tune(List<MatchConfig> starts, List<Dimension> dimensions, int sweeps) {
+        Descent descent = descend(starts, dimensions, sweeps, this::evaluate);
         return Result.of(descent, folds.get(descent.best()).pooled(), scores.size());
+    }
+
+    /** A descent from each start (configurations met again are not scored again); the best end, the earlier on ties. */
+    public static Descent descend(List<MatchConfig> starts, List<Dimension> dimensions, int sweeps, Evaluation evaluation) {
+        Descent best = null;
+        for (MatchConfig start : starts) {
+            Descent descent = descend(start, dimensions, sweeps, evaluation);
+            if (best == null || descent.score() > best.score() + 1e-9) {
+                best = descent;
+            }
+        }
+        return best;
     }
 
     /**
@@ -168,20 +180,27 @@ public final class Tuner {
         return dimension.variants().stream().map(variant -> variant.apply(config)).toList();
     }
 
-    /** The built-in search: metric family and its weights, memory, k and selector. */
+    /**
+     * Where the built-in search starts: the thesis' {@code ball-goal} on ball and goals, and
+     * {@code continuous} in polar space on the ball and (lightly) the goals with log distances, the
+     * distance ring weighed most (the kickable distance is a row boundary), then the direction, a
+     * missing ball or goal costing more than any position difference. Each family's best needs its
+     * memory and side settings, which a single descent from one of them would never try on the other.
+     */
+    public static List<MatchConfig> defaultStarts(MatchConfig base) {
+        return List.of(base.withMetric("ball-goal", Map.of()).withObjectWeights(ObjectWeights.parse("ball=1,goal=1")),
+                base.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05")));
+    }
+
+    /**
+     * The built-in search: memory, the side of the heading, the goals and distance rings, k and
+     * selector, and last the metric family (which keeps the others' settings), so each start's
+     * family is tuned before families are compared.
+     */
     public static List<Dimension> defaultSearch() {
         List<Dimension> dimensions = new ArrayList<>();
         ObjectWeights ballGoal = ObjectWeights.parse("ball=1,goal=1");
-        dimensions.add(new Dimension("metric", List.of(
-                c -> keepMemory(c, c.withMetric("ball-goal", Map.of()).withObjectWeights(ballGoal)),
-                c -> keepMemory(c, c.withMetric("ball-goal", Map.of("angle-weight", "10", "row-weight", "10")).withObjectWeights(ballGoal)),
-                c -> keepMemory(c, c.withMetric("continuous", polar(1, 10)).withObjectWeights(ballGoal)),
-                // the distance ring weighs most (the kickable distance is a row boundary), then the
-                // direction; a missing ball or goal costs more than any position difference
-                c -> keepMemory(c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
-                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05"))),
-                c -> keepMemory(c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
-                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.3"))))));
         dimensions.add(new Dimension("memory", List.of(
                 c -> memory(c, 0, 0, 1),
                 c -> memory(c, 0, 10, 1),
@@ -198,12 +217,44 @@ public final class Tuner {
                 c -> withSide(c, 100),
                 c -> withSide(c, 300),
                 c -> withSide(c, 1000))));
+        dimensions.add(new Dimension("goals and rings", List.of(
+                c -> withGoalsAndRings(c, 1, 1000),
+                c -> withGoalsAndRings(c, 0, 1000),
+                c -> withGoalsAndRings(c, 1, 3000),
+                c -> withGoalsAndRings(c, 0, 3000))));
         dimensions.add(new Dimension("k and selector", List.of(
                 c -> c.withK(1).withSelector("first-valid", Map.of()),
                 c -> c.withK(3).withSelector("vote", Map.of()),
                 c -> c.withK(5).withSelector("vote", Map.of()),
                 c -> c.withK(3).withSelector("vote", Map.of("params", "average")))));
+        dimensions.add(new Dimension("metric", List.of(
+                c -> keepMemory(c, c.withMetric("ball-goal", Map.of()).withObjectWeights(ballGoal)),
+                c -> keepMemory(c, c.withMetric("ball-goal", Map.of("angle-weight", "10", "row-weight", "10")).withObjectWeights(ballGoal)),
+                c -> keepMemory(c, c.withMetric("continuous", polar(1, 10)).withObjectWeights(ballGoal)),
+                c -> keepMemory(c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05"))),
+                c -> keepMemory(c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                        .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.3"))))));
         return dimensions;
+    }
+
+    /**
+     * The own goal's share of the goal weight (0: only the goal attacked counts, as for Krislet)
+     * and the distance rings' weight, where an object-set metric weighs rings; otherwise unchanged.
+     */
+    static MatchConfig withGoalsAndRings(MatchConfig config, double ownGoal, double rows) {
+        if (!objectSet(config)) {
+            return config;
+        }
+        Map<String, String> options = new HashMap<>(config.metricOptions());
+        options.remove("own-goal-weight");
+        if (ownGoal != 1) {
+            options.put("own-goal-weight", format(ownGoal));
+        }
+        if (Double.parseDouble(options.getOrDefault("row-weight", "0")) > 0) {
+            options.put("row-weight", format(rows));
+        }
+        return config.withMetric(config.metric(), options);
     }
 
     /**
@@ -218,7 +269,13 @@ public final class Tuner {
             kept = withPreviousDirection(kept, Double.parseDouble(options.get("memory-direction-weight"))
                     / Double.parseDouble(options.getOrDefault("direction-weight", "1")));
         }
-        return withSide(kept, Double.parseDouble(options.getOrDefault("side-weight", "0")));
+        kept = withSide(kept, Double.parseDouble(options.getOrDefault("side-weight", "0")));
+        if (options.containsKey("own-goal-weight") && objectSet(kept)) {
+            Map<String, String> with = new HashMap<>(kept.metricOptions());
+            with.put("own-goal-weight", options.get("own-goal-weight"));
+            kept = kept.withMetric(kept.metric(), with);
+        }
+        return kept;
     }
 
     /**

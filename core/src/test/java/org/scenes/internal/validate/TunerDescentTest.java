@@ -84,6 +84,43 @@ class TunerDescentTest {
         assertEquals("0.7", ballGoal.metricOptions().get("memory"));
     }
 
+    @Test
+    void theGoalsAndRingsVariantsSetTheOwnGoalShareAndTheRingWeight() {
+        Tuner.Dimension goals = dimension("goals and rings");
+        MatchConfig polar = Tuner.defaultStarts(MatchConfig.DEFAULT).get(1);
+        MatchConfig attackedOnly = goals.variants().get(3).apply(polar);
+        assertEquals("0", attackedOnly.metricOptions().get("own-goal-weight"));
+        assertEquals("3000", attackedOnly.metricOptions().get("row-weight"));
+        MatchConfig back = goals.variants().get(0).apply(attackedOnly);
+        assertEquals(null, back.metricOptions().get("own-goal-weight"));
+        assertEquals("1000", back.metricOptions().get("row-weight"));
+        // a polar family without rings stays without them; ball-goal is left as it is
+        MatchConfig noRings = dimension("metric").variants().get(2).apply(attackedOnly);
+        assertEquals("0", noRings.metricOptions().get("own-goal-weight"), "the metric variant keeps the share");
+        assertEquals(null, goals.variants().get(2).apply(noRings).metricOptions().get("row-weight"));
+        MatchConfig ballGoal = Tuner.defaultStarts(MatchConfig.DEFAULT).get(0);
+        assertEquals(ballGoal, goals.variants().get(3).apply(ballGoal));
+    }
+
+    @Test
+    void severalStartsKeepTheBestEnd() {
+        // scores by k; from k=1 the descent cannot leave (k=3 is worse), from k=5 it reaches k=7
+        Map<Integer, Double> byK = Map.of(1, 0.6, 3, 0.5, 5, 0.55, 7, 0.9);
+        List<Tuner.Dimension> neighbours = List.of(new Tuner.Dimension("k", List.of(c -> c, c -> c.withK(c.k() == 1 ? 3 : 7))));
+        List<MatchConfig> seen = new ArrayList<>();
+        Tuner.Descent one = Tuner.descend(MatchConfig.DEFAULT.withK(1), neighbours, 3, config -> byK.get(config.k()));
+        assertEquals(1, one.best().k());
+        Tuner.Descent both = Tuner.descend(List.of(MatchConfig.DEFAULT.withK(1), MatchConfig.DEFAULT.withK(5)), neighbours, 3,
+                config -> {
+                    seen.add(config);
+                    return byK.get(config.k());
+                });
+        assertEquals(7, both.best().k());
+        assertEquals(0.9, both.score(), 0.0);
+        assertEquals(List.of(1, 1, 3, 5, 5, 7, 7, 7), seen.stream().map(MatchConfig::k).toList(),
+                "each start descends in turn until a sweep improves nothing");
+    }
+
     private static Tuner.Dimension dimension(String name) {
         return Tuner.defaultSearch().stream().filter(d -> d.name().equals(name)).findFirst().orElseThrow();
     }
