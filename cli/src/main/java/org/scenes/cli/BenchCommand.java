@@ -53,6 +53,12 @@ final class BenchCommand implements Callable<Integer> {
             + "), queried with other synthetic scenes.")
     Integer synthetic;
 
+    @Option(names = "--synthetic-run", paramLabel = "N", defaultValue = "1", description = "With --synthetic: follow each"
+            + " drawn observer for N consecutive cycles, its commands taking effect, so a scene's predecessor (what"
+            + " memory configurations compare) is the same player a cycle earlier, as in a game (default ${DEFAULT-VALUE}:"
+            + " independent moments).")
+    int syntheticRun;
+
     @Option(names = "--metric", paramLabel = "NAME", description = "Metric to measure (repeatable; default: ball-goal with and without its index, continuous greedy and optimal, cell, projection).")
     List<String> metrics;
 
@@ -96,6 +102,12 @@ final class BenchCommand implements Callable<Integer> {
         if (synthetic != null && synthetic < 1) {
             throw new UsageException("--synthetic needs at least 1 scene, not " + synthetic);
         }
+        if (syntheticRun < 1) {
+            throw new UsageException("--synthetic-run must be at least 1, not " + syntheticRun);
+        }
+        if (syntheticRun > 1 && synthetic == null) {
+            throw new UsageException("--synthetic-run follows synthetic observers; give it with --synthetic N");
+        }
         PluginRegistry registry = top.global.registry();
         List<Measured> chosen = new ArrayList<>();
         if (metrics == null) {
@@ -128,9 +140,10 @@ final class BenchCommand implements Callable<Integer> {
         String made = "";
         if (synthetic != null) {
             long start = System.nanoTime();
-            knowledge = generate(synthetic);
-            made = String.format(Locale.ROOT, " (generated in %.1f s)", (System.nanoTime() - start) / 1e9);
-            SyntheticScenes.generate(SYNTHETIC_SEED + 1, queryCount, Grid.DEFAULT, queries::add);
+            knowledge = generate(synthetic, syntheticRun);
+            made = String.format(Locale.ROOT, " (generated in %.1f s%s)", (System.nanoTime() - start) / 1e9,
+                    syntheticRun > 1 ? ", runs of " + syntheticRun + " cycles" : "");
+            SyntheticScenes.generate(SYNTHETIC_SEED + 1, queryCount, syntheticRun, Grid.DEFAULT, queries::add);
         } else {
             knowledge = KnowledgeBase.load(files, List::of);
             queries = queries(knowledge, List::of);
@@ -236,12 +249,12 @@ final class BenchCommand implements Callable<Integer> {
     }
 
     /** Synthetic scenes streamed into a knowledge base, with a progress bar on a terminal. */
-    private static KnowledgeBase generate(int count) {
+    private static KnowledgeBase generate(int count, int run) {
         KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
         try (ProgressBar bar = System.console() == null || count < 50_000 ? null
                 : new ProgressBarBuilder().setTaskName("Generating").setInitialMax(count).setUnit(" scenes", 1)
                         .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build()) {
-            SyntheticScenes.generate(SYNTHETIC_SEED, count, Grid.DEFAULT, scene -> {
+            SyntheticScenes.generate(SYNTHETIC_SEED, count, run, Grid.DEFAULT, scene -> {
                 builder.add(scene);
                 if (bar != null) {
                     bar.step();

@@ -63,6 +63,17 @@ class BenchCommandTest {
     }
 
     @Test
+    void syntheticRunsAreSaidAndNeedSyntheticScenes() {
+        assertEquals(0, run("bench", "--time", "0.02", "--metric", "ball-goal", "--synthetic", 400, "--synthetic-run", 4,
+                "--query-count", 8), cli.err());
+        assertTrue(cli.out().split("\n")[0].contains("runs of 4 cycles"), cli.out());
+        assertEquals(2, run("bench", "--synthetic", 400, "--synthetic-run", 0));
+        assertTrue(cli.err().contains("--synthetic-run"), cli.err());
+        assertEquals(2, run("bench", "--synthetic-run", 3, "x.json"));
+        assertTrue(cli.err().contains("--synthetic-run"), cli.err());
+    }
+
+    @Test
     void syntheticKnowledgeBaseOfTheGivenSize() {
         assertEquals(0, run("bench", "--time", "0.05", "--metric", "ball-goal", "--synthetic", 3000), cli.err());
         String[] lines = cli.out().split("\n");

@@ -56,6 +56,7 @@ public final class SyntheticScenes {
     private final Grid grid;
     private final World world;
     private final Vision vision;
+    private final Physics physics;
     private final MessageParser parser = new MessageParser();
     private final Observer[] observers = new Observer[2 * PLAYERS_PER_SIDE];
     private int cycle;
@@ -72,25 +73,63 @@ public final class SyntheticScenes {
             }
         }
         this.vision = new Vision(world);
+        this.physics = new Physics(world);
     }
 
     /**
      * Hands {@code count} scenes, one at a time, to {@code sink}; objects' cells are in {@code grid}.
      */
     public static void generate(long seed, int count, Grid grid, Consumer<Scene> sink) {
+        generate(seed, count, 1, grid, sink);
+    }
+
+    /**
+     * As {@link #generate(long, int, Grid, Consumer)}, but each drawn moment is followed for
+     * {@code run} consecutive cycles of the same observer: its Krislet command takes effect and the
+     * world moves one step before the next scene, so a scene's predecessor is the one a cycle
+     * earlier, as in a game (what memory configurations compare). A run of 1 gives the same scenes
+     * as the other method.
+     */
+    public static void generate(long seed, int count, int run, Grid grid, Consumer<Scene> sink) {
         if (count < 0) {
             throw new IllegalArgumentException("scene count must not be negative, not " + count);
         }
-        SyntheticScenes scenes = new SyntheticScenes(seed, grid);
-        for (int i = 0; i < count; i++) {
-            sink.accept(scenes.next());
+        if (run < 1) {
+            throw new IllegalArgumentException("a run is at least 1 scene long, not " + run);
         }
+        SyntheticScenes scenes = new SyntheticScenes(seed, grid);
+        if (run > 1) {
+            scenes.world.mode = PlayMode.PLAY_ON; // so dashes move the observer
+        }
+        for (int i = 0; i < count; i++) {
+            sink.accept(i % run == 0 ? scenes.next() : scenes.following());
+        }
+    }
+
+    /** The observer and its last command while a run lasts. */
+    private int seat;
+    private Action last;
+
+    /** The same observer a cycle later: its last command applied, then one step of motion for everything. */
+    private Scene following() {
+        Player self = world.players.get(seat);
+        switch (last.type()) {
+            case TURN -> physics.turn(self, last.first());
+            case DASH -> physics.dash(self, last.first());
+            case KICK -> physics.kick(self, last.first(), last.second());
+            default -> {
+            }
+        }
+        physics.step();
+        cycle = cycle % GAME_CYCLES + 1;
+        world.time = cycle;
+        return seen(self, observers[seat]);
     }
 
     private Scene next() {
         cycle = cycle % GAME_CYCLES + 1;
         world.time = cycle;
-        int seat = random.nextInt(world.players.size());
+        seat = random.nextInt(world.players.size());
         Player self = world.players.get(seat);
         Observer observer = observers[seat];
 
@@ -107,11 +146,15 @@ public final class SyntheticScenes {
             }
         }
         placeObserver(self, ball);
+        return seen(self, observer);
+    }
 
+    /** What the observer sees now, with the command the classic Krislet answers it with. */
+    private Scene seen(Player self, Observer observer) {
         See see = (See) parser.parse(vision.see(self));
         String command = Teachers.krisletCommand(see, observer.side());
-        Action action = ((PlayerCommand) parser.parse(command)).toAction();
-        return new Scene(cycle, observer, SceneConverter.seenObjects(see, observer, grid), List.of(action));
+        last = ((PlayerCommand) parser.parse(command)).toAction();
+        return new Scene(cycle, observer, SceneConverter.seenObjects(see, observer, grid), List.of(last));
     }
 
     /** At a distance from the ball, within the pitch's margin, looking at it or anywhere. */

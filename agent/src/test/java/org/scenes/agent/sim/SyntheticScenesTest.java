@@ -43,6 +43,56 @@ class SyntheticScenesTest {
     }
 
     @Test
+    void runsFollowOneObserverWhoseCommandsTakeEffect() {
+        List<Scene> runs = new ArrayList<>();
+        SyntheticScenes.generate(7, 4000, 4, Grid.DEFAULT, runs::add);
+        List<Scene> single = new ArrayList<>();
+        SyntheticScenes.generate(7, 300, 1, Grid.DEFAULT, single::add);
+        assertEquals(generate(7, 300, Grid.DEFAULT), single, "a run of 1 is the plain generator");
+        assertEquals(runs, collect(7, 4000, 4), "the same seed, the same runs");
+        int turnsFollowed = 0;
+        int againstTheMoment = 0;
+        for (int i = 0; i + 1 < runs.size(); i++) {
+            Scene now = runs.get(i);
+            Scene next = runs.get(i + 1);
+            if ((i + 1) % 4 == 0) {
+                continue; // a new run starts
+            }
+            assertEquals(now.observer(), next.observer(), "scene " + i);
+            assertEquals(now.cycle() % 6000 + 1, next.cycle(), "scene " + i);
+            SeenObject ball = ball(now);
+            SeenObject after = ball(next);
+            double moment = now.actionType() == ActionType.TURN ? now.primaryAction().first() : 0;
+            if (Math.abs(moment) >= 10 && ball != null && after != null && ball.distance() > 10) {
+                // a far ball moves little in a cycle, so the turn moves it, against the moment, by at
+                // most the moment and its 10 % noise (less for a moving player: inertia)
+                double moved = after.direction() - ball.direction();
+                assertTrue(Math.abs(moved) <= 1.1 * Math.abs(moment) + 8, "scene " + i + ": turned " + moment
+                        + ", the ball moved " + moved);
+                turnsFollowed++;
+                if (moved * Math.signum(moment) < 0) {
+                    againstTheMoment++;
+                }
+            }
+        }
+        assertTrue(turnsFollowed > 50, "turns checked: " + turnsFollowed);
+        // a fast player turns less (inertia) and the ball and player move too: nearly always, not always
+        assertTrue(againstTheMoment >= 0.9 * turnsFollowed, againstTheMoment + " of " + turnsFollowed);
+        assertThrows(IllegalArgumentException.class, () -> SyntheticScenes.generate(1, 10, 0, Grid.DEFAULT, s -> { }));
+    }
+
+    private static List<Scene> collect(long seed, int count, int run) {
+        List<Scene> scenes = new ArrayList<>();
+        SyntheticScenes.generate(seed, count, run, Grid.DEFAULT, scenes::add);
+        return scenes;
+    }
+
+    private static SeenObject ball(Scene scene) {
+        return scene.objects().stream().filter(o -> o.kind() == ObjectKind.BALL && o.name().equals("b")).findFirst()
+                .orElse(null);
+    }
+
+    @Test
     void everyCellIsTheGridsCellOfTheObject() {
         Grid grid = new Grid(7, -60, 60, new double[] {2, 8, 20});
         for (Scene scene : generate(5, 3000, grid)) {
