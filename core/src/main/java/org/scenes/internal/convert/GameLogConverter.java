@@ -7,11 +7,13 @@ import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Set;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.function.Predicate;
@@ -164,10 +166,10 @@ public final class GameLogConverter {
 
     /** One show and what was sent around it, handed to every worker. */
     private record Step(GameFrame frame, long index, List<Sent> before, List<Sent> at, boolean seesDue,
-                        List<Player> players) {
+                        List<Player> players, Set<Player> synchSees) {
     }
 
-    private static final Step END = new Step(null, 0, List.of(), List.of(), false, List.of());
+    private static final Step END = new Step(null, 0, List.of(), List.of(), false, List.of(), Set.of());
 
     /** A rebuilt player: its log being converted and how it sees; touched by its worker only once started. */
     private static final class Player {
@@ -303,7 +305,7 @@ public final class GameLogConverter {
                 int first = commandsFirst(player, sent.size());
                 deliver(player, sent.subList(0, first), next);
                 if (step.seesDue()) {
-                    int sees = seesDue(player, state, step.index());
+                    int sees = seesDue(player, state, step);
                     for (int i = 0; i < sees; i++) {
                         see(player, state, frame);
                         player.seeStep = next;
@@ -394,17 +396,16 @@ public final class GameLogConverter {
             player.sentBody = false;
         }
 
-        /** How many sees the player gets after this show: the server's timing as the simulator keeps it. */
-        int seesDue(Player player, PlayerState state, long index) {
-            // The show was written at the end of its step; its sees go out in the next step.
-            long next = index + 1;
-            double factor = state.viewWidth() / run.visibleAngle;
+        /**
+         * How many sees the player gets after this show: synchronous ones as the reading thread's
+         * {@link SynchSeeCounter} decided, asynchronous ones by the player's see clock.
+         */
+        int seesDue(Player player, PlayerState state, Step step) {
             if (player.synchSee) {
-                // synchronous: cones of 2/3, 4/3 and 2 visible_angle for a see every 1, 2, 3 steps
-                int every = (int) Math.max(1, Math.round(factor * 1.5));
-                return next % every == 0 ? 1 : 0;
+                return step.synchSees().contains(player) ? 1 : 0;
             }
-            return asynchSees(next, run.period(state), player.seeOffset, run.simulatorStep);
+            // The show was written at the end of its step; its sees go out in the next step.
+            return asynchSees(step.index() + 1, run.period(state), player.seeOffset, run.simulatorStep);
         }
 
         void see(Player player, PlayerState self, GameFrame frame) throws IOException {
@@ -485,6 +486,13 @@ public final class GameLogConverter {
         int goalCycle = -1;
         /** The server's step of each player's init, by TEAM_UNUM. */
         final Map<String, Long> initSteps = new HashMap<>();
+        /** Each player's synchronous see counter, by TEAM_UNUM, from its init on. */
+        final Map<String, SynchSeeCounter> counters = new HashMap<>();
+        /** The server's step of converter step 0, and the current show's step and time. */
+        long serverOffset;
+        long lastStep;
+        int showTime = -1;
+        int showStoppage;
         String leftTeam = "";
         String rightTeam = "";
         double visibleAngle = 90;
@@ -569,13 +577,12 @@ public final class GameLogConverter {
                 step = time + Math.max(0, stoppage - 1);
                 // the server's steps before: those of cycle 0 (before kick-off) when the log starts later
                 serverShift = time > 0 ? lastStoppageAt(0, 0) : 0;
-            } else if (time == lastTime) {
-                step += stoppage - lastStoppage;
+                serverOffset = (time == 0 ? stoppage : time + serverShift + stoppage) - step;
             } else {
-                // stoppage steps of the cycles since the previous show that the game log skipped
-                // (rcssserver's JSON log has no show of the half-time break): the command log tells
-                step += (time - lastTime) + stoppage + skippedStoppage(lastTime, lastStoppage, time);
+                step = stepAfterLast(time, stoppage);
             }
+            showTime = time;
+            showStoppage = stoppage;
             // what was sent before this show: the players' inits (versions) come before their first show
             List<Sent> before = new ArrayList<>();
             collect(before, time, stoppage, true);
@@ -589,16 +596,88 @@ public final class GameLogConverter {
                     }
                 }
             }
+            Set<Player> synchSees = synchSees(frame);
             List<Sent> at = new ArrayList<>();
             collect(at, time, stoppage, false);
-            Step work = new Step(frame, step, before, at, !mode.equals("time_over"), starting);
+            Step work = new Step(frame, step, before, at, !mode.equals("time_over"), starting, synchSees);
             for (Worker worker : workers) {
                 worker.submit(work);
             }
             lastTime = time;
             lastStoppage = stoppage;
+            lastStep = step;
             lastMode = mode;
             frames++;
+        }
+
+        /**
+         * The converter's step of ({@code time}, {@code stoppage}), after the last show's. The
+         * stoppage steps of the cycles since that show which the game log skipped (rcssserver's
+         * JSON log has no show of the half-time break) the command log tells.
+         */
+        long stepAfterLast(int time, int stoppage) throws IOException {
+            if (time == lastTime) {
+                return lastStep + stoppage - lastStoppage;
+            }
+            return lastStep + (time - lastTime) + stoppage + skippedStoppage(lastTime, lastStoppage, time);
+        }
+
+        /** The server's step a command log entry was received in. */
+        long serverStep(CommandLogReader.Entry entry) throws IOException {
+            if (entry.time() == showTime && entry.stoppage() == showStoppage) {
+                return step + serverOffset;
+            }
+            if (frames == 0) {
+                // before the first show: the clock stands before kick-off, its steps are the stoppage
+                return entry.time() == 0 ? entry.stoppage() : entry.time() + serverShift + entry.stoppage();
+            }
+            return stepAfterLast(entry.time(), entry.stoppage()) + serverOffset;
+        }
+
+        /**
+         * The players of this show who get a synchronous see with it: their counters raised
+         * through the show's step, the last step's interval the show's view width.
+         */
+        Set<Player> synchSees(GameFrame frame) {
+            Set<Player> due = null;
+            long at = step + serverOffset;
+            for (PlayerState state : frame.players()) {
+                Player player = slot(frame, state);
+                SynchSeeCounter counter = player == null ? null : counters.get(player.key);
+                if (counter == null || !counter.synch()) {
+                    continue; // (the worker's Player.synchSee is its own)
+                }
+                counter.interval(at - 1, (int) Math.max(1, Math.round(state.viewWidth() / visibleAngle * 1.5)));
+                if (counter.advance(at)) {
+                    due = due == null ? new HashSet<>() : due;
+                    due.add(player);
+                }
+            }
+            return due == null ? Set.of() : due;
+        }
+
+        /** The player's counter from its init (the server's step 0 when the command log has none). */
+        SynchSeeCounter counter(String key, boolean synch) {
+            return counters.computeIfAbsent(key, k -> new SynchSeeCounter(0, 2, synch));
+        }
+
+        /** What a player's message does to its see counter: {@code synch_see}, {@code change_view}. */
+        void countSees(String key, String message, CommandLogReader.Entry entry) throws IOException {
+            if (message.startsWith("(synch_see)")) {
+                counter(key, false).startSynch(serverStep(entry));
+                return;
+            }
+            for (int at = message.indexOf("(change_view "); at >= 0; at = message.indexOf("(change_view ", at + 1)) {
+                int end = message.indexOf(')', at);
+                String[] words = message.substring(at + 13, end < 0 ? message.length() : end).strip().split("\\s+");
+                SynchSeeCounter counter = counter(key, false);
+                int interval = SynchSeeCounter.interval(words[0]);
+                // synchronous sees are of high quality only: the server ignores a change to low
+                boolean ignored = words.length > 2 || counter.synch() && words.length == 2 && !words[1].equals("high");
+                if (interval > 0 && !ignored) {
+                    counter.interval(serverStep(entry), interval);
+                }
+            }
         }
 
         /** The period of a player's asynchronous sees in its view mode, in ms. */
@@ -804,7 +883,7 @@ public final class GameLogConverter {
             }
         }
 
-        void route(CommandLogReader.Entry entry, List<Sent> into) {
+        void route(CommandLogReader.Entry entry, List<Sent> into) throws IOException {
             lastLine = entry.line();
             if (entry.referee()) {
                 if (entry.text().startsWith("goal_")) {
@@ -821,11 +900,15 @@ public final class GameLogConverter {
             String key = team + "_" + entry.unum();
             String message = entry.text();
             if (message.startsWith("(init ")) {
-                versions.put(key, version(message));
-                // the clock stands before kick-off: its steps are the stoppage
-                initSteps.put(key, entry.time() == 0 ? entry.stoppage() : entry.time() + serverShift + entry.stoppage());
+                int version = version(message);
+                versions.put(key, version);
+                long at = serverStep(entry);
+                initSteps.put(key, at);
+                // clients of version 18 and later see synchronously from their init on
+                counters.put(key, new SynchSeeCounter(at, 2, version >= 18));
                 return;
             }
+            countSees(key, message, entry);
             Player player = players.get(key);
             if (player == null) {
                 if (message.startsWith("(synch_see)")) {
@@ -854,6 +937,10 @@ public final class GameLogConverter {
                         || Math.abs(factor - 2.0 / 3) < 1e-6 || Math.abs(factor - 4.0 / 3) < 1e-6;
                 player = new Player(observer, key, output.open(observer), workers.get(nextWorker++ % threads),
                         version, synch, synch ? 0 : seeOffset(key, frame.time(), state), fading.forObserver(key));
+                if (synch) {
+                    // synchronous without an init or synch_see in the command log: from the server's step 0
+                    counter(key, true).startSynch(0);
+                }
                 if (state.unum() >= 0 && state.unum() < 64) {
                     slots[state.side() == Side.LEFT ? 0 : 1][state.unum()] = player;
                 }
@@ -894,7 +981,7 @@ public final class GameLogConverter {
             if (frames == 0) {
                 throw new LogException(gameLog, 0, "no show in the game log: nothing to rebuild", null);
             }
-            Step last = new Step(null, 0, after, List.of(), false, List.of());
+            Step last = new Step(null, 0, after, List.of(), false, List.of(), Set.of());
             for (Worker worker : workers) {
                 worker.submit(last);
             }
