@@ -7,10 +7,17 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.TreeMap;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.scenes.agent.sim.Engine;
+import org.scenes.agent.sim.GameRecorder;
 import org.scenes.agent.sim.GameSetup;
+import org.scenes.agent.sim.Seat;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Grid;
@@ -82,5 +89,89 @@ class GameLogScenesTest {
         assertTrue(r.distanceWithinStepShare() >= 0.99, "distances " + r.distanceWithinStepShare());
         assertTrue(r.directionWithinStepShare() >= 0.99, "directions " + r.directionWithinStepShare());
         assertTrue(r.actionShare() >= 0.99, "actions " + r.actionShare());
+    }
+
+    /**
+     * Synchronous clients (version 18) that change their view width at random cycles, odd ones
+     * too, on the simulator: which steps get a see depends on every earlier change (rcssserver's
+     * counter), and the rebuilt scenes have their sees on the same cycles as the logged ones,
+     * through the half-time break the game log skips.
+     */
+    @Test
+    void synchronousSeesFollowEveryChangeOfViewWidth() throws Exception {
+        int cycles = 300;
+        Engine engine = new Engine(cycles, 5);
+        Random random = new Random(5);
+        Map<String, List<String>> traffic = new TreeMap<>();
+        Map<Seat, List<String>> bySeat = new HashMap<>();
+        List<Path> recorded;
+        int changes = 0;
+        try (GameRecorder recorder = GameRecorder.open(dir, engine)) {
+            engine.record(recorder);
+            for (String team : List.of("Red", "Blue")) {
+                for (int unum = 1; unum <= 2; unum++) {
+                    List<String> log = new ArrayList<>();
+                    String init = "(init " + team + " (version 18))";
+                    log.add(init);
+                    Seat seat = engine.join(team, 18, false, init, log::add);
+                    engine.welcome(seat);
+                    log.add("(synch_see)");
+                    engine.answerNow(seat, "(synch_see)");
+                    traffic.put(team + "_" + unum, log);
+                    bySeat.put(seat, log);
+                }
+            }
+            String[] widths = {"narrow", "normal", "wide"};
+            while (engine.sense()) {
+                // each player answers the cycle's sees: a body command, now and then a change of width
+                for (Seat seat : engine.seats()) {
+                    List<String> log = bySeat.get(seat);
+                    List<String> commands = new ArrayList<>(List.of(random.nextBoolean()
+                            ? "(turn " + (random.nextInt(90) - 45) + ")" : "(dash " + (20 + random.nextInt(80)) + ")"));
+                    if (random.nextInt(6) == 0) {
+                        commands.add("(change_view " + widths[random.nextInt(3)] + ")");
+                        changes++;
+                    }
+                    for (String command : commands) {
+                        log.add(command);
+                        engine.received(seat, command);
+                    }
+                }
+                engine.advance();
+            }
+            recorded = recorder.commit();
+        }
+        assertTrue(changes > 100, changes + " changes of width");
+        Map<String, Map<Integer, Integer>> logged = new TreeMap<>();
+        SceneConverter converter = new SceneConverter(Grid.DEFAULT, false, line -> { });
+        for (Map.Entry<String, List<String>> player : traffic.entrySet()) {
+            Path log = Files.write(dir.resolve(player.getKey() + ".lsf"), player.getValue());
+            Map<Integer, Integer> ages = new TreeMap<>();
+            converter.convert(log, scene -> ages.put(scene.cycle(), scene.seeAge()));
+            logged.put(player.getKey(), ages);
+        }
+        Map<String, Map<Integer, Integer>> rebuilt = new TreeMap<>();
+        new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.HALFWAY, GameLogConverter.everyone(), 1)
+                .convert(recorded.get(0), recorded.get(1), observer -> {
+                    Map<Integer, Integer> ages = new TreeMap<>();
+                    rebuilt.put(observer.team() + "_" + observer.uniformNumber(), ages);
+                    return scene -> ages.put(scene.cycle(), scene.seeAge());
+                });
+        assertEquals(logged.keySet(), rebuilt.keySet());
+        for (String player : logged.keySet()) {
+            // the last step of each cycle has a see in both, or in neither; not compared: the kick-off
+            // cycles, where a see the same as the last one (the clock stands) opens no scene of its own
+            Map<Integer, Integer> rebuiltAges = rebuilt.get(player);
+            List<Integer> seen = new ArrayList<>();
+            List<Integer> seenRebuilt = new ArrayList<>();
+            logged.get(player).forEach((cycle, age) -> {
+                if (rebuiltAges.containsKey(cycle) && cycle != 0 && cycle != cycles / 2) {
+                    (age == 0 ? seen : new ArrayList<Integer>()).add(cycle);
+                    (rebuiltAges.get(cycle) == 0 ? seenRebuilt : new ArrayList<Integer>()).add(cycle);
+                }
+            });
+            assertTrue(seen.size() > cycles / 3, player + ": " + seen.size() + " cycles with a see");
+            assertEquals(seen, seenRebuilt, player);
+        }
     }
 }
