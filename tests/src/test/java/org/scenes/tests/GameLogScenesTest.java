@@ -44,12 +44,56 @@ class GameLogScenesTest {
     @Test
     void rebuiltScenesMatchTheLoggedOnes() throws IOException {
         Path logs = dir.resolve("logs");
+        Simulator simulator = krisletGame(logs);
+        SceneComparison.Result r = compare(simulator.recorded().get(0), simulator.recorded().get(1), logs);
+        // The logged scenes of the steps the game log skips (the 100 before each half's kick-off)
+        // have no show to be rebuilt from; the rest pair by cycle.
+        assertTrue(r.paired() > 0.97 * r.scenesA(), r.paired() + " of " + r.scenesA());
+        assertTrue(r.paired() > 0.99 * r.scenesB(), r.paired() + " of " + r.scenesB());
+        assertTrue(r.matchedShare() >= 0.99, "objects in both " + r.matchedShare());
+        assertTrue(r.distanceWithinStepShare() >= 0.99, "distances " + r.distanceWithinStepShare());
+        assertTrue(r.directionWithinStepShare() >= 0.99, "directions " + r.directionWithinStepShare());
+        assertTrue(r.actionShare() >= 0.99, "actions " + r.actionShare());
+    }
+
+    /**
+     * Krislet sends a command every other cycle whatever it sees, so the timing of its commands
+     * tells nothing of its see clock; what it did does. The command log is made to say that every
+     * player connected in step 3, as rcssserver logs it: the counter's first tick is then one of
+     * three, and the true clock (the simulator's) is the third, which the first tick's misses on
+     * two steps in three.
+     */
+    @Test
+    void theSeeClockOfAPlayerOnAClockOfItsOwnIsFoundFromWhatItDid() throws IOException {
+        Path logs = dir.resolve("logs");
+        Simulator simulator = krisletGame(logs);
+        Path rcl = simulator.recorded().get(1);
+        List<String> lines = new ArrayList<>(Files.readAllLines(rcl));
+        List<String> inits = new ArrayList<>();
+        lines.removeIf(line -> line.contains(": (init ") && inits.add(line.replace("0,0\t", "0,3\t")));
+        int at = 0;
+        while (lines.get(at).startsWith("0,0\t") || lines.get(at).startsWith("0,1\t")
+                || lines.get(at).startsWith("0,2\t")) {
+            at++;
+        }
+        lines.addAll(at, inits);
+        Path moved = Files.write(dir.resolve("moved.rcl"), lines);
+        SceneComparison.Result r = compare(simulator.recorded().get(0), moved, logs);
+        assertTrue(r.paired() > 0.99 * r.scenesB(), r.paired() + " of " + r.scenesB());
+        assertTrue(r.matchedShare() >= 0.99, "objects in both " + r.matchedShare());
+    }
+
+    /** A 4 v 4 Krislet game, each player's log in {@code logs} and the server's logs in the test's directory. */
+    private Simulator krisletGame(Path logs) throws IOException {
         // a team name with '_': the command log's number follows the last one
         Simulator simulator = new Simulator(new GameSetup(new GameSetup.Team("Red_A", 4, Teachers.byName("krislet")),
                 new GameSetup.Team("Blue", 4, Teachers.byName("krislet")), CYCLES, 3, logs)).recordTo(dir);
         simulator.run(t -> { });
-        Path rcg = simulator.recorded().get(0);
-        Path rcl = simulator.recorded().get(1);
+        return simulator;
+    }
+
+    /** The players' logged scenes against those rebuilt from the server's logs. */
+    private SceneComparison.Result compare(Path rcg, Path rcl, Path logs) throws IOException {
         Path logged = Files.createDirectories(dir.resolve("logged"));
         Path rebuilt = Files.createDirectories(dir.resolve("rebuilt"));
         List<SceneFileWriter> writers = new ArrayList<>();
@@ -80,15 +124,7 @@ class GameLogScenesTest {
             left.add(scenes);
             right.add(rebuilt.resolve(player.key() + ".json"));
         }
-        SceneComparison.Result r = new SceneComparison().compare(left, right);
-        // The logged scenes of the steps the game log skips (the 100 before each half's kick-off)
-        // have no show to be rebuilt from; the rest pair by cycle.
-        assertTrue(r.paired() > 0.97 * r.scenesA(), r.paired() + " of " + r.scenesA());
-        assertTrue(r.paired() > 0.99 * r.scenesB(), r.paired() + " of " + r.scenesB());
-        assertTrue(r.matchedShare() >= 0.99, "objects in both " + r.matchedShare());
-        assertTrue(r.distanceWithinStepShare() >= 0.99, "distances " + r.distanceWithinStepShare());
-        assertTrue(r.directionWithinStepShare() >= 0.99, "directions " + r.directionWithinStepShare());
-        assertTrue(r.actionShare() >= 0.99, "actions " + r.actionShare());
+        return new SceneComparison().compare(left, right);
     }
 
     /**

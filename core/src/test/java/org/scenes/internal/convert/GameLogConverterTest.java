@@ -286,8 +286,9 @@ class GameLogConverterTest {
         // as rcssserver logs it: players connect in step 26 of cycle 0, kick-off at 0,300; no show of
         // cycle 0 nor of the half-time break (150,0 to 150,19, its last step told by the players). The counter's first tick after step 26
         // (2625, 2662.5 or 2700 ms) puts the sees of the first half in the cycles t mod 3 != 2, != 1
-        // or != 0; after 19 more steps, != 1, != 0, != 2. Dashing every cycle tells nothing: the first
-        // tick; dashing in the cycles t mod 3 != 1 tells the second.
+        // or != 0; after 19 more steps, != 1, != 0, != 2. Dashing every cycle tells nothing, neither by
+        // its timing nor by what it does (every see answered alike): the first tick; dashing in the
+        // cycles t mod 3 != 1 tells the second.
         int half = 150;
         IntPredicate dashing = t -> t != half && (everyCycle || (t < half ? t % 3 != 1 : t % 3 != 0));
         Path game = dir.resolve("game.rcg");
