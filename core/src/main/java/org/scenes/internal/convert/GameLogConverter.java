@@ -172,6 +172,8 @@ public final class GameLogConverter {
      * whether the timing of its commands told them apart.
      */
     private record Phase(double offset, List<Double> candidates, boolean told) {
+        /** The first step's clock, nothing to decide. */
+        static final Phase FIRST_STEP = new Phase(0, List.of(0.0), true);
     }
 
     /** A player whose see clock waits for what it did in its first cycles, from {@code from} on. */
@@ -783,7 +785,7 @@ public final class GameLogConverter {
          */
         Phase seeOffset(String key, int time, PlayerState state) throws IOException {
             if (seePhase == SeePhase.FIRST_STEP) {
-                return new Phase(0, List.of(0.0), true);
+                return Phase.FIRST_STEP;
             }
             readThrough(time + PHASE_WINDOW);
             long shift = step - time + 1;
@@ -841,8 +843,9 @@ public final class GameLogConverter {
          * (rcssserver's command log counts the steps before kick-off as stoppage), its counter's
          * first tick is the first {@code send_step / 4} tick after the init arrived, any time in
          * that step: one of the 3 or 4 ticks from the step's start to a tick past its end; its first
-         * see comes {@code interval} ticks on; the first tick is taken unless commands tell otherwise. Without it (or at step 0, as the project's simulator logs every init), any
-         * offset in {@link #PHASE_GRAIN} ms steps, 0 first.
+         * see comes {@code interval} ticks on; the first tick is taken unless commands tell otherwise.
+         * Without it (or at step 0, as the project's simulator logs every init), any offset in
+         * {@link #PHASE_GRAIN} ms steps, 0 first.
          */
         List<Double> candidates(Long initStep, double period) {
             List<Double> offsets = new ArrayList<>();
@@ -855,7 +858,8 @@ public final class GameLogConverter {
             double tick = sendStep / 4;
             long interval = Math.max(1, Math.round(period / tick));
             double from = initStep * simulatorStep;
-            for (long t = (long) Math.floor(from / tick + 1e-9) + 1; t * tick < from + simulatorStep + tick - 1e-9; t++) {
+            double until = from + simulatorStep + tick;
+            for (long t = (long) Math.floor(from / tick + 1e-9) + 1; t * tick < until - 1e-9; t++) {
                 // the server's step g sends the sees of the cycle it makes: this converter's step g - shift + 1
                 double see = (t + interval - 1) * tick - (serverShift - 1) * simulatorStep;
                 offsets.add(((see % period) + period) % period);
@@ -1029,7 +1033,7 @@ public final class GameLogConverter {
                 boolean synch = version >= 18 || synchSee.getOrDefault(key, false)
                         // cones only synchronous vision has (60 and 120 degrees): a log without the init
                         || Math.abs(factor - 2.0 / 3) < 1e-6 || Math.abs(factor - 4.0 / 3) < 1e-6;
-                Phase phase = synch ? new Phase(0, List.of(0.0), true) : seeOffset(key, frame.time(), state);
+                Phase phase = synch ? Phase.FIRST_STEP : seeOffset(key, frame.time(), state);
                 player = new Player(observer, key, output.open(observer), workers.get(nextWorker++ % threads),
                         version, synch, phase.offset(), fading.forObserver(key));
                 if (!phase.told()) {

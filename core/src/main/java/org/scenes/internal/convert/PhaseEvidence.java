@@ -106,6 +106,9 @@ final class PhaseEvidence {
             // (Worker.commandsFirst), it answers the latest see of an earlier step when that see came
             // after its last command's step, else the see of its own step, if any
             int step = commandShows.get(i) - 1;
+            if (step < 0) {
+                continue; // sent before the first show
+            }
             int see = sees.previousSetBit(step - 1);
             if (see <= lastCommand && sees.get(step)) {
                 see = step;
@@ -152,8 +155,8 @@ final class PhaseEvidence {
         if (!inA) {
             return 0;
         }
-        return Math.min(2 * MISSING, ROW_WEIGHT * Math.abs(a[at] - b[at]) + COLUMN_WEIGHT * Math.abs(a[at + 1] - b[at + 1])
-                + ANGLE_WEIGHT * Math.abs(a[at + 2] - b[at + 2]));
+        return Math.min(2 * MISSING, ROW_WEIGHT * Math.abs(a[at] - b[at])
+                + COLUMN_WEIGHT * Math.abs(a[at + 1] - b[at + 1]) + ANGLE_WEIGHT * Math.abs(a[at + 2] - b[at + 2]));
     }
 
     private static final String[] BODY = {"(dash ", "(turn ", "(kick ", "(catch ", "(tackle ", "(move "};
