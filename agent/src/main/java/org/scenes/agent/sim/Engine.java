@@ -149,10 +149,28 @@ public final class Engine {
         return null;
     }
 
-    /** The init reply, then {@code server_param}, {@code player_param} and the player type, in the seat's version. */
+    /**
+     * The init reply, then {@code server_param}, {@code player_param} and the player type, in the
+     * seat's version; for version 18 and later then {@code (ok synch_see)}: rcssserver gives those
+     * clients synchronous sees from their init on, and the game's logs are converted so.
+     */
     public void welcome(Seat seat) {
         seat.send(Vision.initReply(seat.player, referee.playModeWord()));
         sendParameters(seat);
+        if (seat.version >= 18) {
+            synchSee(seat);
+        }
+    }
+
+    /** Synchronous sees from now on, their counter from the next step (also for a repeated request). */
+    private void synchSee(Seat seat) {
+        if (!seat.player.synchSee) {
+            seat.seeCount = 0;
+            seat.seeCountFrom = loggedStep() + 1;
+        }
+        seat.player.synchSee = true;
+        seat.player.highQuality = true;
+        seat.send("(ok synch_see)");
     }
 
     private void sendParameters(Seat seat) {
@@ -432,13 +450,7 @@ public final class Engine {
                 if (seat.version < 18) {
                     seat.send("(error illegal_command_form)");
                 } else {
-                    if (!seat.player.synchSee) {
-                        seat.seeCount = 0;
-                        seat.seeCountFrom = loggedStep() + 1;
-                    }
-                    seat.player.synchSee = true;
-                    seat.player.highQuality = true;
-                    seat.send("(ok synch_see)");
+                    synchSee(seat);
                 }
                 return true;
             }
