@@ -52,6 +52,8 @@ public final class Engine {
     private GameRecorder recorder;
     private List<String> announcements = List.of();
     private int step;
+    /** Whether {@link #sense} ran for the step not yet {@link #advance}d (what arrives now is logged with its time). */
+    private boolean sensed;
     private int stoppage;
     private int kicksLeft;
     private int kicksRight;
@@ -98,6 +100,7 @@ public final class Engine {
         }
         teams[side == Side.LEFT ? 0 : 1] = team;
         Seat seat = new Seat(world.add(team, side, unum, goalie), version, out);
+        seat.seeCountFrom = loggedStep() + 1;
         seats.add(seat);
         seats.sort(Comparator.comparing(Seat::side).thenComparingInt(Seat::unum));
         log(seat, init);
@@ -146,10 +149,28 @@ public final class Engine {
         return null;
     }
 
-    /** The init reply, then {@code server_param}, {@code player_param} and the player type, in the seat's version. */
+    /**
+     * The init reply, then {@code server_param}, {@code player_param} and the player type, in the
+     * seat's version; for version 18 and later then {@code (ok synch_see)}: rcssserver gives those
+     * clients synchronous sees from their init on, and the game's logs are converted so.
+     */
     public void welcome(Seat seat) {
         seat.send(Vision.initReply(seat.player, referee.playModeWord()));
         sendParameters(seat);
+        if (seat.version >= 18) {
+            synchSee(seat);
+        }
+    }
+
+    /** Synchronous sees from now on, their counter from the next step (also for a repeated request). */
+    private void synchSee(Seat seat) {
+        if (!seat.player.synchSee) {
+            seat.seeCount = 0;
+            seat.seeCountFrom = loggedStep() + 1;
+        }
+        seat.player.synchSee = true;
+        seat.player.highQuality = true;
+        seat.send("(ok synch_see)");
     }
 
     private void sendParameters(Seat seat) {
@@ -266,6 +287,7 @@ public final class Engine {
             }
         }
         step++;
+        sensed = true;
         if (world.mode == PlayMode.TIME_OVER) {
             over = true;
             return false;
@@ -276,10 +298,20 @@ public final class Engine {
     private int seesDue(Seat seat, long begin, long end) {
         Player player = seat.player;
         if (player.synchSee) {
-            // Version 18+ synchronous sees: at the cycle's start, every 1, 2 or 3 cycles for narrow, normal, wide.
+            // Version 18+ synchronous sees, at the cycle's start, as rcssserver counts them: the seat's
+            // counter rises once a step from the step after its connection (or synch_see) and a see goes
+            // out when it reaches the width's interval (1, 2, 3 for narrow, normal, wide), then from 0;
+            // change_view sets the interval, not the counter, so the server's logs tell which steps see.
+            if (step < seat.seeCountFrom) {
+                return 0;
+            }
             int every = player.viewWidth == Player.ViewWidth.NARROW ? 1 : player.viewWidth == Player.ViewWidth.NORMAL
                     ? 2 : 3;
-            return (step % every) == 0 ? 1 : 0;
+            if (++seat.seeCount < every) {
+                return 0;
+            }
+            seat.seeCount = 0;
+            return 1;
         }
         long period = Math.round(params.sendStep() * player.viewWidth.factor * (player.highQuality ? 1 : 0.5));
         long first = (begin + period - 1) / period * period;
@@ -306,6 +338,7 @@ public final class Engine {
         }
         int before = world.time;
         referee.endStep();
+        sensed = false;
         stoppage = world.time == before ? stoppage + 1 : 0;
         announcements = referee.takeAnnouncements();
         recordAnnouncements();
@@ -417,9 +450,7 @@ public final class Engine {
                 if (seat.version < 18) {
                     seat.send("(error illegal_command_form)");
                 } else {
-                    seat.player.synchSee = true;
-                    seat.player.highQuality = true;
-                    seat.send("(ok synch_see)");
+                    synchSee(seat);
                 }
                 return true;
             }
@@ -520,6 +551,11 @@ public final class Engine {
     /** The server's parameter messages as a game log holds them (the newest version's form). */
     public List<String> parameterMessages() {
         return List.of(params.serverParamMessage(), params.playerParamMessage(), params.playerTypeMessage());
+    }
+
+    /** The step of the time the command log gives what arrives now. */
+    private int loggedStep() {
+        return sensed ? step - 1 : step;
     }
 
     private void log(Seat seat, String message) {

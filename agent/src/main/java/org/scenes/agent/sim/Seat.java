@@ -19,6 +19,9 @@ public final class Seat {
     /** Cycles a goalie must wait after a catch attempt ({@code catch_ban_cycle}). */
     int catchBan;
     boolean connected = true;
+    /** rcssserver's synchronous see counter, and the first step it rises in (the one after the connection). */
+    int seeCount;
+    int seeCountFrom;
 
     Seat(Player player, int version, Consumer<String> out) {
         this.player = player;

@@ -221,6 +221,8 @@ class SoccerServerTest {
              RawClient again = new RawClient(server.port())) {
             first.init("(init Teal (version 9))");
             modern.init("(init Amber (version 18))");
+            // synchronous sees from the init on, as rcssserver gives version 18; asking again is answered alike
+            assertEquals("(ok synch_see)", modern.receive());
             modern.send("(synch_see)");
             assertEquals("(ok synch_see)", modern.receive());
             again.toInitPort("(reconnect Teal 1)");

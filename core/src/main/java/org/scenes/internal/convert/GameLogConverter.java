@@ -7,11 +7,13 @@ import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Set;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.function.Predicate;
@@ -48,6 +50,12 @@ public final class GameLogConverter {
     private static final int AGREEMENT_SAMPLE = 200;
     /** Cycles of a player's commands read ahead to infer the phase of its see clock. */
     private static final int PHASE_WINDOW = 300;
+    /**
+     * Cycles of what a player did that decide its see clock when the timing of its commands did not
+     * (measured on three real-server games of the project's Krislet: 17 of 18 right from 300 cycles,
+     * all 18 from 600); the steps are held meanwhile.
+     */
+    private static final int CONTENT_WINDOW = 1000;
     /** Commands more that another phase must explain, as a share of those read, to replace the first step's. */
     private static final double PHASE_MARGIN = 0.1;
     /** Steps of the candidate phases, in ms. */
@@ -61,8 +69,9 @@ public final class GameLogConverter {
          * rcssserver's: the player's own see counter, started at the first tick after its connection;
          * the command log gives the connection's step, not the tick: of the candidates the one that
          * explains clearly most of the player's commands (a see-driven player answers in the cycle
-         * of a see), else the first. Without the step, the first step's unless another phase
-         * explains clearly more commands.
+         * of a see), else the first; when the commands' timing tells the candidates not apart, the
+         * one whose sees best explain what the player did ({@link PhaseEvidence}). Without the
+         * step, the same among offsets from the first step's.
          */
         INFER
     }
@@ -158,16 +167,29 @@ public final class GameLogConverter {
         }
     }
 
+    /**
+     * Where an asynchronous player's see clock may start: the likeliest offset, the candidates, and
+     * whether the timing of its commands told them apart.
+     */
+    private record Phase(double offset, List<Double> candidates, boolean told) {
+        /** The first step's clock, nothing to decide. */
+        static final Phase FIRST_STEP = new Phase(0, List.of(0.0), true);
+    }
+
+    /** A player whose see clock waits for what it did in its first cycles, from {@code from} on. */
+    private record Undecided(Player player, int from, List<Double> candidates) {
+    }
+
     /** What a player sent, for its worker. */
     private record Sent(Player player, String message) {
     }
 
     /** One show and what was sent around it, handed to every worker. */
     private record Step(GameFrame frame, long index, List<Sent> before, List<Sent> at, boolean seesDue,
-                        List<Player> players) {
+                        List<Player> players, Set<Player> synchSees) {
     }
 
-    private static final Step END = new Step(null, 0, List.of(), List.of(), false, List.of());
+    private static final Step END = new Step(null, 0, List.of(), List.of(), false, List.of(), Set.of());
 
     /** A rebuilt player: its log being converted and how it sees; touched by its worker only once started. */
     private static final class Player {
@@ -182,8 +204,11 @@ public final class GameLogConverter {
         SceneConverter.Feed feed;
         SeeWriter writer;
         boolean synchSee;
-        /** Where the player's asynchronous see clock starts, in ms from the first step's start. */
-        final double seeOffset;
+        /**
+         * Where the player's asynchronous see clock starts, in ms from the first step's start; set by
+         * the reading thread before the player's first step is handed out.
+         */
+        double seeOffset;
         int type = -1;
         /** The executed command counts at the last show, and whether a body command was sent since. */
         int executed = -1;
@@ -303,7 +328,7 @@ public final class GameLogConverter {
                 int first = commandsFirst(player, sent.size());
                 deliver(player, sent.subList(0, first), next);
                 if (step.seesDue()) {
-                    int sees = seesDue(player, state, step.index());
+                    int sees = seesDue(player, state, step);
                     for (int i = 0; i < sees; i++) {
                         see(player, state, frame);
                         player.seeStep = next;
@@ -394,17 +419,16 @@ public final class GameLogConverter {
             player.sentBody = false;
         }
 
-        /** How many sees the player gets after this show: the server's timing as the simulator keeps it. */
-        int seesDue(Player player, PlayerState state, long index) {
-            // The show was written at the end of its step; its sees go out in the next step.
-            long next = index + 1;
-            double factor = state.viewWidth() / run.visibleAngle;
+        /**
+         * How many sees the player gets after this show: synchronous ones as the reading thread's
+         * {@link SynchSeeCounter} decided, asynchronous ones by the player's see clock.
+         */
+        int seesDue(Player player, PlayerState state, Step step) {
             if (player.synchSee) {
-                // synchronous: cones of 2/3, 4/3 and 2 visible_angle for a see every 1, 2, 3 steps
-                int every = (int) Math.max(1, Math.round(factor * 1.5));
-                return next % every == 0 ? 1 : 0;
+                return step.synchSees().contains(player) ? 1 : 0;
             }
-            return asynchSees(next, run.period(state), player.seeOffset, run.simulatorStep);
+            // The show was written at the end of its step; its sees go out in the next step.
+            return asynchSees(step.index() + 1, run.period(state), player.seeOffset, run.simulatorStep);
         }
 
         void see(Player player, PlayerState self, GameFrame frame) throws IOException {
@@ -485,11 +509,22 @@ public final class GameLogConverter {
         int goalCycle = -1;
         /** The server's step of each player's init, by TEAM_UNUM. */
         final Map<String, Long> initSteps = new HashMap<>();
+        /** Players whose see clocks their commands' timing did not tell, and the steps held meanwhile. */
+        final List<Undecided> undecided = new ArrayList<>();
+        final ArrayDeque<Step> held = new ArrayDeque<>();
+        /** Each player's synchronous see counter, by TEAM_UNUM, from its init on. */
+        final Map<String, SynchSeeCounter> counters = new HashMap<>();
+        /** The server's step of converter step 0, and the current show's step and time. */
+        long serverOffset;
+        long lastStep;
+        int showTime = -1;
+        int showStoppage;
         String leftTeam = "";
         String rightTeam = "";
         double visibleAngle = 90;
         double sendStep = 150;
         double simulatorStep = 100;
+        double visibleDistance = 3;
         long lastLine;
         int nextWorker;
 
@@ -518,6 +553,7 @@ public final class GameLogConverter {
                 visibleAngle = number(params, "visible_angle", visibleAngle);
                 sendStep = number(params, "send_step", sendStep);
                 simulatorStep = number(params, "simulator_step", simulatorStep);
+                visibleDistance = number(params, "visible_distance", visibleDistance);
             } else if (params.head().equals("player_type") && params.named().containsKey("id")) {
                 playerTypes.put((int) params.number("id"), params.named());
             }
@@ -569,13 +605,12 @@ public final class GameLogConverter {
                 step = time + Math.max(0, stoppage - 1);
                 // the server's steps before: those of cycle 0 (before kick-off) when the log starts later
                 serverShift = time > 0 ? lastStoppageAt(0, 0) : 0;
-            } else if (time == lastTime) {
-                step += stoppage - lastStoppage;
+                serverOffset = (time == 0 ? stoppage : time + serverShift + stoppage) - step;
             } else {
-                // stoppage steps of the cycles since the previous show that the game log skipped
-                // (rcssserver's JSON log has no show of the half-time break): the command log tells
-                step += (time - lastTime) + stoppage + skippedStoppage(lastTime, lastStoppage, time);
+                step = stepAfterLast(time, stoppage);
             }
+            showTime = time;
+            showStoppage = stoppage;
             // what was sent before this show: the players' inits (versions) come before their first show
             List<Sent> before = new ArrayList<>();
             collect(before, time, stoppage, true);
@@ -589,16 +624,149 @@ public final class GameLogConverter {
                     }
                 }
             }
+            Set<Player> synchSees = synchSees(frame);
             List<Sent> at = new ArrayList<>();
             collect(at, time, stoppage, false);
-            Step work = new Step(frame, step, before, at, !mode.equals("time_over"), starting);
+            hand(new Step(frame, step, before, at, !mode.equals("time_over"), starting, synchSees));
+            lastTime = time;
+            lastStoppage = stoppage;
+            lastStep = step;
+            lastMode = mode;
+            frames++;
+        }
+
+        /**
+         * The converter's step of ({@code time}, {@code stoppage}), after the last show's. The
+         * stoppage steps of the cycles since that show which the game log skipped (rcssserver's
+         * JSON log has no show of the half-time break) the command log tells.
+         */
+        long stepAfterLast(int time, int stoppage) throws IOException {
+            if (time == lastTime) {
+                return lastStep + stoppage - lastStoppage;
+            }
+            return lastStep + (time - lastTime) + stoppage + skippedStoppage(lastTime, lastStoppage, time);
+        }
+
+        /** The server's step a command log entry was received in. */
+        long serverStep(CommandLogReader.Entry entry) throws IOException {
+            if (entry.time() == showTime && entry.stoppage() == showStoppage) {
+                return step + serverOffset;
+            }
+            if (frames == 0) {
+                // before the first show: the clock stands before kick-off, its steps are the stoppage
+                return entry.time() == 0 ? entry.stoppage() : entry.time() + serverShift + entry.stoppage();
+            }
+            return stepAfterLast(entry.time(), entry.stoppage()) + serverOffset;
+        }
+
+        /**
+         * The players of this show who get a synchronous see with it: their counters raised
+         * through the show's step, the last step's interval the show's view width.
+         */
+        Set<Player> synchSees(GameFrame frame) {
+            Set<Player> due = null;
+            long at = step + serverOffset;
+            for (PlayerState state : frame.players()) {
+                Player player = slot(frame, state);
+                SynchSeeCounter counter = player == null ? null : counters.get(player.key);
+                if (counter == null || !counter.synch()) {
+                    continue; // (the worker's Player.synchSee is its own)
+                }
+                counter.interval(at - 1, (int) Math.max(1, Math.round(state.viewWidth() / visibleAngle * 1.5)));
+                if (counter.advance(at)) {
+                    due = due == null ? new HashSet<>() : due;
+                    due.add(player);
+                }
+            }
+            return due == null ? Set.of() : due;
+        }
+
+        /** The player's counter from its init (the server's step 0 when the command log has none). */
+        SynchSeeCounter counter(String key, boolean synch) {
+            return counters.computeIfAbsent(key, k -> new SynchSeeCounter(0, 2, synch));
+        }
+
+        /** What a player's message does to its see counter: {@code synch_see}, {@code change_view}. */
+        void countSees(String key, String message, CommandLogReader.Entry entry) throws IOException {
+            if (message.startsWith("(synch_see)")) {
+                counter(key, false).startSynch(serverStep(entry));
+                return;
+            }
+            for (int at = message.indexOf("(change_view "); at >= 0; at = message.indexOf("(change_view ", at + 1)) {
+                int end = message.indexOf(')', at);
+                String[] words = message.substring(at + 13, end < 0 ? message.length() : end).strip().split("\\s+");
+                SynchSeeCounter counter = counter(key, false);
+                int interval = SynchSeeCounter.interval(words[0]);
+                // synchronous sees are of high quality only: the server ignores a change to low
+                boolean ignored = words.length > 2 || counter.synch() && words.length == 2 && !words[1].equals("high");
+                if (interval > 0 && !ignored) {
+                    counter.interval(serverStep(entry), interval);
+                }
+            }
+        }
+
+        void submit(Step work) throws IOException {
             for (Worker worker : workers) {
                 worker.submit(work);
             }
-            lastTime = time;
-            lastStoppage = stoppage;
-            lastMode = mode;
-            frames++;
+        }
+
+        /** Hands a step to the workers, or holds it while a player's see clock is undecided. */
+        void hand(Step work) throws IOException {
+            if (undecided.isEmpty() && held.isEmpty()) {
+                submit(work);
+                return;
+            }
+            held.add(work);
+            decide(work.frame().time());
+        }
+
+        /**
+         * Sets the see clocks of the undecided players whose first {@link #PHASE_WINDOW} cycles were
+         * read by {@code time}; once none is left, hands out the steps held.
+         */
+        void decide(int time) throws IOException {
+            undecided.removeIf(u -> {
+                if (u.from() + CONTENT_WINDOW > time) {
+                    return false;
+                }
+                u.player().seeOffset = byContent(u);
+                return true;
+            });
+            if (undecided.isEmpty()) {
+                while (!held.isEmpty()) {
+                    submit(held.pollFirst());
+                }
+            }
+        }
+
+        /**
+         * Of the undecided player's candidate clocks, the one whose sees best explain what it did in
+         * the steps held (see {@link PhaseEvidence}); the first when none explains more.
+         */
+        double byContent(Undecided u) {
+            Player player = u.player();
+            PhaseEvidence evidence = new PhaseEvidence(u.candidates(), simulatorStep, visibleDistance);
+            for (Step step : held) {
+                for (Sent sent : step.before()) {
+                    if (sent.player() == player) {
+                        evidence.command(sent.message());
+                    }
+                }
+                for (PlayerState state : step.frame().players()) {
+                    if (slot(step.frame(), state) == player) {
+                        GameFrame.BallState ball = step.frame().ball();
+                        // the show's sees go out in the next step, before or with its commands
+                        evidence.show(step.index() + 1, period(state), state, ball.x(), ball.y());
+                    }
+                }
+                for (Sent sent : step.at()) {
+                    if (sent.player() == player) {
+                        evidence.command(sent.message());
+                    }
+                }
+            }
+            return u.candidates().get(evidence.best());
         }
 
         /** The period of a player's asynchronous sees in its view mode, in ms. */
@@ -610,12 +778,14 @@ public final class GameLogConverter {
          * The phase of an asynchronous player's see clock, in ms from the first step's start: of the
          * {@link #candidates}, the one whose sees fall in the steps of most of the player's commands
          * of the next {@link #PHASE_WINDOW} cycles (up to its first {@code change_view}); the first
-         * unless another explains clearly more. A command logged in a cycle belongs to the step
-         * after that cycle's show, the step its see is sent in.
+         * unless another explains clearly more. When every candidate explains about as many (a
+         * player on a clock of its own), the timing has not told, and what the player did decides
+         * ({@link #byContent}). A command logged in a cycle belongs to the step after that cycle's
+         * show, the step its see is sent in.
          */
-        double seeOffset(String key, int time, PlayerState state) throws IOException {
+        Phase seeOffset(String key, int time, PlayerState state) throws IOException {
             if (seePhase == SeePhase.FIRST_STEP) {
-                return 0;
+                return Phase.FIRST_STEP;
             }
             readThrough(time + PHASE_WINDOW);
             long shift = step - time + 1;
@@ -653,23 +823,29 @@ public final class GameLogConverter {
             double bestOffset = first;
             int firstScore = explained(steps, period, first);
             int best = firstScore;
+            int worst = firstScore;
             for (double offset : candidates.subList(1, candidates.size())) {
                 int score = explained(steps, period, offset);
+                worst = Math.min(worst, score);
                 if (score > best) {
                     best = score;
                     bestOffset = offset;
                 }
             }
-            return best - firstScore > PHASE_MARGIN * steps.size() ? bestOffset : first;
+            double margin = PHASE_MARGIN * steps.size();
+            // every candidate explains the commands alike: a player on a clock of its own
+            boolean told = best - worst > margin;
+            return new Phase(best - firstScore > margin ? bestOffset : first, candidates, told);
         }
 
         /**
          * The offsets the player's see clock may have, the likeliest first. With its init's step known
          * (rcssserver's command log counts the steps before kick-off as stoppage), its counter's
-         * first tick is one of the 2 or 3 {@code send_step / 4} ticks of the 100 ms after that step,
-         * and its first see {@code interval} ticks on; the first tick is taken unless commands tell
-         * otherwise. Without it (or at step 0, as the project's simulator logs every init), any
-         * offset in {@link #PHASE_GRAIN} ms steps, 0 first.
+         * first tick is the first {@code send_step / 4} tick after the init arrived, any time in
+         * that step: one of the 3 or 4 ticks from the step's start to a tick past its end; its first
+         * see comes {@code interval} ticks on; the first tick is taken unless commands tell otherwise.
+         * Without it (or at step 0, as the project's simulator logs every init), any offset in
+         * {@link #PHASE_GRAIN} ms steps, 0 first.
          */
         List<Double> candidates(Long initStep, double period) {
             List<Double> offsets = new ArrayList<>();
@@ -682,7 +858,8 @@ public final class GameLogConverter {
             double tick = sendStep / 4;
             long interval = Math.max(1, Math.round(period / tick));
             double from = initStep * simulatorStep;
-            for (long t = (long) Math.floor(from / tick + 1e-9) + 1; t * tick <= from + simulatorStep + 1e-9; t++) {
+            double until = from + simulatorStep + tick;
+            for (long t = (long) Math.floor(from / tick + 1e-9) + 1; t * tick < until - 1e-9; t++) {
                 // the server's step g sends the sees of the cycle it makes: this converter's step g - shift + 1
                 double see = (t + interval - 1) * tick - (serverShift - 1) * simulatorStep;
                 offsets.add(((see % period) + period) % period);
@@ -804,7 +981,7 @@ public final class GameLogConverter {
             }
         }
 
-        void route(CommandLogReader.Entry entry, List<Sent> into) {
+        void route(CommandLogReader.Entry entry, List<Sent> into) throws IOException {
             lastLine = entry.line();
             if (entry.referee()) {
                 if (entry.text().startsWith("goal_")) {
@@ -821,11 +998,15 @@ public final class GameLogConverter {
             String key = team + "_" + entry.unum();
             String message = entry.text();
             if (message.startsWith("(init ")) {
-                versions.put(key, version(message));
-                // the clock stands before kick-off: its steps are the stoppage
-                initSteps.put(key, entry.time() == 0 ? entry.stoppage() : entry.time() + serverShift + entry.stoppage());
+                int version = version(message);
+                versions.put(key, version);
+                long at = serverStep(entry);
+                initSteps.put(key, at);
+                // clients of version 18 and later see synchronously from their init on
+                counters.put(key, new SynchSeeCounter(at, 2, version >= 18));
                 return;
             }
+            countSees(key, message, entry);
             Player player = players.get(key);
             if (player == null) {
                 if (message.startsWith("(synch_see)")) {
@@ -852,8 +1033,16 @@ public final class GameLogConverter {
                 boolean synch = version >= 18 || synchSee.getOrDefault(key, false)
                         // cones only synchronous vision has (60 and 120 degrees): a log without the init
                         || Math.abs(factor - 2.0 / 3) < 1e-6 || Math.abs(factor - 4.0 / 3) < 1e-6;
+                Phase phase = synch ? Phase.FIRST_STEP : seeOffset(key, frame.time(), state);
                 player = new Player(observer, key, output.open(observer), workers.get(nextWorker++ % threads),
-                        version, synch, synch ? 0 : seeOffset(key, frame.time(), state), fading.forObserver(key));
+                        version, synch, phase.offset(), fading.forObserver(key));
+                if (!phase.told()) {
+                    undecided.add(new Undecided(player, frame.time(), phase.candidates()));
+                }
+                if (synch) {
+                    // synchronous without an init or synch_see in the command log: from the server's step 0
+                    counter(key, true).startSynch(0);
+                }
                 if (state.unum() >= 0 && state.unum() < 64) {
                     slots[state.side() == Side.LEFT ? 0 : 1][state.unum()] = player;
                 }
@@ -894,10 +1083,8 @@ public final class GameLogConverter {
             if (frames == 0) {
                 throw new LogException(gameLog, 0, "no show in the game log: nothing to rebuild", null);
             }
-            Step last = new Step(null, 0, after, List.of(), false, List.of());
-            for (Worker worker : workers) {
-                worker.submit(last);
-            }
+            decide(Integer.MAX_VALUE);
+            submit(new Step(null, 0, after, List.of(), false, List.of(), Set.of()));
             stopWorkers();
             if (firstBeyond != null) {
                 warnings.add(commands.file() + ":" + firstBeyond.line() + ": the command log goes on to cycle "

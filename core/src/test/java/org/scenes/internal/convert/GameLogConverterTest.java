@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.function.IntPredicate;
+import java.util.function.IntUnaryOperator;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -66,13 +67,18 @@ class GameLogConverterTest {
 
     /** Every player's show with {@code dashes} executed. */
     private static GameFrame frame(int time, String mode, int dashes) {
+        return frame(time, mode, dashes, 90);
+    }
+
+    /** Every player's show with {@code dashes} executed and a view width of {@code viewWidth} degrees. */
+    private static GameFrame frame(int time, String mode, int dashes, double viewWidth) {
         List<PlayerState> players = new ArrayList<>();
         for (Side side : Side.values()) {
             for (int unum = 1; unum <= 2; unum++) {
                 double x = (side == Side.LEFT ? -10 : 10) * unum;
                 double body = side == Side.LEFT ? 0 : 180;
                 players.add(new PlayerState(side, unum, 0, PlayerState.STANDING, x, unum * 2 - 3, 0, 0, body, 0,
-                        'h', 90, 8000, 1, 1, Double.NaN,
+                        'h', viewWidth, 8000, 1, 1, Double.NaN,
                         new PlayerState.Counts(0, dashes, 0, 0, 0, 0, 0, 0, 0, 0, 0)));
             }
         }
@@ -153,7 +159,45 @@ class GameLogConverterTest {
         // a see every other step (synchronous, normal width); a dash every other cycle
         assertEquals(FRAMES / 2, report.sees(), 1);
         assertEquals(FRAMES / 2, scenes.size(), 1);
-        assertTrue(scenes.stream().anyMatch(s -> s.seeAge() == 1), "some scenes act on the see of the cycle before");
+        // rcssserver's counter rises from the step after the init (0,0): sees in the even steps, as the dashes
+        assertTrue(scenes.stream().allMatch(s -> s.seeAge() == 0 && s.cycle() % 2 == 0), "each dash on its see");
+    }
+
+    @Test
+    void synchronousSeesFollowTheCounterThroughEveryChangeOfWidth() throws IOException {
+        // the view width of each step: change_view wide at 5, narrow at 14, normal at 20, each from the next step
+        IntUnaryOperator width = t -> t <= 5 ? 120 : t <= 14 ? 180 : t <= 20 ? 60 : 120;
+        Path game = dir.resolve("game.rcg");
+        try (GameLogWriter writer = GameLogWriter.create(game, List.of("(server_param (visible_angle 90)"
+                + "(send_step 150)(simulator_step 100))"))) {
+            for (int time = 0; time < 40; time++) {
+                writer.write(frame(time, time == 0 ? "kick_off_l" : "play_on", (time + 1) / 2,
+                        width.applyAsInt(time)));
+            }
+            writer.commit();
+        }
+        Path commands = dir.resolve("game.rcl");
+        try (CommandLogWriter writer = CommandLogWriter.create(commands)) {
+            writer.received(0, 0, RIGHT, 2, "(init " + RIGHT + " (version 18))");
+            writer.referee(0, 0, "kick_off_l");
+            for (int time = 0; time < 40; time++) {
+                String view = time == 5 ? "(change_view wide)" : time == 14 ? "(change_view narrow)"
+                        : time == 20 ? "(change_view normal)" : "";
+                writer.received(time, 0, RIGHT, 2, (time % 2 == 0 ? "(dash 50)" : "(turn_neck 10)") + view);
+            }
+            writer.commit();
+        }
+        List<Scene> scenes = new ArrayList<>();
+        new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.HALFWAY, GameLogConverter.only(RIGHT, 2), 1)
+                .convert(game, commands, observer -> scenes::add);
+        // the counter rises from step 1: normal (2) sees 2, 4; wide (3) counts on from 1: 7, 10, 13;
+        // narrow (1) from 15 every step to 20; normal again from 21 (counter at 0): 22, 24, ...
+        List<Integer> expected = new ArrayList<>(List.of(2, 4, 7, 10, 13, 15, 16, 17, 18, 19, 20));
+        for (int time = 22; time < 40; time += 2) {
+            expected.add(time);
+        }
+        assertEquals(expected, scenes.stream().filter(s -> s.seeAge() == 0).map(Scene::cycle).toList());
+        assertEquals(38, scenes.size(), "a scene each cycle from the first see on");
     }
 
     @Test
@@ -242,8 +286,9 @@ class GameLogConverterTest {
         // as rcssserver logs it: players connect in step 26 of cycle 0, kick-off at 0,300; no show of
         // cycle 0 nor of the half-time break (150,0 to 150,19, its last step told by the players). The counter's first tick after step 26
         // (2625, 2662.5 or 2700 ms) puts the sees of the first half in the cycles t mod 3 != 2, != 1
-        // or != 0; after 19 more steps, != 1, != 0, != 2. Dashing every cycle tells nothing: the first
-        // tick; dashing in the cycles t mod 3 != 1 tells the second.
+        // or != 0; after 19 more steps, != 1, != 0, != 2. Dashing every cycle tells nothing, neither by
+        // its timing nor by what it does (every see answered alike): the first tick; dashing in the
+        // cycles t mod 3 != 1 tells the second.
         int half = 150;
         IntPredicate dashing = t -> t != half && (everyCycle || (t < half ? t % 3 != 1 : t % 3 != 0));
         Path game = dir.resolve("game.rcg");
