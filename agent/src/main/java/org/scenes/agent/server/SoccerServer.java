@@ -360,6 +360,9 @@ public final class SoccerServer implements AutoCloseable {
             return;
         }
         engine.received(seat, text);
+        if (engine.holdsDone(text)) {
+            remote.done = true; // (done) after the cycle's commands in one datagram, as librcsc sends it
+        }
         if (!started) {
             // Before kick-off preparations the server executes commands as they arrive, such as the first move.
             engine.executePending(seat);

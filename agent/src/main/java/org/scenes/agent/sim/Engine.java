@@ -370,64 +370,96 @@ public final class Engine {
      * kick-off, such as the first move; a client's connection does that through this method.
      */
     public void executePending(Seat seat) {
-        Player player = seat.player;
         List<String> commands = List.copyOf(seat.pending);
         seat.pending.clear(); // answers to errors below are the next step's commands
         for (String text : commands) {
-            Message message;
-            try {
-                message = parser.parse(text);
-            } catch (ProtocolException e) {
+            Datagram datagram = datagram(text);
+            for (Message message : datagram.messages()) {
+                execute(seat, message);
+            }
+            if (datagram.malformed()) {
                 seat.send("(error illegal_command_form)");
-                continue;
             }
-            if (!(message instanceof PlayerCommand command)) {
-                // The server's command parser fails on what it does not know.
-                seat.send("(error illegal_command_form)");
-                continue;
+        }
+    }
+
+    /** The commands of one datagram, up to a malformed one if any. */
+    private record Datagram(List<Message> messages, boolean malformed) {
+    }
+
+    /**
+     * A datagram may hold several commands, as librcsc sends them ({@code (turn 0)(change_view wide)(done)});
+     * like the server, the commands before a malformed one count and the rest are rejected.
+     */
+    private Datagram datagram(String text) {
+        List<Message> messages = new ArrayList<>(2);
+        byte[] bytes = text.getBytes(java.nio.charset.StandardCharsets.UTF_8);
+        try {
+            parser.parseAll(bytes, 0, bytes.length, messages::add);
+            return new Datagram(messages, false);
+        } catch (ProtocolException e) {
+            return new Datagram(messages, true);
+        }
+    }
+
+    /**
+     * Whether the datagram holds {@code (done)}, alone or after other commands: a synchronous
+     * client has finished its cycle.
+     */
+    public boolean holdsDone(String text) {
+        return datagram(text).messages().stream()
+                .anyMatch(m -> m instanceof PlayerCommand command && command.type() == CommandType.DONE);
+    }
+
+    /** One command of a datagram: errors answered as the server answers them. */
+    private void execute(Seat seat, Message message) {
+        Player player = seat.player;
+        if (!(message instanceof PlayerCommand command)) {
+            // The server's command parser fails on what it does not know.
+            seat.send("(error illegal_command_form)");
+            return;
+        }
+        if (!command.wellFormed()) {
+            seat.send("(error illegal_command_form)");
+            return;
+        }
+        CommandType type = command.type();
+        if (type == CommandType.TURN_NECK) {
+            physics.turnNeck(player, command.first());
+            return;
+        }
+        if (type == CommandType.CHANGE_VIEW) {
+            changeView(seat, command.text());
+            return;
+        }
+        if (type == CommandType.SAY) {
+            player.says++;
+            return;
+        }
+        if (player.acted || !isBodyCommand(type)) {
+            return; // (done) too; the server executes one body command per cycle; pointto etc. do nothing here
+        }
+        player.acted = true;
+        switch (type) {
+            case DASH -> physics.dash(player, command.first());
+            case TURN -> physics.turn(player, command.first());
+            case MOVE -> {
+                if (world.mode.allowsMove()) {
+                    physics.move(player, command.first(), command.second());
+                }
             }
-            if (!command.wellFormed()) {
-                seat.send("(error illegal_command_form)");
-                continue;
-            }
-            CommandType type = command.type();
-            if (type == CommandType.TURN_NECK) {
-                physics.turnNeck(player, command.first());
-                continue;
-            }
-            if (type == CommandType.CHANGE_VIEW) {
-                changeView(seat, command.text());
-                continue;
-            }
-            if (type == CommandType.SAY) {
-                player.says++;
-                continue;
-            }
-            if (player.acted || !isBodyCommand(type)) {
-                continue; // the server executes one body command per cycle; pointto etc. do nothing here
-            }
-            player.acted = true;
-            switch (type) {
-                case DASH -> physics.dash(player, command.first());
-                case TURN -> physics.turn(player, command.first());
-                case MOVE -> {
-                    if (world.mode.allowsMove()) {
-                        physics.move(player, command.first(), command.second());
+            case KICK -> {
+                if (referee.mayKick(player) && physics.kick(player, command.first(), command.second())) {
+                    if (player.side == Side.LEFT) {
+                        kicksLeft++;
+                    } else {
+                        kicksRight++;
                     }
+                    referee.ballKicked(player);
                 }
-                case KICK -> {
-                    if (referee.mayKick(player) && physics.kick(player, command.first(), command.second())) {
-                        if (player.side == Side.LEFT) {
-                            kicksLeft++;
-                        } else {
-                            kicksRight++;
-                        }
-                        referee.ballKicked(player);
-                    }
-                }
-                case CATCH -> goalieCatch(seat, command.first());
-                default -> {
-                }
+            }
+            case CATCH -> goalieCatch(seat, command.first());
+            default -> {
             }
         }
     }

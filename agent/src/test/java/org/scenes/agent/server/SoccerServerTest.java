@@ -200,6 +200,41 @@ class SoccerServerTest {
     }
 
     @Test
+    void severalCommandsInOneDatagramAsLibrcscSendsThem() throws Exception {
+        start(synchGame(12).withRecordDirectory(directory).withTeamsWait(Duration.ofMillis(300)));
+        List<String> got = new ArrayList<>();
+        try (RawClient client = new RawClient(server.port())) {
+            client.init("(init Teal (version 9))");
+            boolean first = true;
+            for (int i = 0; i < 2000; i++) {
+                String message = client.receive();
+                if (message == null) {
+                    break;
+                }
+                got.add(message);
+                if (message.equals("(think)")) {
+                    // the cycle's commands and its (done) in one datagram; the second time a malformed tail
+                    client.send(first ? "(turn_neck 30)(change_view narrow high)(done)" : "(turn 0)(done)(foo");
+                    first = false;
+                }
+                if (message.contains("referee time_over")) {
+                    break;
+                }
+            }
+        }
+        ServerResult result = finish();
+        assertEquals(0, result.dropped(), "each (done) after commands was seen: " + events);
+        assertEquals(12, result.cycles());
+        assertTrue(got.get(got.size() - 1).contains("time_over"), got.get(got.size() - 1));
+        assertTrue(got.stream().anyMatch(m -> m.startsWith("(sense_body") && m.contains("(view_mode high narrow)")
+                && m.contains("(head_angle 30)")), got.toString());
+        assertTrue(got.contains("(error illegal_command_form)"), "the malformed tail is answered: " + got);
+        List<String> commands = Files.readAllLines(result.logs().get(1));
+        assertTrue(commands.stream().anyMatch(l -> l.endsWith("Recv Teal_1: (turn_neck 30)(change_view narrow high)(done)")),
+                commands.toString());
+    }
+
+    @Test
     void aSilentPlayerIsDroppedAndTheGameGoesOn() throws Exception {
         start(synchGame(30));
         try (RawClient silent = new RawClient(server.port()); RawClient player = new RawClient(server.port())) {
