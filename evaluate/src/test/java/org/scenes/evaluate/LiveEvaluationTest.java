@@ -54,7 +54,10 @@ class LiveEvaluationTest {
 
         Path logs = Files.createDirectories(directory.resolve("logs"));
         ServerConfig server = ServerConfig.defaults().withPort(0).withSynch(true).withGame(CYCLES, SEEDS.get(0))
-                .withRecordDirectory(logs).withTimings(Duration.ofMillis(300), Duration.ofSeconds(5));
+                .withRecordDirectory(logs)
+                // kick-off preparations only when every client's first move has surely arrived: on a busy
+                // machine 300 ms was sometimes too short, and a first see then showed a player unmoved
+                .withTimings(Duration.ofSeconds(2), Duration.ofSeconds(5));
         GameSeries series = new GameSeries(server, 2 * SEEDS.size(), 2, line -> { });
         CompletableFuture<Integer> port = new CompletableFuture<>();
         ExecutorService executor = Executors.newSingleThreadExecutor();
