@@ -722,7 +722,7 @@ public final class GameLogConverter {
         }
 
         /**
-         * Sets the see clocks of the undecided players whose first {@link #PHASE_WINDOW} cycles were
+         * Sets the see clocks of the undecided players whose first {@link #CONTENT_WINDOW} cycles were
          * read by {@code time}; once none is left, hands out the steps held.
          */
         void decide(int time) throws IOException {

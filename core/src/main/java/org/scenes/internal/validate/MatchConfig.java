@@ -49,6 +49,17 @@ public record MatchConfig(String metric, Map<String, String> metricOptions, Obje
         return new MatchConfig(name, options, objectWeights, actionWeights, k, selector, selectorOptions, transforms, seed);
     }
 
+    /** The same metric with one option set to {@code value}, or left out when {@code value} is null. */
+    public MatchConfig withMetricOption(String key, String value) {
+        Map<String, String> options = new java.util.HashMap<>(metricOptions);
+        if (value == null) {
+            options.remove(key);
+        } else {
+            options.put(key, value);
+        }
+        return withMetric(metric, options);
+    }
+
     public MatchConfig withObjectWeights(ObjectWeights weights) {
         return new MatchConfig(metric, metricOptions, weights, actionWeights, k, selector, selectorOptions, transforms, seed);
     }

@@ -246,15 +246,9 @@ public final class Tuner {
         if (!objectSet(config)) {
             return config;
         }
-        Map<String, String> options = new HashMap<>(config.metricOptions());
-        options.remove("own-goal-weight");
-        if (ownGoal != 1) {
-            options.put("own-goal-weight", format(ownGoal));
-        }
-        if (Double.parseDouble(options.getOrDefault("row-weight", "0")) > 0) {
-            options.put("row-weight", format(rows));
-        }
-        return config.withMetric(config.metric(), options);
+        MatchConfig with = config.withMetricOption("own-goal-weight", ownGoal == 1 ? null : format(ownGoal));
+        boolean rings = Double.parseDouble(config.metricOptions().getOrDefault("row-weight", "0")) > 0;
+        return rings ? with.withMetricOption("row-weight", format(rows)) : with;
     }
 
     /**
@@ -271,9 +265,7 @@ public final class Tuner {
         }
         kept = withSide(kept, Double.parseDouble(options.getOrDefault("side-weight", "0")));
         if (options.containsKey("own-goal-weight") && objectSet(kept)) {
-            Map<String, String> with = new HashMap<>(kept.metricOptions());
-            with.put("own-goal-weight", options.get("own-goal-weight"));
-            kept = kept.withMetric(kept.metric(), with);
+            kept = kept.withMetricOption("own-goal-weight", options.get("own-goal-weight"));
         }
         return kept;
     }
@@ -284,12 +276,7 @@ public final class Tuner {
      */
     private static MatchConfig memory(MatchConfig config, double weight, double actionWeight, double share) {
         MatchConfig with = withMemory(config, weight, actionWeight);
-        if (share != 1) {
-            return withPreviousDirection(with, share);
-        }
-        Map<String, String> options = new HashMap<>(with.metricOptions());
-        options.remove("memory-direction-weight");
-        return with.withMetric(with.metric(), options);
+        return share != 1 ? withPreviousDirection(with, share) : with.withMetricOption("memory-direction-weight", null);
     }
 
     /** The object-set metrics (continuous, projection, cell): the ones with side and previous-direction weights. */
@@ -305,12 +292,7 @@ public final class Tuner {
         if (!objectSet(config)) {
             return config;
         }
-        Map<String, String> options = new HashMap<>(config.metricOptions());
-        options.remove("side-weight");
-        if (weight > 0) {
-            options.put("side-weight", format(weight));
-        }
-        return config.withMetric(config.metric(), options);
+        return config.withMetricOption("side-weight", weight > 0 ? format(weight) : null);
     }
 
     /**
@@ -322,9 +304,8 @@ public final class Tuner {
         if (!objectSet(config) || !"polar".equals(options.get("space")) || !options.containsKey("memory")) {
             return config;
         }
-        Map<String, String> with = new HashMap<>(options);
-        with.put("memory-direction-weight", format(share * Double.parseDouble(options.getOrDefault("direction-weight", "1"))));
-        return config.withMetric(config.metric(), with);
+        return config.withMetricOption("memory-direction-weight",
+                format(share * Double.parseDouble(options.getOrDefault("direction-weight", "1"))));
     }
 
     private static Map<String, String> withRows(Map<String, String> options, double rowWeight) {
