@@ -17,19 +17,22 @@ import org.scenes.api.TopK;
  * <li>scenes with the same objects and previous action class (every float equal) are one
  * <em>point</em>, which offers its k lowest indices;</li>
  * <li>points are sorted into buckets by which groups they hold and (with {@code memory-action})
- * their previous action class; one k-d tree spans them all, its upper nodes splitting between
- * buckets, its lower ones within a bucket at the median of the widest weighted float; a node
- * keeps which groups some and all of its points hold, their previous action classes, the box of
- * the floats of the points holding each group, their least unmatched penalty per group and their
- * least scene index;</li>
+ * their previous action class; one k-d tree spans them all. Its upper nodes split between
+ * buckets, one held group at a time, so that a node lacking what the query holds (or holding
+ * what it lacks) is bounded by the penalty at once; then between previous action classes. Its
+ * lower ones split within a bucket on the widest weighted float, at the boundary between two
+ * values nearest the median (rows and sides of the heading repeat a few values). A node keeps
+ * which groups some and all of its points hold, their previous action classes, per group the box
+ * of a and b of the points holding it, which additive tuples (weighted row, sides) they hold and
+ * their least unmatched penalty, and the least scene index;</li>
  * <li>a query visits nodes in order of a lower bound of their distance (per group the least of
- * the box gap and the penalty of a missing partner; the memory-action cost unless the node holds
- * the query's class) and stops once that bound exceeds the k-th best, or equals it and the node
- * holds no lower index.</li>
+ * the box gap plus the cost to the nearest held additive tuple and the penalty of a missing
+ * partner; the memory-action cost unless the node holds the query's class) and stops once that
+ * bound exceeds the k-th best, or equals it and the node holds no lower index.</li>
  * </ul>
- * Distances offered are computed by {@link ObjectSetMetric#groupDistance} in the exhaustive
- * path's order, so they are bit-identical to it; bounds are shaved against float rounding.
- * Read-only once built: queries keep their scratch per call.
+ * Distances offered are computed as {@link ObjectSetMetric#groupDistance} computes them, in the
+ * exhaustive path's order, so they are bit-identical to it; bounds are shaved against float
+ * rounding. Read-only once built: each thread keeps its query scratch from one query to the next.
  */
 final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     private static final int LEAF = 8;
@@ -55,7 +58,8 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     // the k-d tree, packed so that a node's bound reads two short runs of memory: per node NODE_INTS
     // ints (point range, children or -1 for leaves, slots some and all of its points hold, their
     // previous action classes as bits class + 1, least index) and boxStride floats (per slot the
-    // box of each compared coordinate as min, max, then the least penalty, rounded down)
+    // box of a and b as min, max, then the least penalty, rounded down) and per slot a long (the
+    // additive tuples its points hold, as bits)
     private static final int FROM = 0;
     private static final int TO = 1;
     private static final int LEFT = 2;
@@ -66,13 +70,22 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     private static final int INDEX = 7;
     private static final int NODE_INTS = 8;
     private final int[] nodeInts;
-    /** Coordinates compared by the pair cost (a, b and the additive ones: weighted row, sides) and floats of a slot's box. */
-    private final int[] coordinate;
-    private final int slotBox;
+    /** Floats of a slot's box: min and max of a and b, the least penalty. */
+    private static final int SLOT_BOX = 5;
+    private static final int LEAST_AT = 4;
+    /** Per slot its distinct additive tuples (weighted row, sides), additive floats each. */
+    private final float[][] categoryValues;
+    /** Per node and box, which of its slot's categories its points hold (bit per category). */
+    private final long[] nodeCategory;
+    /** Where each box's categories start in a query's table of costs to them (one more: the end). */
+    private final int[] categoryAt;
     /** Where a slot's box starts within a node's floats; slots no stored scene holds have none (-1). */
-    private final int[] slotBoxAt;
+    private final int[] SLOT_BOXAt;
     private final int boxStride;
     private final float[] nodeBox;
+    /** Per box (slot with a box, in order) its slot's bit and weight. */
+    private final int[] boxBit;
+    private final double[] boxWeight;
 
     private LowDimensionalIndex(ObjectSetMetric metric, int[] slotGroup, boolean[] slotPrevious, double[] slotWeight,
                                 float[] values, int[] mask, int[] actionClass, int[] indexStart, int[] indices, Tree tree) {
@@ -91,23 +104,33 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         this.actionClass = actionClass;
         this.indexStart = indexStart;
         this.indices = indices;
-        // a and b, then the additive ones (weighted row, sides), whose box gaps add to a bound
-        this.coordinate = new int[2 + stride - metric.additiveAt()];
-        coordinate[1] = 1;
-        for (int c = 2; c < coordinate.length; c++) {
-            coordinate[c] = metric.additiveAt() + c - 2;
-        }
-        this.slotBox = 2 * coordinate.length + 1;
+        this.categoryValues = tree.categoryValues;
         int nodes = tree.from.size();
         int anywhere = nodes == 0 ? 0 : tree.some.get(0);
-        this.slotBoxAt = new int[slotGroup.length];
+        this.SLOT_BOXAt = new int[slotGroup.length];
         int boxes = 0;
         for (int s = 0; s < slotGroup.length; s++) {
-            slotBoxAt[s] = (anywhere & 1 << s) != 0 ? slotBox * boxes++ : -1;
+            SLOT_BOXAt[s] = (anywhere & 1 << s) != 0 ? SLOT_BOX * boxes++ : -1;
         }
-        this.boxStride = boxes * slotBox;
+        this.boxStride = boxes * SLOT_BOX;
+        this.boxBit = new int[boxes];
+        this.boxWeight = new double[boxes];
+        for (int s = 0; s < slotGroup.length; s++) {
+            if (SLOT_BOXAt[s] >= 0) {
+                boxWeight[SLOT_BOXAt[s] / SLOT_BOX] = slotWeight[s];
+                boxBit[SLOT_BOXAt[s] / SLOT_BOX] = 1 << s;
+            }
+        }
         this.nodeInts = new int[nodes * NODE_INTS];
         this.nodeBox = new float[nodes * boxStride];
+        this.nodeCategory = new long[nodes * boxes];
+        this.categoryAt = new int[boxes + 1];
+        for (int s = 0; s < slotGroup.length; s++) {
+            if (SLOT_BOXAt[s] >= 0) {
+                int b = SLOT_BOXAt[s] / SLOT_BOX;
+                categoryAt[b + 1] = categoryAt[b] + tree.categoryCount[s];
+            }
+        }
         for (int node = 0; node < nodes; node++) {
             int at = node * NODE_INTS;
             nodeInts[at + FROM] = tree.from.get(node);
@@ -119,17 +142,18 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             nodeInts[at + CLASSES] = tree.classes.get(node);
             nodeInts[at + INDEX] = tree.index.get(node);
             for (int s = 0; s < slotGroup.length; s++) {
-                if (slotBoxAt[s] < 0) {
+                if (SLOT_BOXAt[s] < 0) {
                     continue;
                 }
-                int box = node * boxStride + slotBoxAt[s];
-                for (int c = 0; c < coordinate.length; c++) {
-                    nodeBox[box + 2 * c] = tree.min.get(node * width + s * stride + coordinate[c]);
-                    nodeBox[box + 2 * c + 1] = tree.max.get(node * width + s * stride + coordinate[c]);
+                int box = node * boxStride + SLOT_BOXAt[s];
+                for (int c = 0; c < 2; c++) {
+                    nodeBox[box + 2 * c] = tree.min.get(node * width + s * stride + c);
+                    nodeBox[box + 2 * c + 1] = tree.max.get(node * width + s * stride + c);
                 }
+                nodeCategory[node * boxes + SLOT_BOXAt[s] / SLOT_BOX] = tree.category.get(node * slotGroup.length + s);
                 double least = tree.penalty.get(node * slotGroup.length + s);
                 float rounded = (float) least;
-                nodeBox[box + 2 * coordinate.length] = rounded > least ? Math.nextDown(rounded) : rounded;
+                nodeBox[box + LEAST_AT] = rounded > least ? Math.nextDown(rounded) : rounded;
             }
         }
     }
@@ -266,7 +290,12 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         final FloatList min = new FloatList();
         final FloatList max = new FloatList();
         final List<Double> penalty = new ArrayList<>();
+        final List<Long> category = new ArrayList<>();
         final List<Integer> index = new ArrayList<>();
+        /** Per slot its distinct additive tuples; per point and slot the index of its tuple there. */
+        float[][] categoryValues;
+        int[] categoryCount;
+        int[] pointCategory;
     }
 
     private static final class FloatList {
@@ -290,6 +319,46 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     }
 
     /**
+     * Numbers each slot's distinct additive tuples (weighted row, sides: a few values each) into
+     * the tree: a node then keeps which of them its points hold as bits, which bounds their cost
+     * more tightly and more cheaply than a box. False beyond 64 in some slot.
+     */
+    private boolean categorize(Tree tree) {
+        int slots = slotGroup.length;
+        int additiveAt = metric.additiveAt();
+        int additive = stride - additiveAt;
+        int points = mask.length;
+        tree.categoryValues = new float[slots][];
+        tree.categoryCount = new int[slots];
+        tree.pointCategory = new int[points * slots];
+        float[] table = new float[Long.SIZE * additive];
+        for (int s = 0; s < slots; s++) {
+            int count = 0;
+            for (int p = 0; p < points; p++) {
+                if ((mask[p] & 1 << s) == 0) {
+                    continue;
+                }
+                int at = p * width + s * stride + additiveAt;
+                int c = 0;
+                while (c < count && !Arrays.equals(table, c * additive, (c + 1) * additive, values, at, at + additive)) {
+                    c++;
+                }
+                if (c == count) {
+                    if (count == Long.SIZE) {
+                        return false;
+                    }
+                    System.arraycopy(values, at, table, c * additive, additive);
+                    count++;
+                }
+                tree.pointCategory[p * slots + s] = c;
+            }
+            tree.categoryCount[s] = count;
+            tree.categoryValues[s] = Arrays.copyOf(table, count * additive);
+        }
+        return true;
+    }
+
+    /**
      * This index with its k-d tree: the points reordered within each bucket so that every
      * node is a contiguous range.
      */
@@ -306,6 +375,9 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             }
         }
         Tree tree = new Tree();
+        if (!categorize(tree)) {
+            return null;
+        }
         int root = node(tree, order, 0, points);
         buckets(tree, order, bucketStarts.stream().mapToInt(Integer::intValue).toArray(), 0, bucketStarts.size() - 1, root);
         // points in tree order, with their indices
@@ -343,9 +415,18 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         int from = starts[first];
         int to = starts[last];
         int middle = first + 1;
-        for (int b = first + 2; b < last; b++) {
-            if (Math.abs(2L * starts[b] - from - to) < Math.abs(2L * starts[middle] - from - to)) {
-                middle = b;
+        int differ = mask[starts[first]] ^ mask[starts[last - 1]];
+        if (differ != 0) {
+            // buckets are in order of their masks: split where the highest slot bit in which they differ turns on
+            int bit = Integer.highestOneBit(differ);
+            while ((mask[starts[middle]] & bit) == 0) {
+                middle++;
+            }
+        } else {
+            for (int b = first + 2; b < last; b++) {
+                if (Math.abs(2L * starts[b] - from - to) < Math.abs(2L * starts[middle] - from - to)) {
+                    middle = b;
+                }
             }
         }
         int left = children(tree, order, node, starts[middle]);
@@ -383,6 +464,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         Arrays.fill(high, Float.NEGATIVE_INFINITY);
         double[] penalty = new double[slots];
         Arrays.fill(penalty, Double.POSITIVE_INFINITY);
+        long[] categories = new long[slots];
         int least = Integer.MAX_VALUE;
         int some = 0;
         int all = -1;
@@ -402,6 +484,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
                     high[f] = Math.max(high[f], v);
                 }
                 penalty[s] = Math.min(penalty[s], metric.penalty(values, p * width + s * stride));
+                categories[s] |= 1L << tree.pointCategory[p * slots + s];
             }
             least = Math.min(least, indices[indexStart[p]]);
         }
@@ -414,6 +497,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         }
         for (int s = 0; s < slots; s++) {
             tree.penalty.add(penalty[s]);
+            tree.category.add(categories[s]);
         }
         tree.index.add(least);
         return node;
@@ -460,28 +544,128 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         for (int r = from; r < to; r++) {
             order[r] = (int) keys[r - from];
         }
+        middle = from + betweenValues(keys, middle - from);
         int left = children(tree, order, node, middle);
         split(tree, order, left);
         split(tree, order, left + 1);
     }
 
+    /**
+     * Where to split sorted keys (value in the high half) near position {@code middle}: the
+     * nearest boundary between two values that leaves each side at least an eighth, else middle.
+     * Equal values on both sides (rows, sides of the heading, repeated positions) would leave
+     * both children's boxes around a query that has that value, and the search would visit both.
+     */
+    private static int betweenValues(long[] keys, int middle) {
+        int n = keys.length;
+        for (int d = 0; d <= n / 2 - n / 8; d++) {
+            if (startsValue(keys, middle - d)) {
+                return middle - d;
+            }
+            if (startsValue(keys, middle + d)) {
+                return middle + d;
+            }
+        }
+        return middle;
+    }
+
+    private static boolean startsValue(long[] keys, int r) {
+        return r > 0 && r < keys.length && keys[r] >>> 32 != keys[r - 1] >>> 32;
+    }
+
+    /**
+     * One thread's query as every node bound reads it, with the heap of its search; reused from
+     * query to query, so a decision allocates little beyond the query's encoding. Per box: what
+     * the query holds in its slot, its a and b, its object's penalty, its additive cost to each
+     * of the slot's categories and which of them cost nothing. Slots without a box (no stored
+     * scene holds their object) add the same to every bound.
+     */
+    private final class Query {
+        static final int LACKS = 0;
+        static final int HOLDS = 1;
+        static final int SEVERAL = 2;
+        final float[][] objects = new float[slotGroup.length][];
+        final int[] counts = new int[slotGroup.length];
+        final double[] ownPenalty = new double[slotGroup.length];
+        final int[] mode = new int[boxWeight.length];
+        final double[] boxPenalty = new double[boxWeight.length];
+        final float[] position = new float[2 * boxWeight.length];
+        final double[] categoryGap = new double[categoryAt[boxWeight.length]];
+        final long[] free = new long[boxWeight.length];
+        final NodeHeap heap = new NodeHeap();
+        /** For the exact distance where the query holds several objects in a slot; made when first needed. */
+        Assignment.Workspace workspace;
+        int actionClass;
+        int classBit;
+        double constant;
+
+        void prepare(Scene query) {
+            int slots = slotGroup.length;
+            float[][] current = metric.encode(query, false).groups();
+            float[][] previous = slotPrevious[slots - 1] ? metric.encodePrevious(query.previous()).groups() : null;
+            int additiveAt = metric.additiveAt();
+            int additive = stride - additiveAt;
+            constant = 0;
+            for (int s = 0; s < slots; s++) {
+                float[] x = (slotPrevious[s] ? previous : current)[slotGroup[s]];
+                objects[s] = x;
+                counts[s] = x.length / stride;
+                ownPenalty[s] = counts[s] == 1 ? metric.penalty(x, 0) : 0;
+                if (SLOT_BOXAt[s] < 0) {
+                    constant += slotWeight[s] * ownPenalty[s]; // the query's object, if single, is unmatched
+                    continue;
+                }
+                int b = SLOT_BOXAt[s] / SLOT_BOX;
+                mode[b] = counts[s] == 0 ? LACKS : counts[s] == 1 ? HOLDS : SEVERAL;
+                boxPenalty[b] = ownPenalty[s];
+                free[b] = 0;
+                if (counts[s] != 1) {
+                    continue;
+                }
+                position[2 * b] = x[0];
+                position[2 * b + 1] = x[1];
+                float[] table = categoryValues[s];
+                for (int c = 0; c < categoryAt[b + 1] - categoryAt[b]; c++) {
+                    double gap = 0; // summed as the pair cost sums the additive differences
+                    for (int f = 0; f < additive; f++) {
+                        gap += Math.abs((double) x[additiveAt + f] - table[c * additive + f]);
+                    }
+                    categoryGap[categoryAt[b] + c] = gap;
+                    if (gap == 0) {
+                        free[b] |= 1L << c;
+                    }
+                }
+            }
+            actionClass = memoryAction > 0 && query.previous() != null ? ObjectSetMetric.actionClass(query.previous()) : -1;
+            classBit = 1 << (actionClass + 1);
+            heap.size = 0;
+        }
+
+        /** The least additive cost to the categories of box b that {@code held} names. */
+        double nearestCategory(int b, long held) {
+            double least = Double.POSITIVE_INFINITY;
+            for (long rest = held; rest != 0; rest &= rest - 1) {
+                least = Math.min(least, categoryGap[categoryAt[b] + Long.numberOfTrailingZeros(rest)]);
+            }
+            return least;
+        }
+
+        Assignment.Workspace workspace() {
+            if (workspace == null) {
+                workspace = new Assignment.Workspace();
+            }
+            return workspace;
+        }
+    }
+
+    private final ThreadLocal<Query> queries = ThreadLocal.withInitial(Query::new);
+
     @Override
     public void scan(Scene query, TopK top) {
-        int slots = slotGroup.length;
-        float[][] current = metric.encode(query, false).groups();
-        float[][] previous = slotPrevious[slots - 1] ? metric.encodePrevious(query.previous()).groups() : null;
-        float[][] q = new float[slots][];
-        int[] qn = new int[slots];
-        double[] qPenalty = new double[slots];
-        for (int s = 0; s < slots; s++) {
-            q[s] = (slotPrevious[s] ? previous : current)[slotGroup[s]];
-            qn[s] = q[s].length / stride;
-            qPenalty[s] = qn[s] == 1 ? metric.penalty(q[s], 0) : 0;
-        }
-        int qClass = memoryAction > 0 && query.previous() != null ? ObjectSetMetric.actionClass(query.previous()) : -1;
-        Assignment.Workspace scratch = new Assignment.Workspace();
-        NodeHeap heap = new NodeHeap();
-        heap.push(bound(0, q, qn, qPenalty, qClass), 0);
+        Query q = queries.get();
+        q.prepare(query);
+        NodeHeap heap = q.heap;
+        heap.push(bound(0, q), 0);
         while (heap.size > 0) {
             double lower = heap.topBound();
             int node = heap.topNode();
@@ -497,13 +681,13 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             int left = nodeInts[at + LEFT];
             if (left < 0) {
                 for (int p = nodeInts[at + FROM]; p < nodeInts[at + TO]; p++) {
-                    offer(p, q, qn, qClass, top, scratch);
+                    offer(p, q, top);
                 }
                 continue;
             }
             int right = nodeInts[at + RIGHT];
-            heap.push(bound(left, q, qn, qPenalty, qClass), left);
-            heap.push(bound(right, q, qn, qPenalty, qClass), right);
+            heap.push(bound(left, q), left);
+            heap.push(bound(right, q), right);
         }
     }
 
@@ -511,42 +695,45 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
      * A lower bound of the distance of every point under the node, shaved: the memory-action
      * cost unless some point has the query's previous action class, plus per slot the least of
      * what its points can cost: for those holding the slot's object the gap from the query's
-     * object to their box (capped by both penalties for optimal matching) or their least
+     * object to their box of a and b plus its cost to the nearest additive tuple they hold
+     * (capped by both penalties for optimal matching) or their least
      * penalty when the query lacks it; for those lacking it the query object's penalty.
      */
-    private double bound(int node, float[][] q, int[] qn, double[] qPenalty, int qClass) {
-        int slots = slotGroup.length;
+    private double bound(int node, Query q) {
         int at = node * NODE_INTS;
-        double lower = memoryAction > 0 && (nodeInts[at + CLASSES] & 1 << (qClass + 1)) == 0 ? memoryAction : 0;
+        double lower = q.constant;
+        if (memoryAction > 0 && (nodeInts[at + CLASSES] & q.classBit) == 0) {
+            lower += memoryAction;
+        }
         int some = nodeInts[at + SOME];
         int all = nodeInts[at + ALL];
-        int leastAt = 2 * coordinate.length;
-        for (int s = 0; s < slots; s++) {
-            int box = node * boxStride + slotBoxAt[s]; // read only where some point holds the slot
-            boolean held = (some & 1 << s) != 0;
-            boolean lacked = (all & 1 << s) == 0;
+        int box = node * boxStride;
+        for (int b = 0; b < boxWeight.length; b++, box += SLOT_BOX) {
+            int bit = boxBit[b];
+            boolean lacked = (all & bit) == 0;
             double gap;
-            if (qn[s] == 0) {
-                gap = lacked ? 0 : nodeBox[box + leastAt];
-            } else if (qn[s] == 1) {
-                gap = lacked ? qPenalty[s] : Double.POSITIVE_INFINITY;
-                if (held) {
-                    float[] x = q[s];
-                    double da = outside(x[0], nodeBox[box], nodeBox[box + 1]);
-                    double db = outside(x[1], nodeBox[box + 2], nodeBox[box + 3]);
-                    double pair = polar ? da + db : Math.sqrt(da * da + db * db);
-                    for (int c = 2; c < coordinate.length; c++) {
-                        pair += outside(x[coordinate[c]], nodeBox[box + 2 * c], nodeBox[box + 2 * c + 1]);
+            switch (q.mode[b]) {
+                case Query.LACKS -> gap = lacked ? 0 : nodeBox[box + LEAST_AT];
+                case Query.HOLDS -> {
+                    gap = lacked ? q.boxPenalty[b] : Double.POSITIVE_INFINITY;
+                    if ((some & bit) != 0) {
+                        float[] x = q.position;
+                        double da = outside(x[2 * b], nodeBox[box], nodeBox[box + 1]);
+                        double db = outside(x[2 * b + 1], nodeBox[box + 2], nodeBox[box + 3]);
+                        double pair = polar ? da + db : Math.sqrt(da * da + db * db);
+                        long held = nodeCategory[node * boxWeight.length + b];
+                        if ((held & q.free[b]) == 0) {
+                            pair += q.nearestCategory(b, held);
+                        }
+                        if (optimal) {
+                            pair = Math.min(pair, q.boxPenalty[b] + nodeBox[box + LEAST_AT]);
+                        }
+                        gap = Math.min(gap, pair);
                     }
-                    if (optimal) {
-                        pair = Math.min(pair, qPenalty[s] + nodeBox[box + leastAt]);
-                    }
-                    gap = Math.min(gap, pair);
                 }
-            } else {
-                gap = 0; // several objects on the query's side: no bound taken
+                default -> gap = 0; // several objects on the query's side: no bound taken
             }
-            lower += slotWeight[s] * gap;
+            lower += boxWeight[b] * gap;
         }
         return lower * (1 - SHAVE);
     }
@@ -556,17 +743,30 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     }
 
     /** The point's exact distance, summed as the exhaustive path sums it; its k lowest indices offered unless beyond the bound. */
-    private void offer(int p, float[][] q, int[] qn, int qClass, TopK top, Assignment.Workspace scratch) {
+    private void offer(int p, Query q, TopK top) {
         double bound = top.bound();
         double total = 0;
-        if (memoryAction > 0 && qClass != actionClass[p]) {
+        if (memoryAction > 0 && q.actionClass != actionClass[p]) {
             total += memoryAction;
         }
         int slots = slotGroup.length;
         for (int s = 0; s < slots; s++) {
             double weight = slotWeight[s];
             int m = (mask[p] & 1 << s) != 0 ? 1 : 0;
-            total += weight * metric.groupDistance(q[s], 0, qn[s], values, p * width + s * stride, m, total, weight, bound, scratch);
+            int at = p * width + s * stride;
+            float[] x = q.objects[s];
+            int n = q.counts[s];
+            double d;
+            if (n == 1 && m == 1) {
+                // as groupDistance pairs one object with one: greedy takes the pair, optimal at most both penalties
+                d = optimal ? Math.min(metric.pairCost(x, 0, values, at), q.ownPenalty[s] + metric.penalty(values, at))
+                        : metric.pairCost(x, 0, values, at);
+            } else if (n <= 1) {
+                d = n == 1 ? q.ownPenalty[s] : m == 1 ? metric.penalty(values, at) : 0;
+            } else {
+                d = metric.groupDistance(x, 0, n, values, at, m, total, weight, bound, q.workspace());
+            }
+            total += weight * d;
             if (total > bound) {
                 return;
             }

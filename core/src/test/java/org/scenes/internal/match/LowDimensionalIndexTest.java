@@ -138,6 +138,33 @@ class LowDimensionalIndexTest {
     }
 
     @Test
+    void manyRowsAndSidesKeepTheIndexExactOrFallBack() {
+        // 30 distance rows: 30 row values alone fit a node's 64 bits, with the three sides (90) they do not
+        double[] bounds = new double[29];
+        for (int i = 0; i < bounds.length; i++) {
+            bounds[i] = 1 + i;
+        }
+        Grid fine = Grid.of(5, bounds);
+        Random random = new Random(61);
+        List<Scene> scenes = new ArrayList<>();
+        for (int i = 0; i < 1600; i++) {
+            SeenObject ball = SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, 0.5 + random.nextInt(70) / 2.0,
+                    random.nextInt(61) - 30, fine);
+            Action action = random.nextBoolean() ? Action.dash(random.nextInt(100)) : Action.turn(random.nextInt(61) - 30);
+            scenes.add(new Scene(i, TestScenes.OBSERVER, List.of(ball), List.of(action)));
+        }
+        List<Scene> stored = remembered(scenes.subList(0, 1500));
+        List<Scene> queries = remembered(scenes.subList(1500, 1600));
+        Map<String, String> rows = Map.of("space", "polar", "row-weight", "3", "memory", "0.3", "memory-action", "5");
+        check(rows, ObjectSetMetric.Space.CARTESIAN, 0, stored, queries);
+        Map<String, String> sides = with(rows, "side-weight", "7");
+        assertInstanceOf(PackedObjectSets.class, metric(with(sides, "memory", "0"), ObjectSetMetric.Space.CARTESIAN, 0,
+                BALL_GOAL, true).pack(stored), "90 tuples: the scan serves");
+        ExhaustiveScan.assertRecognizerAgrees(metric(sides, ObjectSetMetric.Space.CARTESIAN, 0, BALL_GOAL, false),
+                () -> metric(sides, ObjectSetMetric.Space.CARTESIAN, 0, BALL_GOAL, true), stored, queries, "90 tuples");
+    }
+
+    @Test
     @RequiresSharedData
     void krisletScenesAsExhaustive() throws IOException {
         Path game = SharedData.resolve("krislet/classic-game1");
