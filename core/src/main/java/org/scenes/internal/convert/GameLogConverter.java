@@ -238,6 +238,8 @@ public final class GameLogConverter {
         final SceneConverter converter = new SceneConverter(grid, pairing, false, line -> { });
         final BlockingQueue<Step> queue;
         final StringBuilder text = new StringBuilder(4096);
+        /** This worker's own: a parser serves one thread. */
+        final MessageParser parser = new MessageParser();
         byte[] bytes = new byte[4096];
         volatile Throwable failure;
         Thread thread;
@@ -394,7 +396,7 @@ public final class GameLogConverter {
                 }
                 return;
             }
-            if (isBody(message)) {
+            if (BodyCommands.first(parser, message) != null) {
                 player.sentBody = true;
             }
             line(player, message);
@@ -750,7 +752,7 @@ public final class GameLogConverter {
             for (Step step : held) {
                 for (Sent sent : step.before()) {
                     if (sent.player() == player) {
-                        evidence.command(sent.message());
+                        evidence.command(BodyCommands.first(parser, sent.message()));
                     }
                 }
                 for (PlayerState state : step.frame().players()) {
@@ -762,7 +764,7 @@ public final class GameLogConverter {
                 }
                 for (Sent sent : step.at()) {
                     if (sent.player() == player) {
-                        evidence.command(sent.message());
+                        evidence.command(BodyCommands.first(parser, sent.message()));
                     }
                 }
             }
@@ -1155,12 +1157,6 @@ public final class GameLogConverter {
         double end = begin + simulatorStep;
         double first = Math.ceil(begin / period - 1e-9) * period;
         return first < end - 1e-9 ? (int) Math.floor((end - 1e-9 - first) / period) + 1 : 0;
-    }
-
-    /** Whether a line a player sent holds a body command, which the server counts once executed. */
-    static boolean isBody(String message) {
-        return message.contains("(dash ") || message.contains("(turn ") || message.contains("(kick ")
-                || message.contains("(move ") || message.contains("(catch ") || message.contains("(tackle ");
     }
 
     /** Every player of the game: the default selection. */

@@ -8,6 +8,7 @@ import java.util.Map;
 import org.scenes.api.Grid;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.PlayerState;
+import org.scenes.internal.protocol.CommandType;
 import org.scenes.internal.vision.Landmarks;
 import org.scenes.internal.vision.VisionNumbers;
 
@@ -38,7 +39,7 @@ final class PhaseEvidence {
     private final List<float[]> seen = new ArrayList<>();
     /** The body commands, each with the number of shows before it and its kind. */
     private final List<Integer> commandShows = new ArrayList<>();
-    private final List<Character> commandKinds = new ArrayList<>();
+    private final List<CommandType> commandKinds = new ArrayList<>();
 
     PhaseEvidence(List<Double> offsets, double simulatorStep, double visibleDistance) {
         this.offsets = offsets;
@@ -53,12 +54,11 @@ final class PhaseEvidence {
         seen.add(features(self, ballX, ballY));
     }
 
-    /** A message the player sent after the shows given so far. */
-    void command(String message) {
-        char kind = kind(message);
-        if (kind != 0) {
+    /** A line the player sent after the shows given so far, by its first body command (null: none). */
+    void command(CommandType firstBody) {
+        if (firstBody != null) {
             commandShows.add(steps.size());
-            commandKinds.add(kind);
+            commandKinds.add(firstBody);
         }
     }
 
@@ -98,7 +98,7 @@ final class PhaseEvidence {
      */
     private double agreement(BitSet sees) {
         List<float[]> situations = new ArrayList<>();
-        List<Character> kinds = new ArrayList<>();
+        List<CommandType> kinds = new ArrayList<>();
         int paired = -1;
         int lastCommand = -1;
         for (int i = 0; i < commandShows.size(); i++) {
@@ -135,7 +135,7 @@ final class PhaseEvidence {
                     nearestAt = j;
                 }
             }
-            if (nearestAt >= 0 && kinds.get(nearestAt).equals(kinds.get(i))) {
+            if (nearestAt >= 0 && kinds.get(nearestAt) == kinds.get(i)) {
                 agree++;
             }
         }
@@ -157,20 +157,6 @@ final class PhaseEvidence {
         }
         return Math.min(2 * MISSING, ROW_WEIGHT * Math.abs(a[at] - b[at])
                 + COLUMN_WEIGHT * Math.abs(a[at + 1] - b[at + 1]) + ANGLE_WEIGHT * Math.abs(a[at + 2] - b[at + 2]));
-    }
-
-    private static final String[] BODY = {"(dash ", "(turn ", "(kick ", "(catch ", "(tackle ", "(move "};
-
-    /** The kind of the first body command of a message (1 to 6), or 0 for none. */
-    static char kind(String message) {
-        for (int at = message.indexOf('('); at >= 0; at = message.indexOf('(', at + 1)) {
-            for (int k = 0; k < BODY.length; k++) {
-                if (message.startsWith(BODY[k], at)) {
-                    return (char) (k + 1);
-                }
-            }
-        }
-        return 0;
     }
 
     /** The ball's and the opponent goal's row, column and whole-degree direction (NaN: not seen). */

@@ -32,10 +32,10 @@ import org.scenes.api.TopK;
  * </ul>
  * Distances offered are computed as {@link ObjectSetMetric#groupDistance} computes them, in the
  * exhaustive path's order, so they are bit-identical to it; bounds are shaved against float
- * rounding. Read-only once built: each thread keeps its query scratch from one query to the next.
+ * rounding. Read-only once built: queries keep their scratch per call.
  */
 final class LowDimensionalIndex implements PackedMetric.PackedScenes {
-    private static final int LEAF = 8;
+    private static final int LEAF = 16;
     /** Bounds are lowered by this share: single-precision pair costs are within 3e-7 of the exact one. */
     private static final double SHAVE = 1e-6;
 
@@ -80,7 +80,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     /** Where each box's categories start in a query's table of costs to them (one more: the end). */
     private final int[] categoryAt;
     /** Where a slot's box starts within a node's floats; slots no stored scene holds have none (-1). */
-    private final int[] SLOT_BOXAt;
+    private final int[] slotBoxAt;
     private final int boxStride;
     private final float[] nodeBox;
     /** Per box (slot with a box, in order) its slot's bit and weight. */
@@ -107,18 +107,18 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         this.categoryValues = tree.categoryValues;
         int nodes = tree.from.size();
         int anywhere = nodes == 0 ? 0 : tree.some.get(0);
-        this.SLOT_BOXAt = new int[slotGroup.length];
+        this.slotBoxAt = new int[slotGroup.length];
         int boxes = 0;
         for (int s = 0; s < slotGroup.length; s++) {
-            SLOT_BOXAt[s] = (anywhere & 1 << s) != 0 ? SLOT_BOX * boxes++ : -1;
+            slotBoxAt[s] = (anywhere & 1 << s) != 0 ? SLOT_BOX * boxes++ : -1;
         }
         this.boxStride = boxes * SLOT_BOX;
         this.boxBit = new int[boxes];
         this.boxWeight = new double[boxes];
         for (int s = 0; s < slotGroup.length; s++) {
-            if (SLOT_BOXAt[s] >= 0) {
-                boxWeight[SLOT_BOXAt[s] / SLOT_BOX] = slotWeight[s];
-                boxBit[SLOT_BOXAt[s] / SLOT_BOX] = 1 << s;
+            if (slotBoxAt[s] >= 0) {
+                boxWeight[slotBoxAt[s] / SLOT_BOX] = slotWeight[s];
+                boxBit[slotBoxAt[s] / SLOT_BOX] = 1 << s;
             }
         }
         this.nodeInts = new int[nodes * NODE_INTS];
@@ -126,8 +126,8 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         this.nodeCategory = new long[nodes * boxes];
         this.categoryAt = new int[boxes + 1];
         for (int s = 0; s < slotGroup.length; s++) {
-            if (SLOT_BOXAt[s] >= 0) {
-                int b = SLOT_BOXAt[s] / SLOT_BOX;
+            if (slotBoxAt[s] >= 0) {
+                int b = slotBoxAt[s] / SLOT_BOX;
                 categoryAt[b + 1] = categoryAt[b] + tree.categoryCount[s];
             }
         }
@@ -142,15 +142,15 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
             nodeInts[at + CLASSES] = tree.classes.get(node);
             nodeInts[at + INDEX] = tree.index.get(node);
             for (int s = 0; s < slotGroup.length; s++) {
-                if (SLOT_BOXAt[s] < 0) {
+                if (slotBoxAt[s] < 0) {
                     continue;
                 }
-                int box = node * boxStride + SLOT_BOXAt[s];
+                int box = node * boxStride + slotBoxAt[s];
                 for (int c = 0; c < 2; c++) {
                     nodeBox[box + 2 * c] = tree.min.get(node * width + s * stride + c);
                     nodeBox[box + 2 * c + 1] = tree.max.get(node * width + s * stride + c);
                 }
-                nodeCategory[node * boxes + SLOT_BOXAt[s] / SLOT_BOX] = tree.category.get(node * slotGroup.length + s);
+                nodeCategory[node * boxes + slotBoxAt[s] / SLOT_BOX] = tree.category.get(node * slotGroup.length + s);
                 double least = tree.penalty.get(node * slotGroup.length + s);
                 float rounded = (float) least;
                 nodeBox[box + LEAST_AT] = rounded > least ? Math.nextDown(rounded) : rounded;
@@ -574,8 +574,7 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     }
 
     /**
-     * One thread's query as every node bound reads it, with the heap of its search; reused from
-     * query to query, so a decision allocates little beyond the query's encoding. Per box: what
+     * A query as every node bound reads it, with the heap of its search. Per box: what
      * the query holds in its slot, its a and b, its object's penalty, its additive cost to each
      * of the slot's categories and which of them cost nothing. Slots without a box (no stored
      * scene holds their object) add the same to every bound.
@@ -595,30 +594,29 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         final NodeHeap heap = new NodeHeap();
         /** For the exact distance where the query holds several objects in a slot; made when first needed. */
         Assignment.Workspace workspace;
-        int actionClass;
-        int classBit;
-        double constant;
+        final int actionClass;
+        final int classBit;
+        final double constant;
 
-        void prepare(Scene query) {
+        Query(Scene query) {
             int slots = slotGroup.length;
             float[][] current = metric.encode(query, false).groups();
             float[][] previous = slotPrevious[slots - 1] ? metric.encodePrevious(query.previous()).groups() : null;
             int additiveAt = metric.additiveAt();
             int additive = stride - additiveAt;
-            constant = 0;
+            double unmatched = 0;
             for (int s = 0; s < slots; s++) {
                 float[] x = (slotPrevious[s] ? previous : current)[slotGroup[s]];
                 objects[s] = x;
                 counts[s] = x.length / stride;
                 ownPenalty[s] = counts[s] == 1 ? metric.penalty(x, 0) : 0;
-                if (SLOT_BOXAt[s] < 0) {
-                    constant += slotWeight[s] * ownPenalty[s]; // the query's object, if single, is unmatched
+                if (slotBoxAt[s] < 0) {
+                    unmatched += slotWeight[s] * ownPenalty[s]; // the query's object, if single, is unmatched
                     continue;
                 }
-                int b = SLOT_BOXAt[s] / SLOT_BOX;
+                int b = slotBoxAt[s] / SLOT_BOX;
                 mode[b] = counts[s] == 0 ? LACKS : counts[s] == 1 ? HOLDS : SEVERAL;
                 boxPenalty[b] = ownPenalty[s];
-                free[b] = 0;
                 if (counts[s] != 1) {
                     continue;
                 }
@@ -636,9 +634,9 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
                     }
                 }
             }
+            constant = unmatched;
             actionClass = memoryAction > 0 && query.previous() != null ? ObjectSetMetric.actionClass(query.previous()) : -1;
             classBit = 1 << (actionClass + 1);
-            heap.size = 0;
         }
 
         /** The least additive cost to the categories of box b that {@code held} names. */
@@ -658,12 +656,9 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         }
     }
 
-    private final ThreadLocal<Query> queries = ThreadLocal.withInitial(Query::new);
-
     @Override
     public void scan(Scene query, TopK top) {
-        Query q = queries.get();
-        q.prepare(query);
+        Query q = new Query(query);
         NodeHeap heap = q.heap;
         heap.push(bound(0, q), 0);
         while (heap.size > 0) {

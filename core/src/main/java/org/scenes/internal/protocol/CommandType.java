@@ -47,6 +47,11 @@ public enum CommandType {
         return action;
     }
 
+    /** Whether rcssserver executes at most one such command a cycle: dash, turn, kick, catch, tackle, move. */
+    public boolean body() {
+        return action != ActionType.NONE && action != ActionType.TURN_NECK;
+    }
+
     /** The protocol word: {@code turn_neck}, {@code pointto}. */
     public String key() {
         return key;
