@@ -115,22 +115,18 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         this.boxStride = boxes * SLOT_BOX;
         this.boxBit = new int[boxes];
         this.boxWeight = new double[boxes];
+        this.categoryAt = new int[boxes + 1];
         for (int s = 0; s < slotGroup.length; s++) {
             if (slotBoxAt[s] >= 0) {
-                boxWeight[slotBoxAt[s] / SLOT_BOX] = slotWeight[s];
-                boxBit[slotBoxAt[s] / SLOT_BOX] = 1 << s;
+                int b = slotBoxAt[s] / SLOT_BOX;
+                boxWeight[b] = slotWeight[s];
+                boxBit[b] = 1 << s;
+                categoryAt[b + 1] = categoryAt[b] + tree.categoryCount[s];
             }
         }
         this.nodeInts = new int[nodes * NODE_INTS];
         this.nodeBox = new float[nodes * boxStride];
         this.nodeCategory = new long[nodes * boxes];
-        this.categoryAt = new int[boxes + 1];
-        for (int s = 0; s < slotGroup.length; s++) {
-            if (slotBoxAt[s] >= 0) {
-                int b = slotBoxAt[s] / SLOT_BOX;
-                categoryAt[b + 1] = categoryAt[b] + tree.categoryCount[s];
-            }
-        }
         for (int node = 0; node < nodes; node++) {
             int at = node * NODE_INTS;
             nodeInts[at + FROM] = tree.from.get(node);
@@ -165,7 +161,8 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
 
     /**
      * The index, or null when some weighted group holds more than one object in a stored scene
-     * (or there are more than 30 slots), where the other paths serve.
+     * (or there are more than 30 slots, or more than 64 distinct additive tuples in a slot),
+     * where the other paths serve.
      */
     static LowDimensionalIndex build(ObjectSetMetric metric, List<Scene> scenes) {
         ObjectSetMetric.Settings settings = metric.settings();
@@ -585,7 +582,6 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         static final int SEVERAL = 2;
         final float[][] objects = new float[slotGroup.length][];
         final int[] counts = new int[slotGroup.length];
-        final double[] ownPenalty = new double[slotGroup.length];
         final int[] mode = new int[boxWeight.length];
         final double[] boxPenalty = new double[boxWeight.length];
         final float[] position = new float[2 * boxWeight.length];
@@ -609,14 +605,14 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
                 float[] x = (slotPrevious[s] ? previous : current)[slotGroup[s]];
                 objects[s] = x;
                 counts[s] = x.length / stride;
-                ownPenalty[s] = counts[s] == 1 ? metric.penalty(x, 0) : 0;
+                double own = counts[s] == 1 ? metric.penalty(x, 0) : 0;
                 if (slotBoxAt[s] < 0) {
-                    unmatched += slotWeight[s] * ownPenalty[s]; // the query's object, if single, is unmatched
+                    unmatched += slotWeight[s] * own; // the query's object, if single, is unmatched
                     continue;
                 }
                 int b = slotBoxAt[s] / SLOT_BOX;
                 mode[b] = counts[s] == 0 ? LACKS : counts[s] == 1 ? HOLDS : SEVERAL;
-                boxPenalty[b] = ownPenalty[s];
+                boxPenalty[b] = own;
                 if (counts[s] != 1) {
                     continue;
                 }
@@ -748,20 +744,10 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         for (int s = 0; s < slots; s++) {
             double weight = slotWeight[s];
             int m = (mask[p] & 1 << s) != 0 ? 1 : 0;
-            int at = p * width + s * stride;
-            float[] x = q.objects[s];
             int n = q.counts[s];
-            double d;
-            if (n == 1 && m == 1) {
-                // as groupDistance pairs one object with one: greedy takes the pair, optimal at most both penalties
-                d = optimal ? Math.min(metric.pairCost(x, 0, values, at), q.ownPenalty[s] + metric.penalty(values, at))
-                        : metric.pairCost(x, 0, values, at);
-            } else if (n <= 1) {
-                d = n == 1 ? q.ownPenalty[s] : m == 1 ? metric.penalty(values, at) : 0;
-            } else {
-                d = metric.groupDistance(x, 0, n, values, at, m, total, weight, bound, q.workspace());
-            }
-            total += weight * d;
+            // one object on each side needs no workspace: made for a query holding several only
+            total += weight * metric.groupDistance(q.objects[s], 0, n, values, p * width + s * stride, m, total, weight,
+                    bound, n > 1 ? q.workspace() : null);
             if (total > bound) {
                 return;
             }
