@@ -247,7 +247,9 @@ class LogProxyIntegrationTest {
             senders.add(thread);
             thread.start();
         }
-        awaitTrue("traffic under way", () -> server.clients().get(0).received().size() > 200);
+        // every client's traffic under way, not only the first's: the checks below need some from each
+        awaitTrue("traffic under way", () -> server.clients().size() == clients.size()
+                && server.clients().stream().allMatch(seen -> seen.received().size() > 200));
         proxy.close(); // what the shutdown hook does on SIGINT/SIGTERM
         for (Thread thread : senders) {
             thread.join();
