@@ -50,6 +50,7 @@ final class CondenseCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        OutputPaths.checkFile("-o", output, train);
         if (editK < 0) {
             throw new UsageException("--edit-k must be 0 or more, not " + editK);
         }

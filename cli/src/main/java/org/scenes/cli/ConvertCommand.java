@@ -86,9 +86,13 @@ final class ConvertCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         Grid grid = gridOptions.grid();
         if (output.file != null) {
-            OutputPaths.checkFile("-o", output.file);
+            OutputPaths.checkFile("-o", output.file, logs);
         } else {
             OutputPaths.checkDirectory("--out-dir", output.directory);
+            List<String> names = outputNames(logs);
+            for (String name : names) {
+                OutputPaths.checkNotInput("--out-dir", output.directory.resolve(name + ".json.gz"), logs);
+            }
         }
         PrintWriter err = spec.commandLine().getErr();
         GameLogConversion game = GameLogConversion.of(logs);

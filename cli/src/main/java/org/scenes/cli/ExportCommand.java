@@ -111,6 +111,9 @@ final class ExportCommand implements Callable<Integer> {
         if (keyScenes != null) {
             KeySceneChoice.check(keyScenes, keyBy); // before any output
         }
+        if (output != null) {
+            OutputPaths.checkFile("-o", output, files);
+        }
         if (output == null) {
             PrintWriter out = spec.commandLine().getOut();
             export(out);

@@ -1,8 +1,12 @@
 package org.scenes.cli;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Collection;
+import java.util.List;
 import java.util.Locale;
+import org.scenes.internal.files.Targets;
 
 /**
  * Checks, before any work starts, that an output option names a place that can be written: a
@@ -14,14 +18,47 @@ final class OutputPaths {
 
     /** A file the command will write (its directories may still be missing). */
     static void checkFile(String option, Path target) {
-        if (Files.isDirectory(target)) {
+        Targets.Kind kind;
+        try {
+            kind = Targets.kind(Targets.followLinks(target.toAbsolutePath()));
+        } catch (IOException e) {
+            throw new UsageException(option + " " + target + ": " + e.getMessage());
+        }
+        if (kind == Targets.Kind.DIRECTORY) {
             throw new UsageException(option + " " + target + ": is a directory, not a file to write");
+        }
+        if (kind == Targets.Kind.OTHER) {
+            throw new UsageException(option + " " + target + ": is not a regular file, a FIFO or a character device;"
+                    + " name a regular file to write");
         }
         checkAncestor(option, target, target.toAbsolutePath().getParent());
     }
 
+    /**
+     * A file the command will write that must not be one of its {@code inputs}: the same file by
+     * identity (a link, a hard link, {@code ./x} and {@code x}) would be destroyed by the output.
+     */
+    static void checkFile(String option, Path target, Collection<Path> inputs) {
+        checkFile(option, target);
+        checkNotInput(option, target, inputs);
+    }
+
+    /** Refuses an output that is one of the inputs, before any work. */
+    static void checkNotInput(String option, Path target, Collection<Path> inputs) {
+        Targets.sameFileAsInput(target, inputs).ifPresent(input -> {
+            throw new UsageException(option + " " + target + ": is the input " + input
+                    + " (the same file); writing it would destroy the input: name another output");
+        });
+    }
+
+    /** Inputs of several options as one list. */
+    @SafeVarargs
+    static List<Path> inputs(Collection<Path>... groups) {
+        return java.util.Arrays.stream(groups).flatMap(Collection::stream).toList();
+    }
+
     /** A file whose name must end in one of {@code extensions} (lower case, with the dot). */
-    static void checkFile(String option, Path target, String... extensions) {
+    static void checkFile(String option, Path target, Collection<Path> inputs, String... extensions) {
         String name = target.getFileName().toString().toLowerCase(Locale.ROOT);
         boolean known = false;
         for (String extension : extensions) {
@@ -30,7 +67,7 @@ final class OutputPaths {
         if (!known) {
             throw new UsageException(option + " " + target + ": the name must end in " + String.join(" or ", extensions));
         }
-        checkFile(option, target);
+        checkFile(option, target, inputs);
     }
 
     /** A directory the command will write files into (created when missing). */

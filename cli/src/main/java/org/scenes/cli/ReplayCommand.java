@@ -29,6 +29,7 @@ final class ReplayCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        OutputPaths.checkFile("-o", output, List.of(game));
         List<GameFrame> frames = GameLogReader.readAll(game);
         if (frames.isEmpty()) {
             throw new UsageException(game + ": no frames (show lines) in this game log");

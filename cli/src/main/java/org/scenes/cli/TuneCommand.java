@@ -63,7 +63,7 @@ final class TuneCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         int sweeps = tuning.sweeps();
-        OutputPaths.checkFile("-o", output);
+        OutputPaths.checkFile("-o", output, train);
         if (!search.equals("descent") && !search.equals("random")) {
             throw new UsageException("--search must be descent or random, not " + search);
         }
@@ -73,6 +73,7 @@ final class TuneCommand implements Callable<Integer> {
         Budget limit = Budget.parse(budget == null ? "200" : budget);
         if (table != null) {
             TriedTable.checkName(table);
+            OutputPaths.checkFile("--table", table, train);
         }
         List<SceneFile> files = new ArrayList<>();
         for (Path path : train) {

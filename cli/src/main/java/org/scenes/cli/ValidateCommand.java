@@ -111,13 +111,13 @@ final class ValidateCommand implements Callable<Integer> {
             throw new UsageException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
         }
         if (chart != null) {
-            OutputPaths.checkFile("--chart", chart, ".png", ".svg");
+            OutputPaths.checkFile("--chart", chart, OutputPaths.inputs(train, test, folds), ".png", ".svg");
         }
         if (predictions != null) {
             if (!folds.isEmpty()) {
                 throw new UsageException("--predictions lists the predictions of --train/--test or --self, not of --folds");
             }
-            OutputPaths.checkFile("--predictions", predictions, ".csv");
+            OutputPaths.checkFile("--predictions", predictions, OutputPaths.inputs(train, test, folds), ".csv");
         }
         List<MatchConfig> configs = match.configs();
         PluginRegistry registry = top.global.registry();

@@ -13,11 +13,13 @@ import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ThreadLocalRandom;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.zip.GZIPOutputStream;
@@ -31,9 +33,16 @@ import java.util.zip.GZIPOutputStream;
  * (not a hook of its own here: commands such as the proxy commit their logs in their hooks).
  * SIGKILL runs no hook: the next output into the same directory removes such leftovers
  * ({@link #removeStaleTemporaries}).
+ *
+ * <p>Only a regular file is ever replaced. A symbolic link is written through: the file it
+ * points to is replaced and the link stays. A FIFO or a character device ({@code /dev/stdout},
+ * {@code /dev/null}) is written through as a stream, without a temporary file, since it cannot be
+ * replaced; anything else (a block device, a socket) is refused. Write errors name the target and
+ * the reason (disk full, permission denied).
  */
 public final class AtomicOutput implements AutoCloseable {
     private final Path target;
+    /** Null when the target is a FIFO or a character device, written through. */
     private final Path temporary;
     private final OutputStream file;
     private final OutputStream stream;
@@ -52,40 +61,55 @@ public final class AtomicOutput implements AutoCloseable {
     /** Directories already cleaned by this process: once is enough, and output directories may be large. */
     private static final Set<Path> CLEANED = ConcurrentHashMap.newKeySet();
 
-    private AtomicOutput(Path target) throws IOException {
-        this.target = target.toAbsolutePath();
+    private AtomicOutput(Path requested) throws IOException {
+        this.target = Targets.followLinks(requested.toAbsolutePath());
         Path directory = this.target.getParent();
-        if (Files.isDirectory(this.target)) {
-            throw new IOException(target + ": is a directory, not a file to write");
+        Targets.Kind kind = Targets.kind(this.target);
+        if (kind == Targets.Kind.DIRECTORY) {
+            throw new IOException(requested + ": is a directory, not a file to write");
         }
-        try {
-            Files.createDirectories(directory);
-        } catch (FileAlreadyExistsException e) {
-            throw new IOException(target + ": cannot write: " + e.getFile() + " is a file, not a directory", e);
-        } catch (IOException e) {
-            throw new IOException(target + ": cannot create its directory " + directory + ": " + reason(e), e);
+        if (kind == Targets.Kind.OTHER) {
+            throw new IOException(requested + ": is not a regular file, a FIFO or a character device"
+                    + " (a block device or a socket): refused; name a regular file to write");
         }
-        removeStaleTemporaries(directory);
-        // Not Files.createTempFile: its owner-only permissions would carry over to the target.
-        // The name carries the writer's PID, so a later writer can tell a dead writer's leftover.
-        this.temporary = directory.resolve("." + this.target.getFileName() + "." + PID + "-" + Long.toUnsignedString(
-                java.util.concurrent.ThreadLocalRandom.current().nextLong(), 36) + ".tmp");
-        OPEN.add(temporary);
         OutputStream out;
-        try {
-            out = new BufferedOutputStream(
-                    Files.newOutputStream(temporary, java.nio.file.StandardOpenOption.CREATE_NEW), 1 << 16);
-        } catch (IOException e) {
-            OPEN.remove(temporary);
-            // the temporary file's name means nothing to the user: name the target and the reason
-            throw new IOException(target + ": cannot write in " + directory + ": " + reason(e), e);
+        if (kind == Targets.Kind.STREAM) {
+            // nothing to rename over a FIFO or a device: write through, without atomicity
+            this.temporary = null;
+            try {
+                out = new BufferedOutputStream(Files.newOutputStream(this.target, StandardOpenOption.WRITE), 1 << 16);
+            } catch (IOException e) {
+                throw new IOException(requested + ": cannot write: " + reason(e), e);
+            }
+        } else {
+            try {
+                Files.createDirectories(directory);
+            } catch (FileAlreadyExistsException e) {
+                throw new IOException(requested + ": cannot write: " + e.getFile() + " is a file, not a directory", e);
+            } catch (IOException e) {
+                throw new IOException(requested + ": cannot create its directory " + directory + ": " + reason(e), e);
+            }
+            removeStaleTemporaries(directory);
+            // Not Files.createTempFile: its owner-only permissions would carry over to the target.
+            // The name carries the writer's PID, so a later writer can tell a dead writer's leftover.
+            this.temporary = directory.resolve("." + this.target.getFileName() + "." + PID + "-" + Long.toUnsignedString(
+                    ThreadLocalRandom.current().nextLong(), 36) + ".tmp");
+            OPEN.add(temporary);
+            try {
+                out = new BufferedOutputStream(Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW), 1 << 16);
+            } catch (IOException e) {
+                OPEN.remove(temporary);
+                // the temporary file's name means nothing to the user: name the target and the reason
+                throw new IOException(requested + ": cannot write in " + directory + ": " + reason(e), e);
+            }
         }
-        this.file = target.getFileName().toString().endsWith(".gz") ? new GZIPOutputStream(out, 1 << 16) : out;
+        OutputStream named = new NamedErrors(out, requested);
+        this.file = requested.getFileName().toString().endsWith(".gz") ? new GZIPOutputStream(named, 1 << 16) : named;
         // Writers wrapping the stream may close it; only commit() or close() may end the file.
         this.stream = new FilterOutputStream(file) {
             @Override
             public void write(byte[] bytes, int offset, int length) throws IOException {
-                out.write(bytes, offset, length);
+                this.out.write(bytes, offset, length); // not FilterOutputStream's byte-by-byte loop
             }
 
             @Override
@@ -93,6 +117,58 @@ public final class AtomicOutput implements AutoCloseable {
                 flush();
             }
         };
+    }
+
+    /** Write errors (disk full, a device refusing) name the target, not the temporary file. */
+    private static final class NamedErrors extends FilterOutputStream {
+        private final Path target;
+
+        NamedErrors(OutputStream out, Path target) {
+            super(out);
+            this.target = target;
+        }
+
+        @Override
+        public void write(int b) throws IOException {
+            try {
+                out.write(b);
+            } catch (IOException e) {
+                throw named(e);
+            }
+        }
+
+        @Override
+        public void write(byte[] bytes, int offset, int length) throws IOException {
+            try {
+                out.write(bytes, offset, length);
+            } catch (IOException e) {
+                throw named(e);
+            }
+        }
+
+        @Override
+        public void flush() throws IOException {
+            try {
+                out.flush();
+            } catch (IOException e) {
+                throw named(e);
+            }
+        }
+
+        @Override
+        public void close() throws IOException {
+            try {
+                out.close();
+            } catch (IOException e) {
+                throw named(e);
+            }
+        }
+
+        private IOException named(IOException e) {
+            String message = e.getMessage();
+            return message != null && message.startsWith(target + ": ") ? e
+                    : new IOException(target + ": cannot write: " + reason(e), e);
+        }
     }
 
     /**
@@ -123,7 +199,7 @@ public final class AtomicOutput implements AutoCloseable {
         }
     }
 
-    private static String reason(IOException e) {
+    static String reason(IOException e) {
         if (e instanceof AccessDeniedException) {
             return "permission denied";
         }
@@ -173,6 +249,11 @@ public final class AtomicOutput implements AutoCloseable {
             throw new IllegalStateException("output " + target + " already closed");
         }
         closed = true;
+        if (temporary == null) {
+            stream.flush();
+            file.close();
+            return;
+        }
         boolean moved = false;
         try {
             stream.flush();
@@ -198,6 +279,10 @@ public final class AtomicOutput implements AutoCloseable {
             return;
         }
         closed = true;
+        if (temporary == null) {
+            file.close();
+            return;
+        }
         try {
             file.close();
         } finally {
