@@ -21,6 +21,7 @@ import org.scenes.internal.scene.SceneFileException;
 import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.internal.validate.Folds;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.internal.validate.MatchConfigFile;
 import org.scenes.internal.validate.ValidationReport;
 import org.scenes.internal.validate.Validator;
 import picocli.CommandLine.Command;
@@ -250,7 +251,7 @@ final class ValidateCommand implements Callable<Integer> {
         for (Outcome outcome : outcomes) {
             Map<String, Object> map = new LinkedHashMap<>();
             map.put("label", outcome.label());
-            map.put("config", ConfigFiles.toMap(outcome.config()));
+            map.put("config", MatchConfigFile.toMap(outcome.config()));
             map.putAll(outcome.report() != null ? outcome.report().toMap() : outcome.folds().toMap());
             maps.add(map);
         }
