@@ -7,9 +7,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import me.tongfei.progressbar.ConsoleProgressBarConsumer;
-import me.tongfei.progressbar.ProgressBar;
-import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.agent.sim.SyntheticScenes;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginConfig;
@@ -251,14 +248,11 @@ final class BenchCommand implements Callable<Integer> {
     /** Synthetic scenes streamed into a knowledge base, with a progress bar on a terminal. */
     private static KnowledgeBase generate(int count, int run) {
         KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
-        try (ProgressBar bar = System.console() == null || count < 50_000 ? null
-                : new ProgressBarBuilder().setTaskName("Generating").setInitialMax(count).setUnit(" scenes", 1)
-                        .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build()) {
+        try (TerminalProgress bar = count < 50_000 ? TerminalProgress.none()
+                : TerminalProgress.start("Generating", count, " scenes", 1)) {
             SyntheticScenes.generate(SYNTHETIC_SEED, count, run, Grid.DEFAULT, scene -> {
                 builder.add(scene);
-                if (bar != null) {
-                    bar.step();
-                }
+                bar.step();
             });
         }
         return builder.build();

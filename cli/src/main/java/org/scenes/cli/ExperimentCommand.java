@@ -11,9 +11,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
-import me.tongfei.progressbar.ConsoleProgressBarConsumer;
-import me.tongfei.progressbar.ProgressBar;
-import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.api.PluginRegistry;
 import org.scenes.internal.experiment.Configuration;
 import org.scenes.internal.experiment.Experiment;
@@ -66,8 +63,8 @@ final class ExperimentCommand implements Callable<Integer> {
         long queries = configurations.size() * files.stream().mapToLong(f -> f.scenes().size()).sum();
         PrintWriter out = spec.commandLine().getOut();
         ResultTable table;
-        try (ProgressBar bar = progress(queries)) {
-            Runnable tick = bar == null ? () -> { } : bar::step;
+        try (TerminalProgress bar = queries < 20_000 ? TerminalProgress.none() : TerminalProgress.start("Sweeping", queries)) {
+            Runnable tick = bar::step;
             FoldValidation validation = new FoldValidation(sweep, files, registry, parallelQueries, tick);
             validation.check(configurations);
             table = Experiment.run(sweep, validation, parallelQueries ? 1 : workers, () -> { });
@@ -124,13 +121,5 @@ final class ExperimentCommand implements Callable<Integer> {
             writer.flush();
             output.commit();
         }
-    }
-
-    private static ProgressBar progress(long total) {
-        if (System.console() == null || total < 20_000) {
-            return null;
-        }
-        return new ProgressBarBuilder().setTaskName("Sweeping").setInitialMax(total)
-                .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build();
     }
 }

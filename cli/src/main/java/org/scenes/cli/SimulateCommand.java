@@ -5,9 +5,6 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import me.tongfei.progressbar.ConsoleProgressBarConsumer;
-import me.tongfei.progressbar.ProgressBar;
-import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.agent.BrainFactory;
 import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
@@ -107,15 +104,8 @@ final class SimulateCommand implements Callable<Integer> {
 
     /** Runs the simulator's game with a progress bar in game cycles on a terminal, silent when piped. */
     static GameResult play(Simulator simulator, int cycles) throws IOException {
-        try (ProgressBar bar = System.console() == null ? null
-                : new ProgressBarBuilder().setTaskName("Simulating").setInitialMax(cycles)
-                        .setUnit(" cycles", 1).setConsumer(new ConsoleProgressBarConsumer(System.err))
-                        .clearDisplayOnFinish().build()) {
-            return simulator.run(time -> {
-                if (bar != null) {
-                    bar.stepTo(time);
-                }
-            });
+        try (TerminalProgress bar = TerminalProgress.start("Simulating", cycles, " cycles", 1)) {
+            return simulator.run(bar::stepTo);
         }
     }
 

@@ -7,9 +7,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import me.tongfei.progressbar.ConsoleProgressBarConsumer;
-import me.tongfei.progressbar.ProgressBar;
-import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.internal.validate.Folds;
@@ -133,15 +130,14 @@ final class TuneCommand implements Callable<Integer> {
         long startNanos = System.nanoTime();
         long deadline = limit.nanos() == Long.MAX_VALUE ? Long.MAX_VALUE : startNanos + limit.nanos();
         RandomSearch.Result result;
-        try (ProgressBar bar = System.console() == null || tuning.quiet() ? null
-                : new ProgressBarBuilder().setTaskName("Tuning").setInitialMax(1).setUnit(" configurations", 1)
-                        .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build()) {
+        try (TerminalProgress bar = tuning.quiet() ? TerminalProgress.none()
+                : TerminalProgress.start("Tuning", 1, " configurations", 1)) {
             result = searcher.run(MatchConfig.DEFAULT.withSeed(tuning.seed()), tuning.seed(), limit.configurations(), deadline,
-                    bar == null ? null : (done, planned, best) -> {
+                    !bar.shown() ? null : (done, planned, best) -> {
                         synchronized (bar) {
                             bar.maxHint(Math.max(planned, done));
                             bar.stepTo(done);
-                            bar.setExtraMessage(Double.isInfinite(best) ? "" : String.format(java.util.Locale.ROOT, "best %.4f", best));
+                            bar.message(Double.isInfinite(best) ? "" : String.format(java.util.Locale.ROOT, "best %.4f", best));
                         }
                     });
         }

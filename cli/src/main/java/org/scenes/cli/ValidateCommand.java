@@ -7,9 +7,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import me.tongfei.progressbar.ConsoleProgressBarConsumer;
-import me.tongfei.progressbar.ProgressBar;
-import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.api.ActionType;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginRegistry;
@@ -146,8 +143,9 @@ final class ValidateCommand implements Callable<Integer> {
         // per configuration, the file and cycle of each query, for --predictions
         List<List<String>> queryFiles = new ArrayList<>();
         List<List<Integer>> queryCycles = new ArrayList<>();
-        try (ProgressBar bar = progress(queries)) {
-            Runnable tick = bar == null ? null : bar::step;
+        // a bar whatever the number of queries: a slow configuration takes minutes over a few thousand
+        try (TerminalProgress bar = queries == 0 ? TerminalProgress.none() : TerminalProgress.start("Validating", queries)) {
+            Runnable tick = bar.shown() ? bar::step : null;
             for (int i = 0; i < configs.size(); i++) {
                 MatchConfig config = configs.get(i);
                 String label = labels.isEmpty() ? config.describe() : labels.get(i);
@@ -232,18 +230,6 @@ final class ValidateCommand implements Callable<Integer> {
         List<Path> all = new ArrayList<>(first);
         all.addAll(second);
         return all;
-    }
-
-    /**
-     * A bar on a terminal, whatever the number of queries (a slow configuration takes minutes over a
-     * few thousand), cleared when done; none when output is piped.
-     */
-    private static ProgressBar progress(long total) {
-        if (System.console() == null || total == 0) {
-            return null;
-        }
-        return new ProgressBarBuilder().setTaskName("Validating").setInitialMax(total)
-                .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build();
     }
 
     private static void printJson(PrintWriter out, List<Outcome> outcomes) throws Exception {
