@@ -28,6 +28,7 @@ import org.scenes.internal.files.CsvTables;
 import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.plugins.coverage.KeyScenes;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -89,12 +90,8 @@ final class ExportCommand implements Callable<Integer> {
             + " --key-scenes' picks them, docs/extensions.md), in the file's order, with an influence column before the class."})
     Integer keyScenes;
 
-    @Option(names = "--key-by", paramLabel = "influence|events", defaultValue = "influence",
-            description = "--key-scenes by influence on neighbours' predictions (default) or the first N events.")
-    String keyBy;
-
-    @Option(names = "--metric", paramLabel = "NAME", description = "The metric ranking --key-scenes (default: the default configuration's).")
-    String metric;
+    @Mixin
+    KeySceneChoice keyChoice;
 
     @ParentCommand
     ScenesCommand top;
@@ -109,7 +106,7 @@ final class ExportCommand implements Callable<Integer> {
             throw new UsageException("--players must be 0 or more, not " + players);
         }
         if (keyScenes != null) {
-            KeySceneChoice.check(keyScenes, keyBy); // before any output
+            KeySceneChoice.check(keyScenes); // before any output
         }
         if (output != null) {
             OutputPaths.checkFile("-o", output, files);
@@ -226,8 +223,7 @@ final class ExportCommand implements Callable<Integer> {
     /** The key scenes of a file: index to influence. */
     private Map<Integer, Integer> keyScenes(Path file) {
         Map<Integer, Integer> keys = new HashMap<>();
-        for (KeyScenes.Ranked ranked : KeySceneChoice.choose(SceneFileReader.read(file), keyScenes, keyBy, metric,
-                top.global.registry())) {
+        for (KeyScenes.Ranked ranked : keyChoice.choose(SceneFileReader.read(file), keyScenes, top.global.registry())) {
             keys.put(ranked.index(), ranked.influence());
         }
         return keys;

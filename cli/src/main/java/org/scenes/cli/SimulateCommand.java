@@ -42,8 +42,9 @@ final class SimulateCommand implements Callable<Integer> {
             description = "Game length in cycles of 100 ms; half time at half. Default: ${DEFAULT-VALUE}.")
     int cycles;
 
-    @Option(names = "--seed", paramLabel = "N", defaultValue = "1",
-            description = "Seed of all randomness (noise, teachers' choices). Default: ${DEFAULT-VALUE}.")
+    @Option(names = {"--game-seed", "--seed"}, paramLabel = "N", defaultValue = "1",
+            description = "The game's seed: all its randomness (noise, teachers' choices); --seed is the older spelling."
+                    + " Default: ${DEFAULT-VALUE}.")
     long seed;
 
     @Option(names = "--out-dir", paramLabel = "DIR", required = true,

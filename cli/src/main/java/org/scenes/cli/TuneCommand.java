@@ -148,8 +148,8 @@ final class TuneCommand implements Callable<Integer> {
         long distinct = result.table().stream().map(RandomSearch.Tried::config).distinct().count();
         Map<String, Object> score = new LinkedHashMap<>();
         score.put("score", result.score());
-        score.put("protocol", tuning.protocolName());
-        score.put("objective", tuning.objectiveName());
+        score.put("protocol", tuning.protocol().key());
+        score.put("objective", tuning.objective().key());
         score.put("search", "random search with successive halving");
         score.put("figures", result.figures());
         score.put("configurationsTried", distinct);

@@ -21,6 +21,7 @@ import org.scenes.internal.validate.MatchConfig;
 import org.scenes.internal.validate.MatchConfigFile;
 import org.scenes.internal.validate.ValidationReport;
 import org.scenes.internal.validate.Validator;
+import org.scenes.options.KeyConverters;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -54,9 +55,11 @@ final class ValidateCommand implements Callable<Integer> {
             description = "Cross-validate: each file is tested against the next one (cyclically); mean and standard deviation.")
     List<Path> folds = new ArrayList<>();
 
-    @Option(names = "--protocol", paramLabel = "next|leave-one-out",
-            description = "With --folds: train on the next file (the thesis' protocol, default) or on all other files.")
-    String protocol = "next";
+    @Option(names = "--protocol", paramLabel = "next|leave-one-out", defaultValue = "next",
+            converter = KeyConverters.Protocol.class,
+            description = "With --folds: train on the next file (the thesis' protocol, validate's default) or on all other"
+                    + " files (tune's default).")
+    Folds.Protocol foldProtocol;
 
     @Mixin
     MatchOptions match;
@@ -103,10 +106,6 @@ final class ValidateCommand implements Callable<Integer> {
                 throw new UsageException(self ? "--self tests against the training files; drop --test"
                         : "give --test FILE... or --self");
             }
-        }
-        Folds.Protocol foldProtocol = Folds.Protocol.fromKey(protocol);
-        if (foldProtocol == null) {
-            throw new UsageException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
         }
         if (chart != null) {
             OutputPaths.checkFile("--chart", chart, OutputPaths.inputs(train, test, folds), ".png", ".svg");

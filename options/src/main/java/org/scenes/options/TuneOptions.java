@@ -16,13 +16,16 @@ public final class TuneOptions {
     @Option(names = "--sweeps", paramLabel = "N", description = "Passes over the search dimensions (default 2).")
     private int sweeps = 2;
 
-    @Option(names = "--protocol", paramLabel = "leave-one-out|next",
-            description = "Cross-validation: each file against all others (default) or against the next one, as the thesis did.")
-    private String protocol = "leave-one-out";
+    @Option(names = "--protocol", paramLabel = "leave-one-out|next", defaultValue = "leave-one-out",
+            converter = KeyConverters.Protocol.class,
+            description = "Cross-validation: each file against all others (tune's default) or against the next one, as the"
+                    + " thesis did (validate --folds' default).")
+    private Folds.Protocol protocol;
 
-    @Option(names = "--objective", paramLabel = "mean|accuracy|direction|macro-f1",
+    @Option(names = "--objective", paramLabel = "mean|accuracy|direction|macro-f1", defaultValue = "mean",
+            converter = KeyConverters.Objective.class,
             description = "What to maximise: the mean of accuracy, action-with-direction accuracy and macro F1 (default), or one of them.")
-    private String objective = "mean";
+    private Tuner.Objective objective;
 
     @Option(names = "--quiet", description = "Do not print each configuration tried.")
     private boolean quiet;
@@ -47,50 +50,27 @@ public final class TuneOptions {
         return sweeps;
     }
 
-    /** @throws OptionException for an unknown protocol */
     public Folds.Protocol protocol() {
-        Folds.Protocol chosen = Folds.Protocol.fromKey(protocol);
-        if (chosen == null) {
-            throw new OptionException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
-        }
-        return chosen;
+        return protocol;
     }
 
-    /** @throws OptionException for an unknown objective */
     public Tuner.Objective objective() {
-        return switch (objective) {
-            case "mean" -> Tuner.Objective.MEAN;
-            case "accuracy" -> Tuner.Objective.ACCURACY;
-            case "direction" -> Tuner.Objective.DIRECTION;
-            case "macro-f1" -> Tuner.Objective.MACRO_F1;
-            default -> throw new OptionException("--objective must be mean, accuracy, direction or macro-f1, not "
-                    + objective);
-        };
+        return objective;
     }
 
     /** The {@code crossValidation} block of the configuration file a descent writes. */
     public Map<String, Object> crossValidation(Tuner.Result result, List<String> trainFiles) {
         Map<String, Object> score = new LinkedHashMap<>();
         score.put("score", result.score());
-        score.put("protocol", protocol);
-        score.put("objective", objective);
-        score.put("scoreFormula", objective.equals("mean")
+        score.put("protocol", protocol.key());
+        score.put("objective", objective.key());
+        score.put("scoreFormula", objective == Tuner.Objective.MEAN
                 ? "(accuracy + action-with-direction accuracy + macro F1) / 3 over the decisions of all folds"
-                : objective + " over the decisions of all folds");
+                : objective.key() + " over the decisions of all folds");
         score.put("figures", result.figures());
         score.put("configurationsTried", result.evaluated());
         score.put("trainFiles", trainFiles);
         return score;
-    }
-
-    /** The protocol's name as given. */
-    public String protocolName() {
-        return protocol;
-    }
-
-    /** The objective's name as given. */
-    public String objectiveName() {
-        return objective;
     }
 
     /** The two lines naming the configuration a descent chose and its score. */
