@@ -11,6 +11,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
+import org.scenes.app.validate.Validation;
 import org.scenes.api.PluginRegistry;
 import org.scenes.internal.experiment.Configuration;
 import org.scenes.internal.experiment.Experiment;
@@ -110,7 +111,7 @@ final class ExperimentCommand implements Callable<Integer> {
             throw new UsageException("the sweep's data hold " + paths.size() + " scene file(s); cross-validation needs "
                     + "at least two, one per fold");
         }
-        return ValidateCommand.readSameGrid(paths);
+        return Validation.readSameGrid(paths);
     }
 
     private static void writeMarkdown(Path file, ResultTable table, String command, String chart) throws IOException {

@@ -4,6 +4,7 @@ import java.util.function.LongConsumer;
 import me.tongfei.progressbar.ConsoleProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
+import org.scenes.app.Progress;
 
 /**
  * The one progress bar of the commands: drawn on standard error while a terminal (a console) is
@@ -35,6 +36,29 @@ final class TerminalProgress implements AutoCloseable {
     /** No bar, terminal or not: for work too small or a {@code --quiet} run. */
     static TerminalProgress none() {
         return NONE;
+    }
+
+    /** The services' progress on this terminal: a bar from each begin to its end; nothing without a terminal. */
+    static Progress reporter() {
+        return new Progress() {
+            private volatile TerminalProgress bar = none();
+
+            @Override
+            public void begin(String task, long total) {
+                bar = total == 0 ? none() : start(task, total);
+            }
+
+            @Override
+            public void step() {
+                bar.step();
+            }
+
+            @Override
+            public void end() {
+                bar.close();
+                bar = none();
+            }
+        };
     }
 
     /** Whether a bar is drawn. */
