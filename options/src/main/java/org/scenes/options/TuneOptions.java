@@ -1,10 +1,9 @@
 package org.scenes.options;
 
 import java.io.PrintWriter;
-import java.util.LinkedHashMap;
-import java.util.List;
 import java.util.Map;
 import org.scenes.internal.validate.Folds;
+import org.scenes.internal.validate.MatchConfig;
 import org.scenes.internal.validate.Tuner;
 import picocli.CommandLine.Option;
 
@@ -58,25 +57,15 @@ public final class TuneOptions {
         return objective;
     }
 
-    /** The {@code crossValidation} block of the configuration file a descent writes. */
-    public Map<String, Object> crossValidation(Tuner.Result result, List<String> trainFiles) {
-        Map<String, Object> score = new LinkedHashMap<>();
-        score.put("score", result.score());
-        score.put("protocol", protocol.key());
-        score.put("objective", objective.key());
-        score.put("scoreFormula", objective == Tuner.Objective.MEAN
-                ? "(accuracy + action-with-direction accuracy + macro F1) / 3 over the decisions of all folds"
-                : objective.key() + " over the decisions of all folds");
-        score.put("figures", result.figures());
-        score.put("configurationsTried", result.evaluated());
-        score.put("trainFiles", trainFiles);
-        return score;
-    }
-
     /** The two lines naming the configuration a descent chose and its score. */
     public static void printBest(PrintWriter out, Tuner.Result result) {
-        out.printf("Best of %d configurations: %s%n", result.evaluated(), result.config().describe());
-        out.printf("Cross-validation score %.4f (accuracy %.4f, with direction %.4f, macro F1 %.4f)%n", result.score(),
-                result.figures().get("accuracy"), result.figures().get("directionAccuracy"), result.figures().get("macroF1"));
+        printBest(out, result.evaluated(), result.config(), result.score(), result.figures());
+    }
+
+    /** The two lines naming the configuration a descent chose, of {@code tried}, and its score and figures. */
+    public static void printBest(PrintWriter out, long tried, MatchConfig config, double score, Map<String, Double> figures) {
+        out.printf("Best of %d configurations: %s%n", tried, config.describe());
+        out.printf("Cross-validation score %.4f (accuracy %.4f, with direction %.4f, macro F1 %.4f)%n", score,
+                figures.get("accuracy"), figures.get("directionAccuracy"), figures.get("macroF1"));
     }
 }

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import org.apache.spark.api.java.JavaSparkContext;
+import org.scenes.app.tune.Tuning;
 import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.validate.Folds;
 import org.scenes.internal.validate.MatchConfig;
@@ -65,7 +66,7 @@ final class TuneCommand implements Callable<Integer> {
             result = tuner.tune(Tuner.defaultStarts(MatchConfig.DEFAULT.withSeed(tuning.seed())), Tuner.defaultSearch(), sweeps);
             validated = tuner.validated();
         }
-        write(hadoop, result.config(), tuning.crossValidation(result, train));
+        write(hadoop, result.config(), Tuning.crossValidation(result, chosen, goal, train));
         TuneOptions.printBest(out, result);
         out.printf("Validated %d configurations in all (%d ahead of the search, to keep the executors busy)%n", validated,
                 validated - result.evaluated());

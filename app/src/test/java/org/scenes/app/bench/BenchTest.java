@@ -63,8 +63,8 @@ class BenchTest {
         List<Bench.Row> rows = new ArrayList<>();
         Bench.measure(Bench.prepare(request, REGISTRY, Progress.NONE), REGISTRY, rows::add);
         assertNull(rows.get(0).latency());
-        // only ball-goal and the selectors are on this class path
-        assertEquals(List.of("ball-goal (index)", "ball-goal (scan)"),
+        assertEquals(List.of("ball-goal (index)", "ball-goal (scan)", "continuous", "cell", "projection",
+                "continuous (optimal)"),
                 Bench.defaultMetrics(REGISTRY).stream().map(Bench.Metric::label).toList());
         assertEquals(1.5, Bench.percentile(new long[] {1000, 2000, 1500}, 0.5));
     }
