@@ -47,7 +47,8 @@ final class BenchCommand implements Callable<Integer> {
             + " independent moments).")
     int syntheticRun;
 
-    @Option(names = "--metric", paramLabel = "NAME", description = "Metric to measure (repeatable; default: ball-goal with and without its index, continuous greedy and optimal, cell, projection).")
+    @Option(names = "--metric", paramLabel = "NAME", description = "Metric to measure (repeatable; default: ball-goal"
+            + " with and without its index, continuous greedy and optimal, cell, projection).")
     List<String> metrics;
 
     @Option(names = "--config", paramLabel = "CONFIG.json", description = "Also measure this configuration (from scenes tune),"
@@ -66,7 +67,8 @@ final class BenchCommand implements Callable<Integer> {
             + " microseconds (a neighbour search; CPU time leaves out the waits of a busy machine).")
     boolean latency;
 
-    @Option(names = "--time", paramLabel = "SECONDS", defaultValue = "1", description = "Measuring time per metric, after as long again of warm-up (default ${DEFAULT-VALUE}).")
+    @Option(names = "--time", paramLabel = "SECONDS", defaultValue = "1",
+            description = "Measuring time per metric, after as long again of warm-up (default ${DEFAULT-VALUE}).")
     double seconds;
 
     @Override

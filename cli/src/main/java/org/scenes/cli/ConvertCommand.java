@@ -11,7 +11,6 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 import org.scenes.api.Grid;
-import org.scenes.api.Scene;
 import org.scenes.internal.convert.ConversionReport;
 import org.scenes.internal.convert.DropReason;
 import org.scenes.internal.convert.MalformedLine;

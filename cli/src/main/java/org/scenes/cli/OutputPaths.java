@@ -3,6 +3,7 @@ package org.scenes.cli;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.List;
 import java.util.Locale;
@@ -54,7 +55,7 @@ final class OutputPaths {
     /** Inputs of several options as one list. */
     @SafeVarargs
     static List<Path> inputs(Collection<Path>... groups) {
-        return java.util.Arrays.stream(groups).flatMap(Collection::stream).toList();
+        return Arrays.stream(groups).flatMap(Collection::stream).toList();
     }
 
     /** A file whose name must end in one of {@code extensions} (lower case, with the dot). */

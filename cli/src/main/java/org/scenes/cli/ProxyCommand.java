@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicBoolean;
 import org.scenes.internal.convert.LogFormat;
 import org.scenes.logproxy.ClientKind;
 import org.scenes.logproxy.LogProxy;
@@ -120,8 +121,8 @@ final class ProxyCommand implements Callable<Integer> {
                 });
         LogProxy proxy = LogProxy.start(config);
         CountDownLatch stopped = new CountDownLatch(1);
-        java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();
-        java.util.concurrent.atomic.AtomicBoolean clean = new java.util.concurrent.atomic.AtomicBoolean();
+        AtomicBoolean closed = new AtomicBoolean();
+        AtomicBoolean clean = new AtomicBoolean();
         Runnable stop = () -> {
             if (!closed.compareAndSet(false, true)) {
                 return;

@@ -3,6 +3,7 @@ package org.scenes.cli;
 import java.io.PrintWriter;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.function.ToDoubleFunction;
 import org.scenes.app.validate.Validation;
 import org.scenes.api.ActionLabel;
@@ -43,7 +44,7 @@ final class ReportTables {
         out.printf("Action with direction    %.3f %% (turns count only with the right sign)%n", 100 * report.directionAccuracy());
         out.printf("Body action              %.3f %%%s%n", 100 * report.accuracy(ActionLabel.BODY),
                 baselines(report, ActionLabel.BODY));
-        if (report.classCounts(ActionLabel.NECK).keySet().equals(java.util.Set.of(ActionLabel.NONE))) {
+        if (report.classCounts(ActionLabel.NECK).keySet().equals(Set.of(ActionLabel.NONE))) {
             out.println("Neck action              - (no turn_neck in the test scenes)");
         } else {
             out.printf("Neck action              %.3f %%%s%n", 100 * report.accuracy(ActionLabel.NECK),

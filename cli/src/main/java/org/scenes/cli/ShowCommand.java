@@ -2,6 +2,7 @@ package org.scenes.cli;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import org.scenes.api.Grid;
 import org.scenes.api.Scene;
@@ -87,7 +88,7 @@ final class ShowCommand implements Callable<Integer> {
         return print(out, keyScenes.choose(scenes, count, top.global.registry()), scenes.grid(), keyScenes.keyBy.key());
     }
 
-    private static int print(PrintWriter out, java.util.List<KeyScenes.Ranked> ranked, Grid grid, String measure) {
+    private static int print(PrintWriter out, List<KeyScenes.Ranked> ranked, Grid grid, String measure) {
         for (KeyScenes.Ranked each : ranked) {
             out.printf("#%d  %s %d  ", each.index(), measure, each.influence());
             out.print(VisionTable.render(each.scene(), grid));

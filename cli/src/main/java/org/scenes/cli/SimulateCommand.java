@@ -3,6 +3,7 @@ package org.scenes.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.Iterator;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.scenes.agent.BrainFactory;
@@ -59,7 +60,7 @@ final class SimulateCommand implements Callable<Integer> {
     /** The teacher names for the help text. */
     static final class TeacherNames implements Iterable<String> {
         @Override
-        public java.util.Iterator<String> iterator() {
+        public Iterator<String> iterator() {
             return Teachers.names().iterator();
         }
     }

@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
 import org.scenes.api.Action;
 import org.scenes.api.ActionLabel;
 import org.scenes.api.ActionType;
@@ -111,6 +112,6 @@ final class StatsCommand implements Callable<Integer> {
     private static <K> String classes(Map<K, Long> counts) {
         return counts.isEmpty() ? "none" : counts.entrySet().stream()
                 .sorted(Map.Entry.<K, Long>comparingByValue().reversed())
-                .map(e -> e.getKey() + " " + e.getValue()).collect(java.util.stream.Collectors.joining(", "));
+                .map(e -> e.getKey() + " " + e.getValue()).collect(Collectors.joining(", "));
     }
 }

@@ -7,6 +7,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.TreeMap;
 import org.scenes.internal.files.AtomicOutput;
 import org.scenes.internal.files.CsvTables;
 import org.scenes.internal.validate.MatchConfig;
@@ -67,7 +68,7 @@ final class TriedTable {
 
     private static String options(Map<String, String> options) {
         StringBuilder text = new StringBuilder();
-        new java.util.TreeMap<>(options).forEach((key, value) -> text.append(text.length() == 0 ? "" : ",").append(key)
+        new TreeMap<>(options).forEach((key, value) -> text.append(text.length() == 0 ? "" : ",").append(key)
                 .append('=').append(value));
         return text.toString();
     }

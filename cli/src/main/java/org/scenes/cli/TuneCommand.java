@@ -1,11 +1,15 @@
 package org.scenes.cli;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.scenes.app.tune.Tuning;
 import org.scenes.options.TuneOptions;
 import picocli.CommandLine.Command;
@@ -88,7 +92,7 @@ final class TuneCommand implements Callable<Integer> {
     /** How much --search random may try: a number of configurations, or a time. */
     record Budget(int configurations, long nanos) {
         static Budget parse(String text) {
-            java.util.regex.Matcher m = java.util.regex.Pattern.compile("(\\d+)(s|m|h)?").matcher(text.trim());
+            Matcher m = Pattern.compile("(\\d+)(s|m|h)?").matcher(text.trim());
             if (!m.matches()) {
                 throw new UsageException("--budget must be a number of configurations (200) or a time (90s, 3m, 1h), not " + text);
             }
@@ -111,7 +115,7 @@ final class TuneCommand implements Callable<Integer> {
         }
     }
 
-    private Integer random(Tuning.Request request, Budget limit, PrintWriter out) throws java.io.IOException {
+    private Integer random(Tuning.Request request, Budget limit, PrintWriter out) throws IOException {
         Tuning.Outcome outcome;
         try (TerminalProgress bar = tuning.quiet() ? TerminalProgress.none()
                 : TerminalProgress.start("Tuning", 1, " configurations", 1)) {
@@ -120,7 +124,7 @@ final class TuneCommand implements Callable<Integer> {
                         synchronized (bar) {
                             bar.maxHint(Math.max(planned, done));
                             bar.stepTo(done);
-                            bar.message(Double.isInfinite(best) ? "" : String.format(java.util.Locale.ROOT, "best %.4f", best));
+                            bar.message(Double.isInfinite(best) ? "" : String.format(Locale.ROOT, "best %.4f", best));
                         }
                     });
         }

@@ -1,5 +1,7 @@
 package org.scenes.api;
 
+import java.util.Arrays;
+
 /**
  * Weights of action types for selectors, in the thesis' order none, dash, kick, turn_neck,
  * turn, catch, move (then tackle, 1 when not given). Written {@code 1/1/2/1/1/1/1} or by name,
@@ -28,7 +30,7 @@ public record ActionWeights(double[] weights) {
 
     private static ActionWeights uniform() {
         double[] weights = new double[ActionType.values().length];
-        java.util.Arrays.fill(weights, 1);
+        Arrays.fill(weights, 1);
         return new ActionWeights(weights);
     }
 
@@ -74,12 +76,12 @@ public record ActionWeights(double[] weights) {
 
     @Override
     public boolean equals(Object other) {
-        return other instanceof ActionWeights that && java.util.Arrays.equals(weights, that.weights);
+        return other instanceof ActionWeights that && Arrays.equals(weights, that.weights);
     }
 
     @Override
     public int hashCode() {
-        return java.util.Arrays.hashCode(weights);
+        return Arrays.hashCode(weights);
     }
 
     @Override

@@ -1,5 +1,7 @@
 package org.scenes.api;
 
+import java.util.Locale;
+
 /** What kind of thing the server reported in a {@code see} message. */
 public enum ObjectKind {
     /** The ball ({@code b}). */
@@ -13,7 +15,7 @@ public enum ObjectKind {
     /** A player ({@code p "Team" 3}, or with less when far). */
     PLAYER;
 
-    private final String key = name().toLowerCase(java.util.Locale.ROOT);
+    private final String key = name().toLowerCase(Locale.ROOT);
 
     /**
      * Lower-case name used in scene files.

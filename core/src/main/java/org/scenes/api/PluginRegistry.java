@@ -1,5 +1,6 @@
 package org.scenes.api;
 
+import java.io.File;
 import java.io.IOException;
 import java.net.MalformedURLException;
 import java.net.URL;
@@ -138,7 +139,7 @@ public final class PluginRegistry {
         if (text == null || text.isBlank()) {
             return List.of();
         }
-        return Stream.of(text.split(java.io.File.pathSeparator)).filter(s -> !s.isBlank()).map(Path::of).toList();
+        return Stream.of(text.split(File.pathSeparator)).filter(s -> !s.isBlank()).map(Path::of).toList();
     }
 
     private static void register(PluginKind kind, Map<String, NamedProvider> byName, NamedProvider provider) {

@@ -1,6 +1,7 @@
 package org.scenes.api;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.function.Predicate;
@@ -165,7 +166,7 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
     public Scene union(Scene other) {
         Set<String> own = identities(this);
         List<SeenObject> joined = new ArrayList<>(objects);
-        Set<String> added = new java.util.HashSet<>();
+        Set<String> added = new HashSet<>();
         for (SeenObject object : other.objects) {
             if (!own.contains(object.identity()) && added.add(object.identity())) {
                 joined.add(object);

@@ -1,5 +1,7 @@
 package org.scenes.api;
 
+import java.util.List;
+import java.util.function.UnaryOperator;
 import org.scenes.internal.match.Recognizer;
 
 /**
@@ -22,8 +24,8 @@ public interface SceneTransform {
      * @param scene the next scene of the sequence
      * @return the scenes to store, at least one
      */
-    default java.util.List<Scene> stored(Scene scene) {
-        return java.util.List.of(apply(scene));
+    default List<Scene> stored(Scene scene) {
+        return List.of(apply(scene));
     }
 
     /**
@@ -34,7 +36,7 @@ public interface SceneTransform {
      *
      * @return the map to the second orientation, or null
      */
-    default java.util.function.UnaryOperator<Scene> queryImage() {
+    default UnaryOperator<Scene> queryImage() {
         return null;
     }
 
@@ -44,10 +46,10 @@ public interface SceneTransform {
      * @param transforms the transforms, in the order they apply
      * @return the one non-null {@link #queryImage()}, or null
      */
-    static java.util.function.UnaryOperator<Scene> queryImage(java.util.List<SceneTransform> transforms) {
-        java.util.function.UnaryOperator<Scene> found = null;
+    static UnaryOperator<Scene> queryImage(List<SceneTransform> transforms) {
+        UnaryOperator<Scene> found = null;
         for (SceneTransform transform : transforms) {
-            java.util.function.UnaryOperator<Scene> image = transform.queryImage();
+            UnaryOperator<Scene> image = transform.queryImage();
             if (image != null && found != null) {
                 throw new IllegalArgumentException("only one transform may match queries in a second orientation");
             }

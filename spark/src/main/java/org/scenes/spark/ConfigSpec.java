@@ -2,6 +2,7 @@ package org.scenes.spark;
 
 import java.io.Serializable;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -38,7 +39,7 @@ record ConfigSpec(String metric, TreeMap<String, String> metricOptions, double[]
         if (config.transforms().isEmpty()) {
             return "";
         }
-        return String.join("+", config.transforms()) + " w=" + java.util.Arrays.toString(config.objectWeights().toArray())
-                + " a=" + java.util.Arrays.toString(config.actionWeights().weights()) + " seed=" + config.seed();
+        return String.join("+", config.transforms()) + " w=" + Arrays.toString(config.objectWeights().toArray())
+                + " a=" + Arrays.toString(config.actionWeights().weights()) + " seed=" + config.seed();
     }
 }

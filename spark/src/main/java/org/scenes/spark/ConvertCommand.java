@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.stream.IntStream;
 import org.apache.hadoop.fs.FileStatus;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.scenes.internal.convert.DropReason;
@@ -79,7 +80,7 @@ final class ConvertCommand implements Callable<Integer> {
         try (JavaSparkContext spark = top.options.start("convert")) {
             String out = outDir;
             ArrayList<GameConversion.Game> all = new ArrayList<>(games);
-            List<Integer> indices = java.util.stream.IntStream.range(0, all.size()).boxed().toList();
+            List<Integer> indices = IntStream.range(0, all.size()).boxed().toList();
             // each task sums its game; the sums are reduced on the executors, the driver gets one summary
             summary = spark.parallelize(indices, all.size()).map(i -> {
                 GameConversion.Game game = all.get(i);

@@ -2,6 +2,7 @@ package org.scenes.spark;
 
 import java.io.Serializable;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.EnumMap;
 import java.util.List;
 import org.scenes.internal.convert.DropReason;
@@ -85,7 +86,7 @@ final class ConvertSummary implements Serializable {
     private static ArrayList<Line> first(List<Line> a, List<Line> b) {
         ArrayList<Line> all = new ArrayList<>(a);
         all.addAll(b);
-        all.sort(java.util.Comparator.comparingInt(Line::game).thenComparingInt(Line::order));
+        all.sort(Comparator.comparingInt(Line::game).thenComparingInt(Line::order));
         return new ArrayList<>(all.subList(0, Math.min(all.size(), LINES_KEPT)));
     }
 

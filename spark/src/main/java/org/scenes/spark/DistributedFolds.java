@@ -10,7 +10,7 @@ import java.util.UUID;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.apache.spark.broadcast.Broadcast;
 import org.scenes.api.PluginRegistry;
-import org.scenes.api.Scene;
+import org.scenes.internal.experiment.ExperimentException;
 import org.scenes.internal.experiment.FoldValidation;
 import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.validate.Folds;
@@ -176,7 +176,7 @@ final class DistributedFolds implements AutoCloseable {
             if (e.getClass() == IllegalArgumentException.class) {
                 throw new IllegalArgumentException(message, e);
             }
-            throw new org.scenes.internal.experiment.ExperimentException(message, e);
+            throw new ExperimentException(message, e);
         }
     }
 

@@ -1,17 +1,23 @@
 package org.scenes.spark;
 
+import java.io.BufferedInputStream;
+import java.io.FileNotFoundException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.URI;
 import java.nio.file.Files;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.UUID;
+import java.util.zip.GZIPInputStream;
 import org.apache.hadoop.conf.Configuration;
 import org.apache.hadoop.fs.FileStatus;
 import org.apache.hadoop.fs.FileSystem;
 import org.apache.hadoop.fs.Path;
+import org.scenes.internal.gamelog.ServerLogs;
 
 /**
  * Files on any Hadoop-compatible file system: a path with a scheme ({@code hdfs://}, {@code s3a://},
@@ -53,20 +59,20 @@ final class HadoopFiles {
         Path file = path(path);
         try (InputStream in = fileSystem(path).open(file)) {
             return in.readAllBytes();
-        } catch (java.io.FileNotFoundException e) {
-            throw new java.io.FileNotFoundException(path + ": no such file");
+        } catch (FileNotFoundException e) {
+            throw new FileNotFoundException(path + ": no such file");
         }
     }
 
     /** The kind of server log a file is (by content, gzip or not), or null for any other file. */
-    org.scenes.internal.gamelog.ServerLogs.Kind serverLogKind(String path) throws IOException {
-        try (InputStream raw = new java.io.BufferedInputStream(fileSystem(path).open(path(path)))) {
+    ServerLogs.Kind serverLogKind(String path) throws IOException {
+        try (InputStream raw = new BufferedInputStream(fileSystem(path).open(path(path)))) {
             raw.mark(2);
             int first = raw.read();
             int second = raw.read();
             raw.reset();
-            InputStream in = first == 0x1f && second == 0x8b ? new java.util.zip.GZIPInputStream(raw) : raw;
-            return org.scenes.internal.gamelog.ServerLogs.detect(in);
+            InputStream in = first == 0x1f && second == 0x8b ? new GZIPInputStream(raw) : raw;
+            return ServerLogs.detect(in);
         }
     }
 
@@ -83,7 +89,7 @@ final class HadoopFiles {
     /** The files and directories directly in a directory, sorted by name, as full paths. */
     List<FileStatus> list(String directory) throws IOException {
         List<FileStatus> entries = new ArrayList<>(List.of(fileSystem(directory).listStatus(path(directory))));
-        entries.sort(java.util.Comparator.comparing(status -> status.getPath().getName()));
+        entries.sort(Comparator.comparing(status -> status.getPath().getName()));
         return entries;
     }
 
@@ -96,7 +102,7 @@ final class HadoopFiles {
         }
         java.nio.file.Path copy = scratch.resolve(file.getName());
         try (InputStream in = fs.open(file)) {
-            Files.copy(in, copy, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            Files.copy(in, copy, StandardCopyOption.REPLACE_EXISTING);
         }
         return copy;
     }

@@ -1,6 +1,7 @@
 package org.scenes.spark;
 
 import java.io.PrintWriter;
+import org.apache.spark.SparkException;
 import org.scenes.api.PluginException;
 import org.scenes.internal.scene.SceneFileException;
 import org.scenes.options.OptionException;
@@ -60,7 +61,7 @@ final class SparkCommand implements Runnable {
         PrintWriter err = commandLine.getErr();
         // a task's failure reaches the driver wrapped in Spark's job failure: report the task's own error
         Throwable cause = e;
-        while (cause instanceof org.apache.spark.SparkException && cause.getCause() != null) {
+        while (cause instanceof SparkException && cause.getCause() != null) {
             cause = cause.getCause();
         }
         err.println("scenes-spark: " + message(cause));

@@ -1,5 +1,6 @@
 package org.scenes.spark;
 
+import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
@@ -98,7 +99,7 @@ final class SparkOptions {
             return List.of();
         }
         List<String> jars = new ArrayList<>();
-        for (String entry : System.getProperty("java.class.path").split(java.io.File.pathSeparator)) {
+        for (String entry : System.getProperty("java.class.path").split(File.pathSeparator)) {
             Path path = Path.of(entry);
             if (path.getFileName() != null && names.contains(path.getFileName().toString())) {
                 jars.add(path.toAbsolutePath().toUri().toString());

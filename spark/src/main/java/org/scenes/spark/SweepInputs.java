@@ -1,6 +1,8 @@
 package org.scenes.spark;
 
 import java.io.IOException;
+import java.net.URI;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.scenes.internal.scene.SceneFile;
@@ -21,8 +23,8 @@ final class SweepInputs {
         for (int i = 0; i < paths.size(); i++) {
             String path = paths.get(i);
             if (hadoop.fileSystem(path).getUri().getScheme().equals("file")) {
-                files.add(SceneFileReader.read(path.startsWith("file:") ? java.nio.file.Path.of(java.net.URI.create(path))
-                        : java.nio.file.Path.of(path)));
+                files.add(SceneFileReader.read(path.startsWith("file:") ? Path.of(URI.create(path))
+                        : Path.of(path)));
             } else {
                 if (remote == null) {
                     remote = data.decode();

@@ -1,6 +1,7 @@
 package org.scenes.internal.experiment;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import org.scenes.api.ActionWeights;
 import org.scenes.api.ObjectWeights;
@@ -36,7 +37,7 @@ public record Sweep(String title, List<String> data, List<String> metrics, List<
      */
     public record Layout(List<Axis> rows, Axis columns, List<String> measures) {
         public Layout {
-            rows = java.util.Arrays.stream(Axis.values()).filter(rows::contains).toList();
+            rows = Arrays.stream(Axis.values()).filter(rows::contains).toList();
             measures = List.copyOf(measures);
             if (rows.isEmpty()) {
                 throw new IllegalArgumentException("the table needs at least one row axis");

@@ -1,11 +1,13 @@
 package org.scenes.internal.match;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.scenes.api.ActionType;
 import org.scenes.api.EncodedMetric;
 import org.scenes.api.ObjectKind;
 import org.scenes.api.ObjectWeights;
@@ -401,7 +403,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
 
     /** Objects per group as {@link #encode} stores them, without placing them. */
     void count(Scene scene, int[] counts) {
-        java.util.Arrays.fill(counts, 0);
+        Arrays.fill(counts, 0);
         for (SeenObject object : scene.objects()) {
             int group = groupOf(object);
             if (groupWeight[group] > 0) {
@@ -424,7 +426,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
      */
     public static int actionClass(Scene scene) {
         int type = scene.actionType().ordinal();
-        if (scene.actionType() != org.scenes.api.ActionType.TURN) {
+        if (scene.actionType() != ActionType.TURN) {
             return type * 3;
         }
         return type * 3 + 1 + (int) Math.signum(scene.primaryAction().first());

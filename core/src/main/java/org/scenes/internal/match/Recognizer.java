@@ -2,6 +2,8 @@ package org.scenes.internal.match;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.NavigableMap;
+import java.util.TreeMap;
 import java.util.function.Supplier;
 import java.util.function.UnaryOperator;
 import org.scenes.api.EncodedMetric;
@@ -41,7 +43,7 @@ public final class Recognizer {
     /** decoded scenes for metrics with neither fast path, which compare whole scenes, and for small knowledge bases */
     private final List<Scene> decoded;
     /** The knowledge base split by see age, or null when all its scenes have one age. */
-    private final java.util.NavigableMap<Integer, AgePartition> byAge;
+    private final NavigableMap<Integer, AgePartition> byAge;
     /** The second orientation queries are matched in (see {@link SceneTransform#queryImage}), or null. */
     private final UnaryOperator<Scene> queryImage;
 
@@ -101,16 +103,16 @@ public final class Recognizer {
      * acts differently in each (it predicts the cycle in between): scenes of different see ages are
      * different situations, so each age is searched apart. Null when every scene has one age.
      */
-    private static java.util.NavigableMap<Integer, AgePartition> partitionByAge(KnowledgeBase knowledge,
+    private static NavigableMap<Integer, AgePartition> partitionByAge(KnowledgeBase knowledge,
                                                                             Supplier<SceneMetric> metricFactory, int k) {
-        java.util.TreeMap<Integer, List<Integer>> indices = new java.util.TreeMap<>();
+        TreeMap<Integer, List<Integer>> indices = new TreeMap<>();
         for (int i = 0; i < knowledge.size(); i++) {
             indices.computeIfAbsent(knowledge.scene(i).seeAge(), age -> new ArrayList<>()).add(i);
         }
         if (indices.size() < 2) {
             return null;
         }
-        java.util.TreeMap<Integer, AgePartition> partitions = new java.util.TreeMap<>();
+        TreeMap<Integer, AgePartition> partitions = new TreeMap<>();
         indices.forEach((age, members) -> {
             List<Scene> scenes = new ArrayList<>(members.size());
             members.forEach(i -> scenes.add(knowledge.scene(i)));

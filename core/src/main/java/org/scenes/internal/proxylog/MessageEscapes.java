@@ -1,6 +1,7 @@
 package org.scenes.internal.proxylog;
 
 import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
 
 /**
  * Turns any datagram into one line of UTF-8 text and back, as the native proxy log format
@@ -151,7 +152,7 @@ public final class MessageEscapes {
         byte[] bytes = escaped.toString().getBytes(StandardCharsets.UTF_8);
         byte[] target = new byte[bytes.length];
         int length = unescape(bytes, 0, bytes.length, target);
-        return java.util.Arrays.copyOf(target, length);
+        return Arrays.copyOf(target, length);
     }
 
     /**

@@ -1,6 +1,7 @@
 package org.scenes.internal.validate;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -149,17 +150,17 @@ public final class Folds {
 
     /** The mean of a figure's values over the folds (in fold order) where it is defined. */
     public static double mean(double[] byFold) {
-        return java.util.Arrays.stream(byFold).filter(v -> !Double.isNaN(v)).average().orElse(Double.NaN);
+        return Arrays.stream(byFold).filter(v -> !Double.isNaN(v)).average().orElse(Double.NaN);
     }
 
     /** The sample standard deviation of a figure's values over the folds (in fold order) where it is defined. */
     public static double std(double[] byFold) {
-        double[] values = java.util.Arrays.stream(byFold).filter(v -> !Double.isNaN(v)).toArray();
+        double[] values = Arrays.stream(byFold).filter(v -> !Double.isNaN(v)).toArray();
         if (values.length < 2) {
             return 0;
         }
-        double mean = java.util.Arrays.stream(values).average().orElse(0);
-        double squares = java.util.Arrays.stream(values).map(v -> (v - mean) * (v - mean)).sum();
+        double mean = Arrays.stream(values).average().orElse(0);
+        double squares = Arrays.stream(values).map(v -> (v - mean) * (v - mean)).sum();
         return Math.sqrt(squares / (values.length - 1));
     }
 

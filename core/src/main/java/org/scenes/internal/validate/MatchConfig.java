@@ -1,5 +1,6 @@
 package org.scenes.internal.validate;
 
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -51,7 +52,7 @@ public record MatchConfig(String metric, Map<String, String> metricOptions, Obje
 
     /** The same metric with one option set to {@code value}, or left out when {@code value} is null. */
     public MatchConfig withMetricOption(String key, String value) {
-        Map<String, String> options = new java.util.HashMap<>(metricOptions);
+        Map<String, String> options = new HashMap<>(metricOptions);
         if (value == null) {
             options.remove(key);
         } else {

@@ -1,13 +1,17 @@
 package org.scenes.internal.validate;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.Comparator;
+import java.util.EnumMap;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Random;
 import java.util.SplittableRandom;
+import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.scenes.api.Action;
@@ -191,7 +195,7 @@ public final class RandomSearch {
         for (int i = 0; i < folds; i++) {
             order.add(i);
         }
-        java.util.Collections.shuffle(order, new java.util.Random(seed));
+        Collections.shuffle(order, new Random(seed));
         return order;
     }
 
@@ -289,7 +293,7 @@ public final class RandomSearch {
      * Stride 1 is every scene.
      */
     static int[] sample(List<Scene> scenes, int stride) {
-        Map<ActionType, List<Integer>> byType = new java.util.EnumMap<>(ActionType.class);
+        Map<ActionType, List<Integer>> byType = new EnumMap<>(ActionType.class);
         for (int i = 0; i < scenes.size(); i++) {
             byType.computeIfAbsent(scenes.get(i).actionType(), type -> new ArrayList<>()).add(i);
         }
@@ -305,7 +309,7 @@ public final class RandomSearch {
 
     /** What decides the neighbours: all but k, selector, action weights and seed. */
     private static String searchKey(MatchConfig config) {
-        return config.metric() + "|" + new java.util.TreeMap<>(config.metricOptions()) + "|" + config.objectWeights().format()
+        return config.metric() + "|" + new TreeMap<>(config.metricOptions()) + "|" + config.objectWeights().format()
                 + "|" + config.transforms();
     }
 

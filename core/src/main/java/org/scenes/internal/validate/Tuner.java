@@ -2,10 +2,13 @@ package org.scenes.internal.validate;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
+import java.util.function.ToDoubleFunction;
 import java.util.function.UnaryOperator;
+import org.scenes.api.ActionType;
 import org.scenes.api.ObjectWeights;
 import org.scenes.api.PluginRegistry;
 import org.scenes.internal.scene.SceneFile;
@@ -29,7 +32,7 @@ public final class Tuner {
     public record Result(MatchConfig config, double score, Map<String, Double> figures, int evaluated) {
         /** A descent's end, with the figures of its best configuration's pooled report. */
         public static Result of(Descent descent, ValidationReport pooled, int evaluated) {
-            Map<String, Double> figures = new java.util.LinkedHashMap<>();
+            Map<String, Double> figures = new LinkedHashMap<>();
             Folds.figures().forEach((name, figure) -> figures.put(name, figure.applyAsDouble(pooled)));
             return new Result(descent.best(), descent.score(), figures, evaluated);
         }
@@ -60,7 +63,7 @@ public final class Tuner {
     private final List<RandomSearch.Tried> tried = new ArrayList<>();
 
     private final Folds.Protocol protocol;
-    private final java.util.function.ToDoubleFunction<ValidationReport> objective;
+    private final ToDoubleFunction<ValidationReport> objective;
 
     /** What the search maximises, over the decisions of all folds pooled. */
     public enum Objective {
@@ -136,8 +139,8 @@ public final class Tuner {
         tried.add(new RandomSearch.Tried(tried.size() + 1, config, 0, pooled.testScenes(), score, pooled.accuracy(),
                 pooled.directionAccuracy(), pooled.macroF1()));
         log.accept(String.format("%.4f  acc %.4f  dir %.4f  F1 %.4f  kicks %d/%d  %s", score, pooled.accuracy(),
-                pooled.directionAccuracy(), pooled.macroF1(), pooled.truePositives(org.scenes.api.ActionType.KICK),
-                pooled.support(org.scenes.api.ActionType.KICK), config.describe()));
+                pooled.directionAccuracy(), pooled.macroF1(), pooled.truePositives(ActionType.KICK),
+                pooled.support(ActionType.KICK), config.describe()));
         return score;
     }
 

@@ -2,9 +2,12 @@ package org.scenes.internal.validate;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Collections;
+import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 import org.scenes.api.Action;
 import org.scenes.api.ActionLabel;
 import org.scenes.api.ActionType;
@@ -146,12 +149,12 @@ public final class ValidationReport {
         String[][] majority = new String[labels.length][n];
         String[][] previous = new String[labels.length][n];
         for (ActionLabel label : labels) {
-            Map<String, Integer> counts = new java.util.TreeMap<>();
+            Map<String, Integer> counts = new TreeMap<>();
             for (Scene scene : train) {
                 counts.merge(label.of(scene.actions()), 1, Integer::sum);
             }
             String most = counts.entrySet().stream().max(Map.Entry.<String, Integer>comparingByValue()
-                    .thenComparing(Map.Entry.comparingByKey(java.util.Comparator.reverseOrder())))
+                    .thenComparing(Map.Entry.comparingByKey(Comparator.reverseOrder())))
                     .map(Map.Entry::getKey).orElse(label.of(List.of()));
             Arrays.fill(majority[label.ordinal()], most);
             for (int i = 0; i < n; i++) {
@@ -182,7 +185,7 @@ public final class ValidationReport {
      * rare actions are counted over all of them rather than averaged from a few per run. Its
      * training size is the mean of the runs'.
      */
-    public static ValidationReport pooled(java.util.List<ValidationReport> reports) {
+    public static ValidationReport pooled(List<ValidationReport> reports) {
         int total = reports.stream().mapToInt(r -> r.testScenes).sum();
         Action[] truth = new Action[total];
         Action[] predicted = new Action[total];
@@ -257,12 +260,12 @@ public final class ValidationReport {
 
     /** Each test scene's recorded actions, in test order. */
     public List<List<Action>> recorded() {
-        return java.util.Collections.unmodifiableList(truthActions);
+        return Collections.unmodifiableList(truthActions);
     }
 
     /** Each test scene's predicted actions, primary first (empty: none), in test order. */
     public List<List<Action>> predictions() {
-        return java.util.Collections.unmodifiableList(predictedActions);
+        return Collections.unmodifiableList(predictedActions);
     }
 
     /** Each test scene's decision time in nanoseconds, in test order. */
@@ -394,7 +397,7 @@ public final class ValidationReport {
 
     /** Test scenes by recorded class of {@code label}, most common first. */
     public Map<String, Integer> classCounts(ActionLabel label) {
-        Map<String, Integer> counts = new java.util.TreeMap<>();
+        Map<String, Integer> counts = new TreeMap<>();
         for (String value : truthLabels[label.ordinal()]) {
             counts.merge(value, 1, Integer::sum);
         }

@@ -1,5 +1,6 @@
 package org.scenes.internal.validate;
 
+import java.util.Arrays;
 import java.util.List;
 import java.util.SplittableRandom;
 import java.util.function.Supplier;
@@ -7,7 +8,9 @@ import java.util.stream.IntStream;
 import org.scenes.api.Action;
 import org.scenes.api.ActionLabel;
 import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionType;
 import org.scenes.api.Neighbour;
+import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
@@ -47,7 +50,7 @@ public final class Validator {
                 progress.run();
             }
         });
-        return ValidationReport.of(recognizer.knowledge().scenes(), test, java.util.Arrays.asList(predicted), nanos);
+        return ValidationReport.of(recognizer.knowledge().scenes(), test, Arrays.asList(predicted), nanos);
     }
 
     /**
@@ -70,7 +73,7 @@ public final class Validator {
             donor = nearest.get(0).scene();
         }
         Action neck = donor == null ? null : ActionLabel.neckAction(donor.actions());
-        if (neck == null || neck.equals(selected) || selected.type() == org.scenes.api.ActionType.TURN_NECK) {
+        if (neck == null || neck.equals(selected) || selected.type() == ActionType.TURN_NECK) {
             return List.of(selected);
         }
         return List.of(selected, neck);
@@ -78,7 +81,7 @@ public final class Validator {
 
     /** A whole run from a configuration: knowledge base from {@code train}, queries from {@code test}. */
     public static ValidationReport run(KnowledgeBase train, List<Scene> test, MatchConfig config,
-                                       org.scenes.api.PluginRegistry registry, boolean parallel, Runnable progress) {
+                                       PluginRegistry registry, boolean parallel, Runnable progress) {
         Recognizer recognizer = config.recognizer(train, registry, config.k());
         return run(recognizer, config.selectorFactory(registry), test, config.seed(), parallel, progress);
     }

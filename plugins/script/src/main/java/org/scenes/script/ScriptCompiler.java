@@ -15,6 +15,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.codehaus.groovy.control.CompilationFailedException;
 import org.codehaus.groovy.control.CompilerConfiguration;
 import org.codehaus.groovy.control.MultipleCompilationErrorsException;
@@ -36,7 +38,7 @@ final class ScriptCompiler {
     /** The Grape transform downloads dependencies named by {@code @Grab}; scripts never download. */
     private static final String GRAB_TRANSFORM = "groovy.grape.GrabAnnotationTransformation";
 
-    private static final java.util.regex.Pattern RECORD_ACCESS = java.util.regex.Pattern.compile(
+    private static final Pattern RECORD_ACCESS = Pattern.compile(
             "^Access to [\\w.$]+#(\\w+) is forbidden");
 
     private static final Map<Key, Class<? extends Script>> COMPILED = new ConcurrentHashMap<>();
@@ -158,7 +160,7 @@ final class ScriptCompiler {
 
     /** Scene types are Java records: Groovy refuses {@code scene.cycle}, which users write first. */
     private static String hint(String message) {
-        java.util.regex.Matcher access = RECORD_ACCESS.matcher(message);
+        Matcher access = RECORD_ACCESS.matcher(message);
         if (access.find()) {
             return message + " (scene values are Java records: read them with " + access.group(1) + "())";
         }

@@ -1,6 +1,7 @@
 package org.scenes.script;
 
 import groovy.lang.Script;
+import java.util.Locale;
 import org.codehaus.groovy.ast.ClassNode;
 import org.codehaus.groovy.ast.MethodNode;
 import org.codehaus.groovy.classgen.GeneratorContext;
@@ -86,7 +87,7 @@ enum ScriptShape {
                     return;
                 }
             }
-            String kind = shape.name().toLowerCase(java.util.Locale.ROOT);
+            String kind = shape.name().toLowerCase(Locale.ROOT);
             source.addError(new SyntaxException("a " + kind + " script must define the method " + shape.method
                     + (shape == METRIC ? ", or double[] encode(Scene scene) with double distance(double[] query, "
                     + "double[] stored, double bound)," : "") + " at its top level", 1, 1));

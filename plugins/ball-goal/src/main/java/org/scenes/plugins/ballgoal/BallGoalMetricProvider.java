@@ -41,7 +41,8 @@ public final class BallGoalMetricProvider implements MetricProvider {
         options.put("missing", "cost of a ball or goal seen in one scene only (default 10)");
         options.put("memory", "weight of the remembered previous scene's ball and goal (needs the memory transform; default 0)");
         options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
-        options.put("remembered", "cost added when the ball or goal is remembered (recall transform) in one scene and seen in the other (default 0: compared alike)");
+        options.put("remembered", "cost added when the ball or goal is remembered (recall transform) in one scene and seen"
+                + " in the other (default 0: compared alike)");
         options.put("index", "true: search an exact index of the distinct ball and goal keys; false: scan every scene (default true)");
         return options;
     }

@@ -2,6 +2,8 @@ package org.scenes.plugins.mirror;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import org.scenes.api.Action;
 import org.scenes.api.Cell;
 import org.scenes.api.Grid;
@@ -21,7 +23,7 @@ import org.scenes.api.SeenObject;
  */
 public final class Mirror {
     /** Mirrored flag and line names, made once each: mirror:match mirrors every query and what it finds. */
-    private static final java.util.Map<String, String> SWAPPED = new java.util.concurrent.ConcurrentHashMap<>();
+    private static final Map<String, String> SWAPPED = new ConcurrentHashMap<>();
 
     private Mirror() {
     }

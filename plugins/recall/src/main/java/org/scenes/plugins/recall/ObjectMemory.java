@@ -1,6 +1,7 @@
 package org.scenes.plugins.recall;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
@@ -10,6 +11,7 @@ import java.util.Set;
 import org.scenes.api.Action;
 import org.scenes.api.ActionType;
 import org.scenes.api.Grid;
+import org.scenes.api.ObjectKind;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneTransform;
 import org.scenes.api.SeenObject;
@@ -32,7 +34,8 @@ import org.scenes.api.SeenObject;
  * within the {@value #FEEL_DISTANCE} m the server senses around the player, but that the scene
  * does not hold, is forgotten: had it been there, the server would have reported it. Objects are
  * forgotten after {@code horizon} cycles unseen; until then a remembered object's confidence is
- * {@code 1 - (age + 1) / (horizon + 2)} (age 0 when an object vanished within a cycle, as while play is paused). The scene's own objects come first, the remembered ones after
+ * {@code 1 - (age + 1) / (horizon + 2)} (age 0 when an object vanished within a cycle, as while play is paused).
+ * The scene's own objects come first, the remembered ones after
  * them (so metrics that use the first ball listed use a seen one when there is one); a sequence
  * whose cycle goes back (a new game or file) starts with an empty memory.
  */
@@ -93,7 +96,7 @@ final class ObjectMemory implements SceneTransform {
 
     /** Remembers only objects that name one thing and whose place was reported. */
     private static String identityOf(SeenObject object) {
-        boolean anonymous = object.behind() || (object.kind() == org.scenes.api.ObjectKind.PLAYER
+        boolean anonymous = object.behind() || (object.kind() == ObjectKind.PLAYER
                 && object.uniformNumber() == 0);
         if (anonymous || Double.isNaN(object.distance()) || Double.isNaN(object.direction())) {
             return null;
@@ -114,7 +117,7 @@ final class ObjectMemory implements SceneTransform {
      * turn has happened yet.
      */
     static double observedTurn(Scene before, Scene after) {
-        Map<String, Double> directions = new java.util.HashMap<>();
+        Map<String, Double> directions = new HashMap<>();
         for (SeenObject object : before.objects()) {
             if (landmark(object)) {
                 directions.put(object.identity(), object.direction());
@@ -137,7 +140,7 @@ final class ObjectMemory implements SceneTransform {
 
     /** Flags and goals stay put, so a change of their direction is the player's own turn (and a little parallax). */
     private static boolean landmark(SeenObject object) {
-        return (object.kind() == org.scenes.api.ObjectKind.FLAG || object.kind() == org.scenes.api.ObjectKind.GOAL)
+        return (object.kind() == ObjectKind.FLAG || object.kind() == ObjectKind.GOAL)
                 && !object.remembered() && identityOf(object) != null;
     }
 
