@@ -85,6 +85,7 @@ final class ConvertCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         Grid grid = gridOptions.grid();
+        Limits.threads("--threads", threads);
         if (output.file != null) {
             OutputPaths.checkFile("-o", output.file, logs);
         } else {

@@ -53,10 +53,7 @@ final class ExperimentCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        int workers = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
-        if (workers < 1) {
-            throw new UsageException("--threads must be at least 1, not " + workers);
-        }
+        int workers = Limits.threads("--threads", threads == null ? Runtime.getRuntime().availableProcessors() : threads);
         Sweep sweep = sweepOptions.load();
         List<SceneFile> files = read(sweep.data());
         PluginRegistry registry = top.global.registry();

@@ -56,6 +56,12 @@ final class ScenesCommand implements Runnable {
         PrintWriter err = commandLine.getErr();
         boolean verbose = parseResult.hasMatchedOption("--verbose")
                 || (parseResult.subcommand() != null && anyVerbose(parseResult));
+        if (Limits.outOfMemory(e) != null) {
+            // a worker thread's OutOfMemoryError, wrapped: the same one line as the main thread's
+            err.println("scenes: " + Limits.outOfMemoryMessage());
+            err.flush();
+            return ExitCodes.FAILURE;
+        }
         err.println("scenes: " + printable(message(e)));
         if (verbose) {
             e.printStackTrace(err);

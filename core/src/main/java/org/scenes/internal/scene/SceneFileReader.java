@@ -272,6 +272,10 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         expect(start, JsonToken.START_ARRAY, "an array of objects");
         List<SeenObject> objects = new ArrayList<>();
         while (json.nextToken() != JsonToken.END_ARRAY) {
+            if (objects.size() == SceneValues.MAX_OBJECTS) {
+                throw error("a scene holds at most " + SceneValues.MAX_OBJECTS + " objects (a see of the soccer server"
+                        + " lists fewer than 100); is this a scene file?");
+            }
             objects.add(readObject(json.currentToken()));
         }
         return objects;
@@ -304,13 +308,13 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
                 case "unum" -> unum = intValue(value);
                 case "goalie" -> goalie = bool(value);
                 case "relation" -> relation = parseEnum(value, Relation::fromKey);
-                case "dist" -> distance = number(value);
-                case "dir" -> direction = number(value);
-                case "distChange" -> distanceChange = number(value);
-                case "dirChange" -> directionChange = number(value);
-                case "bodyFacing" -> bodyFacing = number(value);
-                case "headFacing" -> headFacing = number(value);
-                case "pointDir" -> pointing = number(value);
+                case "dist" -> distance = inRange(field, number(value), 0, SceneValues.MAX_DISTANCE);
+                case "dir" -> direction = inRange(field, number(value), -SceneValues.MAX_DIRECTION, SceneValues.MAX_DIRECTION);
+                case "distChange" -> distanceChange = inRange(field, number(value), -SceneValues.MAX_CHANGE, SceneValues.MAX_CHANGE);
+                case "dirChange" -> directionChange = inRange(field, number(value), -SceneValues.MAX_CHANGE, SceneValues.MAX_CHANGE);
+                case "bodyFacing" -> bodyFacing = inRange(field, number(value), -SceneValues.MAX_DIRECTION, SceneValues.MAX_DIRECTION);
+                case "headFacing" -> headFacing = inRange(field, number(value), -SceneValues.MAX_DIRECTION, SceneValues.MAX_DIRECTION);
+                case "pointDir" -> pointing = inRange(field, number(value), -SceneValues.MAX_DIRECTION, SceneValues.MAX_DIRECTION);
                 case "mark" -> {
                     String text = text(value);
                     if (!text.equals("t") && !text.equals("k")) {
@@ -350,6 +354,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
             double[] parameters = {Double.NaN, Double.NaN};
             List<String> fields = new ArrayList<>();
             List<Double> values = new ArrayList<>();
+            List<String> notNumbers = new ArrayList<>();
             while (json.nextToken() == JsonToken.FIELD_NAME) {
                 String field = json.currentName();
                 JsonToken value = json.nextToken();
@@ -359,13 +364,23 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
                     bool(value);
                 } else if (value.isNumeric()) {
                     fields.add(field);
-                    values.add(json.getDoubleValue());
+                    values.add(inRange(field, json.getDoubleValue(), -SceneValues.MAX_PARAMETER, SceneValues.MAX_PARAMETER));
                 } else {
+                    notNumbers.add(field + "' is " + describe(value));
                     json.skipChildren();
                 }
             }
             if (type == null) {
                 throw error("an action needs a 'type'");
+            }
+            for (String notNumber : notNumbers) {
+                String field = notNumber.substring(0, notNumber.indexOf('\''));
+                for (int i = 0; i < type.parameterCount(); i++) {
+                    if (type.parameter(i).equals(field)) {
+                        // a parameter of another type would be dropped silently: a wrong file, not a missing value
+                        throw error("action '" + type.key() + "': '" + notNumber + ", not a number");
+                    }
+                }
             }
             for (int i = 0; i < fields.size(); i++) {
                 int index = parameterIndex(type, fields.get(i));
@@ -415,6 +430,15 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
             throw error("expected a number but found " + describe(value));
         }
         return json.getDoubleValue();
+    }
+
+    /** A scene's number: finite and within what the soccer server can send. */
+    private double inRange(String field, double value, double lowest, double highest) {
+        if (!(value >= lowest && value <= highest)) {
+            throw error("'" + field + "' must be a finite number from " + SceneValues.format(lowest) + " to "
+                    + SceneValues.format(highest) + ", not " + value);
+        }
+        return value;
     }
 
     private boolean bool(JsonToken value) {

@@ -192,6 +192,10 @@ public final class SceneFileWriter implements AutoCloseable {
         if (Double.isNaN(value)) {
             return;
         }
+        if (Double.isInfinite(value)) {
+            // JSON has no infinity: written as a string, the file would be one its reader refuses
+            throw new IllegalArgumentException("cannot write '" + field + "' = " + value + ": scene values are finite");
+        }
         // whole numbers without ".0"; -0 keeps its sign, which the server's "-0" carries, as "-0.0"
         json.writeFieldName(fields.computeIfAbsent(field, SerializedString::new));
         if (value == Math.rint(value) && Math.abs(value) < 1e15

@@ -60,28 +60,69 @@ class SceneFileRoundTripTest {
     @Test
     void numbersAreWrittenAsJavaWritesThemAndReadBackEqual() throws IOException {
         // tenths take a shortcut of their own: the text must be Double.toString's all the same
+        // (within what a scene may hold: distances 0 to 1000 m, changes up to 10,000 either way)
         java.util.Random random = new java.util.Random(7);
-        List<Double> values = new java.util.ArrayList<>(List.of(0.1, -0.1, 0.5, -0.5, 99.9, 123456.7, -999999.9,
-                1234567.8, 0.30000000000000004, 1e-5, 2.05, -12.34, 0.001));
+        List<Double> values = new java.util.ArrayList<>(List.of(0.1, -0.1, 0.5, -0.5, 99.9, 9999.9, -9999.9,
+                1234.5, 0.30000000000000004, 1e-5, 2.05, -12.34, 0.001));
         for (int i = 0; i < 2000; i++) {
             values.add(Math.rint(random.nextGaussian() * 1e4) / 10);
             values.add(random.nextGaussian() * 100);
         }
         List<SeenObject> objects = new java.util.ArrayList<>();
         for (double value : values) {
-            objects.add(new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, value, 1, value, Double.NaN,
-                    Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(3, 1)));
+            objects.add(new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, distance(value), 1, value,
+                    Double.NaN, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(3, 1)));
         }
-        Scene scene = new Scene(1, SceneFixtures.OBSERVER, objects, List.of(Action.turn(1)));
+        List<Scene> scenes = new java.util.ArrayList<>();
+        for (int from = 0; from < objects.size(); from += 200) { // a scene holds at most 256 objects
+            scenes.add(new Scene(from, SceneFixtures.OBSERVER, objects.subList(from, Math.min(from + 200, objects.size())),
+                    List.of(Action.turn(1))));
+        }
         Path file = dir.resolve("numbers.json");
-        SceneFileWriter.write(file, new SceneFile(header, List.of(scene)));
+        SceneFileWriter.write(file, new SceneFile(header, scenes));
         String text = Files.readString(file);
         for (double value : values) {
-            String written = value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
-            assertTrue(text.contains("\"dist\":" + written + ",\"dir\":1,\"distChange\":" + written + ","),
-                    value + " written as " + written);
+            assertTrue(text.contains("\"dist\":" + written(distance(value)) + ",\"dir\":1,\"distChange\":" + written(value) + ","),
+                    value + " written as " + written(value));
         }
-        assertEquals(List.of(scene), SceneFileReader.read(file).scenes());
+        assertEquals(scenes, SceneFileReader.read(file).scenes());
+    }
+
+    private static double distance(double value) {
+        return Math.abs(value) % 1000;
+    }
+
+    private static String written(double value) {
+        return value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
+    }
+
+    @Test
+    void anInfiniteValueIsNeverWrittenAsAString() {
+        SeenObject ball = new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, 3, 0,
+                Double.POSITIVE_INFINITY, 0, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(3, 0));
+        Scene scene = new Scene(1, SceneFixtures.OBSERVER, List.of(ball), List.of(Action.turn(1)));
+        Path file = dir.resolve("infinite.json");
+        IllegalArgumentException error = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> SceneFileWriter.write(file, new SceneFile(header, List.of(scene))));
+        assertTrue(error.getMessage().contains("'distChange' = Infinity"), error.getMessage());
+        assertTrue(Files.notExists(file), "nothing written");
+    }
+
+    @Test
+    void aSceneOfMoreObjectsThanASeeCanHoldIsRefusedByTheReader() throws IOException {
+        List<SeenObject> objects = new java.util.ArrayList<>();
+        for (int i = 0; i < 257; i++) {
+            objects.add(new SeenObject(ObjectKind.FLAG, "f c", "", 0, false, Relation.NONE, 10, 0,
+                    Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(10, 0)));
+        }
+        Path file = dir.resolve("crowded.json");
+        SceneFileWriter.write(file, new SceneFile(header, List.of(
+                new Scene(1, SceneFixtures.OBSERVER, objects.subList(0, 256), List.of(Action.turn(1))),
+                new Scene(2, SceneFixtures.OBSERVER, objects, List.of(Action.turn(1))))));
+        SceneFileException error = org.junit.jupiter.api.Assertions.assertThrows(SceneFileException.class,
+                () -> SceneFileReader.read(file));
+        assertTrue(error.getMessage().contains("crowded.json:6") && error.getMessage().contains("at most 256 objects"),
+                error.getMessage());
     }
 
     @Test
