@@ -111,13 +111,18 @@ final class ProxyCommand implements Callable<Integer> {
         } catch (UnknownHostException e) {
             throw new UsageException("--bind: unknown host " + bind);
         }
-        ProxyConfig config = new ProxyConfig(bindAddress, routes, out, logFormat(), seconds(idleTimeout),
-                seconds(endGrace), logBufferMb << 20, maxClients, line -> {
-                    synchronized (console) {
-                        console.println(line);
-                        console.flush();
-                    }
-                });
+        ProxyConfig config;
+        try {
+            config = new ProxyConfig(bindAddress, routes, out, logFormat(), seconds(idleTimeout),
+                    seconds(endGrace), logBufferMb << 20, maxClients, line -> {
+                        synchronized (console) {
+                            console.println(line);
+                            console.flush();
+                        }
+                    });
+        } catch (IllegalArgumentException e) {
+            throw new UsageException(e.getMessage());
+        }
         LogProxy proxy = LogProxy.start(config);
         CountDownLatch stopped = new CountDownLatch(1);
         java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();

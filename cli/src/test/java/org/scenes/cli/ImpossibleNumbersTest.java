@@ -95,4 +95,30 @@ class ImpossibleNumbersTest {
         assertEquals(ExitCodes.FAILURE, cli.run("validate", "--train", good, "--test", good, "--metric", "script:" + negative));
         oneLine("negative.groovy", "returned -1.0");
     }
+
+    // ---- issue 31.8: messages -----------------------------------------------------------------
+
+    @Test
+    void aNewlineInAFileNameDoesNotBreakTheOneLine() throws Exception {
+        Path file = Files.writeString(dir.resolve("new\nline.json"), "x");
+        assertEquals(ExitCodes.FAILURE, cli.run("validate", "--train", file, "--self"));
+        assertEquals(1, cli.err().strip().lines().count(), cli.err());
+        oneLine("new\\x0Aline.json");
+    }
+
+    @Test
+    void jsonErrorsNameNoLibrarySwitches() throws Exception {
+        Path file = Files.writeString(dir.resolve("nan.json"), HEADER + "{\"cycle\":NaN}]}\n");
+        assertEquals(ExitCodes.FAILURE, cli.run("validate", "--train", file, "--self"));
+        oneLine("nan.json:5", "malformed JSON", "'NaN'");
+        assertFalse(cli.err().contains("JsonReadFeature") || cli.err().contains("enable"), cli.err());
+    }
+
+    @Test
+    void aNegativeValueAttachedToAnOptionIsNotAnUnknownOption() throws Exception {
+        Path log = Files.writeString(dir.resolve("x.lsf"), "(init l 1 before_kick_off)\n(see 0 ((b) 1 2))\n(dash 100)\n");
+        assertEquals(ExitCodes.USAGE, cli.run("convert", log, "--bounds=-1,5", "-o", dir.resolve("x.json")));
+        assertTrue(cli.err().contains("option '--bounds' expects a value, not '-1,5'"), cli.err());
+        assertFalse(cli.err().contains("Unknown option"), cli.err());
+    }
 }

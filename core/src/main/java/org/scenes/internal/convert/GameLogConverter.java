@@ -186,10 +186,10 @@ public final class GameLogConverter {
 
     /** One show and what was sent around it, handed to every worker. */
     private record Step(GameFrame frame, long index, List<Sent> before, List<Sent> at, boolean seesDue,
-                        List<Player> players, Set<Player> synchSees) {
+                        List<Player> players, Set<Player> synchSees, boolean commandsCover) {
     }
 
-    private static final Step END = new Step(null, 0, List.of(), List.of(), false, List.of(), Set.of());
+    private static final Step END = new Step(null, 0, List.of(), List.of(), false, List.of(), Set.of(), false);
 
     /** A rebuilt player: its log being converted and how it sees; touched by its worker only once started. */
     private static final class Player {
@@ -322,7 +322,9 @@ public final class GameLogConverter {
                 if (player == null || player.worker != this) {
                     continue;
                 }
-                checkAgreement(player, state);
+                if (step.commandsCover()) {
+                    checkAgreement(player, state);
+                }
                 line(player, "(sense_body " + time + ")");
                 // this show's sees and commands belong to the next step
                 long next = step.index() + 1;
@@ -629,7 +631,9 @@ public final class GameLogConverter {
             Set<Player> synchSees = synchSees(frame);
             List<Sent> at = new ArrayList<>();
             collect(at, time, stoppage, false);
-            hand(new Step(frame, step, before, at, !mode.equals("time_over"), starting, synchSees));
+            // past the end of a cut command log nothing was sent as far as it tells: not evidence of another game
+            boolean covered = !commandsEnded || time <= lastCommandTime;
+            hand(new Step(frame, step, before, at, !mode.equals("time_over"), starting, synchSees, covered));
             lastTime = time;
             lastStoppage = stoppage;
             lastStep = step;
@@ -1086,7 +1090,7 @@ public final class GameLogConverter {
                 throw new LogException(gameLog, 0, "no show in the game log: nothing to rebuild", null);
             }
             decide(Integer.MAX_VALUE);
-            submit(new Step(null, 0, after, List.of(), false, List.of(), Set.of()));
+            submit(new Step(null, 0, after, List.of(), false, List.of(), Set.of(), false));
             stopWorkers();
             if (firstBeyond != null) {
                 warnings.add(commands.file() + ":" + firstBeyond.line() + ": the command log goes on to cycle "
