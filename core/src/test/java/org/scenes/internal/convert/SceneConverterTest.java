@@ -254,14 +254,17 @@ class SceneConverterTest {
 
     @Test
     void longLinesAndCrLfAreRead() throws IOException {
+        // a line of about 45 KB: 250 objects (a see holds at most 256) with long-written numbers
         StringBuilder see = new StringBuilder("(see 4");
-        for (int i = 0; i < 3000; i++) {
-            see.append(" ((f c) 10 ").append(i % 90).append(')');
+        for (int i = 0; i < 250; i++) {
+            see.append(" ((f c) 10.").append("0".repeat(170)).append(' ').append(i % 90).append(')');
         }
         see.append(')');
+        assertTrue(see.length() > 45_000);
         Path file = dir.resolve("long.lsf");
         Files.writeString(file, INIT + "\r\n" + see + "\r\n(dash 1)\r\n");
         convert(file);
-        assertEquals(3000, scenes.get(0).objects().size());
+        assertEquals(250, scenes.get(0).objects().size());
+        assertEquals(10, scenes.get(0).objects().get(0).distance(), 0);
     }
 }
