@@ -82,8 +82,16 @@ final class ProxyCommand implements Callable<Integer> {
             description = "Clients served at once; datagrams from further new addresses are dropped. Default: ${DEFAULT-VALUE}.")
     int maxClients;
 
+    @Option(names = "--games", paramLabel = "N",
+            description = "Stop by itself once N games have ended (every client gone after time_over or bye), so a recipe"
+                    + " finishes on its own. Default: run until SIGINT/SIGTERM.")
+    Integer games;
+
     @Override
     public Integer call() throws IOException, InterruptedException {
+        if (games != null && games < 1) {
+            throw new UsageException("--games must be at least 1, not " + games);
+        }
         PrintWriter console = spec.commandLine().getOut();
         InetSocketAddress playerServer = address("--server", server, -1);
         List<Route> routes = new ArrayList<>();
@@ -158,7 +166,13 @@ final class ProxyCommand implements Callable<Integer> {
         }
         console.printf("logging to %s (%s); Ctrl-C to stop%n", out, format);
         console.flush();
-        stopped.await();
+        while (!stopped.await(200, java.util.concurrent.TimeUnit.MILLISECONDS)) {
+            if (games != null && proxy.gamesEnded() >= games) {
+                console.printf("%d game%s ended: stopping%n", games, games == 1 ? "" : "s");
+                new Thread(stop, "scenes-proxy-games-ended").start();
+                stopped.await();
+            }
+        }
         return clean.get() ? ExitCodes.OK : ExitCodes.FAILURE;
     }
 

@@ -53,6 +53,8 @@ final class Forwarder implements Runnable {
     final AtomicLong toClients = new AtomicLong();
     final AtomicLong notForwarded = new AtomicLong();
     final AtomicLong opened = new AtomicLong();
+    /** Times the last client went away after its game ended (time_over or bye): games played through. */
+    final AtomicLong gamesEnded = new AtomicLong();
 
     Forwarder(ProxyConfig config, LogRing ring, LongSupplier clock) throws IOException {
         this.ring = ring;
@@ -298,6 +300,9 @@ final class Forwarder implements Runnable {
 
     private void close(Session session, String reason) {
         sessions.remove(session);
+        if (sessions.isEmpty() && session.ending) {
+            gamesEnded.incrementAndGet();
+        }
         session.listener.sessions.remove(session.client);
         int unsent = session.outbox.pendingCount();
         if (unsent > 0) {

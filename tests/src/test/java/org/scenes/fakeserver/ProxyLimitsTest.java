@@ -128,4 +128,23 @@ class ProxyLimitsTest {
             assertEquals(List.of(), files.filter(f -> f.getFileName().toString().endsWith(".part")).toList());
         }
     }
+
+    /** Issue 31.7: the proxy knows when a game has been played through, so it can end with it. */
+    @Test
+    void aGameEndsWhenItsLastClientGoesAfterTimeOver() throws Exception {
+        start();
+        PlayerClient first = client();
+        PlayerClient second = client();
+        assertTrue(first.init("(init A (version 9))", WAIT).startsWith("(init "));
+        assertTrue(second.init("(init B (version 9))", WAIT).startsWith("(init "));
+        for (FakeSoccerServer.Client client : server.clients()) {
+            client.send("(hear 3000 referee time_over)\0".getBytes(java.nio.charset.StandardCharsets.UTF_8));
+        }
+        first.send("(bye)");
+        long deadline = System.currentTimeMillis() + WAIT;
+        while (proxy.gamesEnded() == 0 && System.currentTimeMillis() < deadline) {
+            Thread.sleep(20); // polling the condition, bounded
+        }
+        assertEquals(1, proxy.gamesEnded(), "events " + events);
+    }
 }
