@@ -91,24 +91,26 @@ public final class ImitationTeam {
                                      Function<KnowledgeBase, Recognizer> recognizers, Knowledge knowledge) {
         Map<Integer, List<Path>> byUnum = new TreeMap<>();
         Map<Integer, Boolean> goalies = new TreeMap<>();
+        Map<Integer, List<Action>> moves = new TreeMap<>();
         for (Path file : files) {
-            SceneSource source;
             try (SceneFileReader reader = SceneFileReader.open(file)) {
-                source = reader.header().source();
-            }
-            int unum = source.observer().uniformNumber();
-            if (unum > 0) {
-                byUnum.computeIfAbsent(unum, u -> new ArrayList<>()).add(file);
-                goalies.merge(unum, source.goalie(), Boolean::logicalOr);
+                SceneSource source = reader.header().source();
+                int unum = source.observer().uniformNumber();
+                if (unum > 0) {
+                    byUnum.computeIfAbsent(unum, u -> new ArrayList<>()).add(file);
+                    goalies.merge(unum, source.goalie(), Boolean::logicalOr);
+                    // the recorded moves, before any transform (a mirror would add moves never sent)
+                    moves.computeIfAbsent(unum, u -> new ArrayList<>()).addAll(kickOffMoves(() -> reader));
+                }
             }
         }
         Recognizer team = recognizers.apply(KnowledgeBase.load(files, transforms));
         Map<Integer, Counterpart> counterparts = new TreeMap<>();
         for (Map.Entry<Integer, List<Path>> entry : byUnum.entrySet()) {
-            KnowledgeBase own = KnowledgeBase.load(entry.getValue(), transforms);
-            Recognizer recognizer = knowledge == Knowledge.COUNTERPART ? recognizers.apply(own) : null;
-            counterparts.put(entry.getKey(), new Counterpart(entry.getKey(), goalies.get(entry.getKey()),
-                    recognizer, kickOffMoves(own.scenes())));
+            int unum = entry.getKey();
+            Recognizer recognizer = knowledge == Knowledge.COUNTERPART
+                    ? recognizers.apply(KnowledgeBase.load(entry.getValue(), transforms)) : null;
+            counterparts.put(unum, new Counterpart(unum, goalies.get(unum), recognizer, moves.get(unum)));
         }
         return new ImitationTeam(team, counterparts, knowledge);
     }
