@@ -327,7 +327,7 @@ public final class LivePlayer implements Runnable {
             double[] spot = FORMATION[(Math.max(1, unum) - 1) % FORMATION.length];
             kickOffMove = "(move " + format(spot[0]) + " " + format(spot[1]) + ")";
             send(kickOffMove);
-        } else if (kickOffMove != null && movesOwed > 0) {
+        } else if (kickOffMove != null && movesOwed > 0 && brain.repeatsKickOffMove()) {
             movesOwed--;
             send(kickOffMove);
         }

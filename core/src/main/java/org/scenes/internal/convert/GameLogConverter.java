@@ -80,6 +80,11 @@ public final class GameLogConverter {
     @FunctionalInterface
     public interface Output {
         SceneConverter.SceneSink open(Observer observer) throws IOException;
+
+        /** The same for a player the game log marks as its team's goalie or not. */
+        default SceneConverter.SceneSink open(Observer observer, boolean goalie) throws IOException {
+            return open(observer);
+        }
     }
 
     /** One player's conversion. */
@@ -104,6 +109,7 @@ public final class GameLogConverter {
     private final int threads;
     private boolean commandsBeforeSee;
     private SeePhase seePhase = SeePhase.INFER;
+    private boolean keepUnanswered;
 
     /**
      * @param grid and {@code pairing} make the scenes, as for player logs
@@ -130,6 +136,12 @@ public final class GameLogConverter {
      */
     public GameLogConverter commandsBeforeSee(boolean before) {
         this.commandsBeforeSee = before;
+        return this;
+    }
+
+    /** Unanswered sees become scenes without action, as {@link SceneConverter#keepUnanswered}. */
+    public GameLogConverter keepUnanswered(boolean keep) {
+        this.keepUnanswered = keep;
         return this;
     }
 
@@ -199,6 +211,8 @@ public final class GameLogConverter {
         final Worker worker;
         final int version;
         final Fading fading;
+        /** Whether the game log marks the player as its team's goalie (at its first show). */
+        boolean goalie;
         /** Set by the reading thread when the player's first show is handed out. */
         boolean started;
         SceneConverter.Feed feed;
@@ -235,7 +249,8 @@ public final class GameLogConverter {
     /** Rebuilds and converts its players, step by step, on a thread of its own (or the caller's). */
     private final class Worker implements Runnable {
         final Run run;
-        final SceneConverter converter = new SceneConverter(grid, pairing, false, line -> { });
+        final SceneConverter converter = new SceneConverter(grid, pairing, false, line -> { })
+                .keepUnanswered(keepUnanswered);
         final BlockingQueue<Step> queue;
         final StringBuilder text = new StringBuilder(4096);
         /** This worker's own: a parser serves one thread. */
@@ -383,7 +398,8 @@ public final class GameLogConverter {
         void start(Player player, GameFrame frame) throws IOException {
             player.feed = converter.feed(Path.of(run.gameLog + "#" + player.key), player.sink);
             Observer o = player.observer;
-            line(player, "(init " + o.team() + " (version " + Math.max(player.version, 3) + "))");
+            line(player, "(init " + o.team() + " (version " + Math.max(player.version, 3) + ")"
+                    + (player.goalie ? " (goalie)" : "") + ")");
             line(player, "(init " + o.side().letter() + ' ' + o.uniformNumber() + ' ' + frame.playMode() + ")");
             if (player.synchSee) {
                 line(player, "(ok synch_see)");
@@ -1040,8 +1056,10 @@ public final class GameLogConverter {
                         // cones only synchronous vision has (60 and 120 degrees): a log without the init
                         || Math.abs(factor - 2.0 / 3) < 1e-6 || Math.abs(factor - 4.0 / 3) < 1e-6;
                 Phase phase = synch ? Phase.FIRST_STEP : seeOffset(key, frame.time(), state);
-                player = new Player(observer, key, output.open(observer), workers.get(nextWorker++ % threads),
+                boolean goalie = (state.state() & PlayerState.GOALIE) != 0;
+                player = new Player(observer, key, output.open(observer, goalie), workers.get(nextWorker++ % threads),
                         version, synch, phase.offset(), fading.forObserver(key));
+                player.goalie = goalie;
                 if (!phase.told()) {
                     undecided.add(new Undecided(player, frame.time(), phase.candidates()));
                 }

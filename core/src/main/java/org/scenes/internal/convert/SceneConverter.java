@@ -33,7 +33,7 @@ import org.scenes.internal.protocol.VisualObject;
  * Turns player logs into scenes (the thesis' LogToScenes, rules in docs/conversion.md): a scene is
  * a {@code see} with the actions the player sent after it and before the next different
  * {@code see}; identical repeated {@code see}s (play paused) collapse into one; scenes without
- * action and actions without {@code see} are dropped and counted. For a player that acts every
+ * action (unless {@link #keepUnanswered kept}) and actions without {@code see} are dropped and counted. For a player that acts every
  * cycle on synchronous vision ({@link Pairing}), a scene is a cycle (from one {@code sense_body} to
  * the next) with the latest {@code see} and its age. A log line may hold several messages. The
  * live agent uses {@link #seenObjects} for the same see-to-objects step.
@@ -46,6 +46,25 @@ public final class SceneConverter {
     @FunctionalInterface
     public interface SceneSink {
         void accept(Scene scene) throws IOException;
+
+        /** Told, before the player's first scene, that its init asked to play as goalie. */
+        default void goalie() {
+        }
+
+        /** A sink writing scenes to {@code scenes} and telling {@code goalie} of the goalie's init. */
+        static SceneSink of(SceneSink scenes, Runnable goalie) {
+            return new SceneSink() {
+                @Override
+                public void accept(Scene scene) throws IOException {
+                    scenes.accept(scene);
+                }
+
+                @Override
+                public void goalie() {
+                    goalie.run();
+                }
+            };
+        }
     }
 
     /** How often (in lines) progress is reported. */
@@ -56,6 +75,8 @@ public final class SceneConverter {
     private final boolean strict;
     private final Consumer<MalformedLine> warnings;
     private final MessageParser parser = new MessageParser();
+    /** Whether sees the player left unanswered become scenes without action (else they are dropped). */
+    private boolean keepUnanswered;
 
     /**
      * @param grid the grid every object's cell is computed with
@@ -79,6 +100,16 @@ public final class SceneConverter {
 
     public Grid grid() {
         return grid;
+    }
+
+    /**
+     * Whether a see the player left unanswered (no action before the next different see; per
+     * cycle, a cycle without action) becomes a scene without action, a learnable "no action",
+     * rather than being dropped and counted ({@link DropReason#NO_ACTION}, the default).
+     */
+    public SceneConverter keepUnanswered(boolean keep) {
+        this.keepUnanswered = keep;
+        return this;
     }
 
     /** Converts one log file (any {@link LogFormat}, plain or gzip). */
@@ -282,6 +313,9 @@ public final class SceneConverter {
             } else if (message instanceof InitRequest init) {
                 team = init.team();
                 observer = new Observer(team, side, uniformNumber);
+                if (init.goalie()) {
+                    sink.goalie();
+                }
             } else if (message instanceof InitReply reply) {
                 if (reply.head().equals("reconnect")) {
                     finish();
@@ -404,10 +438,10 @@ public final class SceneConverter {
                 return;
             }
             int cycle = perCycle ? openCycle : pending.time();
-            if (primary == null && secondary == null) {
+            if (primary == null && secondary == null && !keepUnanswered) {
                 report.drop(DropReason.NO_ACTION);
             } else {
-                List<Action> actions = primary == null ? List.of(secondary)
+                List<Action> actions = primary == null ? secondary == null ? List.of() : List.of(secondary)
                         : secondary == null ? List.of(primary) : List.of(primary, secondary);
                 Scene scene = new Scene(cycle, pendingObserver, seenObjects(pending, pendingObserver, grid), actions,
                         null, perCycle ? openAge : 0);

@@ -184,16 +184,19 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         expect(start, JsonToken.START_OBJECT, "a source object");
         String log = "";
         Observer observer = Observer.UNKNOWN;
+        boolean goalie = false;
         while (json.nextToken() == JsonToken.FIELD_NAME) {
             String field = json.currentName();
             JsonToken value = json.nextToken();
             if ("log".equals(field)) {
                 log = text(value);
+            } else if ("goalie".equals(field)) {
+                goalie = bool(value);
             } else {
                 observer = readObserverField(observer, field, value);
             }
         }
-        return new SceneSource(log, observer);
+        return new SceneSource(log, observer, goalie);
     }
 
     private Observer readObserverField(Observer observer, String field, JsonToken value) throws IOException {

@@ -89,6 +89,9 @@ public final class SceneFileWriter implements AutoCloseable {
         json.writeObjectFieldStart("source");
         json.writeStringField("log", header.source().log());
         writeObserverFields(header.source().observer());
+        if (header.source().goalie()) {
+            json.writeBooleanField("goalie", true);
+        }
         json.writeEndObject();
         json.writeRaw('\n');
         json.writeArrayFieldStart("scenes");

@@ -69,6 +69,42 @@ class SceneConverterTest {
     }
 
     @Test
+    void unansweredSeesAreKeptAsScenesWithoutActionWhenAsked() throws IOException {
+        Path file = log("wait.lsf", INIT, REPLY,
+                "(see 1 ((b) 10 0))", "(dash 80)",
+                "(see 2 ((b) 9 0))", "(sense_body 2 (view_mode high normal))",
+                "(see 3 ((b) 8 0))", "(turn_neck 10)",
+                "(see 4 ((b) 7 0))");
+        ConversionReport kept = new SceneConverter(Grid.DEFAULT, false, warnings::add).keepUnanswered(true)
+                .convert(file, scenes::add);
+        assertEquals(List.of(1, 2, 3, 4), scenes.stream().map(Scene::cycle).toList());
+        assertEquals(List.of(), scenes.get(1).actions(), "the teacher left see 2 unanswered");
+        assertEquals(ActionType.NONE, scenes.get(3).actionType());
+        assertEquals(List.of(Action.turnNeck(10)), scenes.get(2).actions());
+        assertEquals(4, kept.scenes());
+        assertEquals(0, kept.dropped(DropReason.NO_ACTION));
+        assertEquals(2L, kept.actions().get(ActionType.NONE));
+
+        scenes.clear();
+        ConversionReport dropped = convert(file);
+        assertEquals(List.of(1, 3), scenes.stream().map(Scene::cycle).toList(), "the default drops them as before");
+        assertEquals(2, dropped.dropped(DropReason.NO_ACTION));
+    }
+
+    @Test
+    void theGoaliesInitIsToldToTheSinkBeforeItsFirstScene() throws IOException {
+        List<String> told = new ArrayList<>();
+        SceneConverter.SceneSink sink = SceneConverter.SceneSink.of(scene -> told.add("scene"), () -> told.add("goalie"));
+        new SceneConverter(Grid.DEFAULT, false, warnings::add).convert(log("g.lsf", "(init Carleton (version 9) (goalie))",
+                "(init l 1 before_kick_off)", "(see 1 ((b) 10 0))", "(catch 0)", "(see 2 ((b) 9 0))"), sink);
+        assertEquals(List.of("goalie", "scene"), told);
+        told.clear();
+        new SceneConverter(Grid.DEFAULT, false, warnings::add).convert(log("f.lsf", INIT, REPLY,
+                "(see 1 ((b) 10 0))", "(dash 10)", "(see 2 ((b) 9 0))"), sink);
+        assertEquals(List.of("scene"), told);
+    }
+
+    @Test
     void identicalRepeatedSeesCollapseAndCollectTheirActions() throws IOException {
         ConversionReport report = convert(log("paused.lsf", INIT, REPLY,
                 "(see 0 ((b) 10 0))", "(dash 50)", "(see 0 ((b) 10 0))", "(turn_neck 20)", "(see 0 ((b) 10 0))",

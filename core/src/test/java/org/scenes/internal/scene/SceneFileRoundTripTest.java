@@ -44,6 +44,24 @@ class SceneFileRoundTripTest {
     }
 
     @Test
+    void theGoalieFlagAndScenesWithoutActionSurviveAndOldFilesReadAsNotTheGoalie() throws IOException {
+        SceneFileHeader goalie = SceneFileHeader.of(grid, new SceneSource("Carleton_1.lsf.gz", SceneFixtures.OBSERVER, true));
+        Scene unanswered = new Scene(8, SceneFixtures.OBSERVER, List.of(), List.of());
+        Path file = dir.resolve("goalie.json");
+        SceneFileWriter.write(file, new SceneFile(goalie, List.of(unanswered)));
+        assertTrue(Files.readString(file).contains("\"goalie\":true"));
+        SceneFile read = SceneFileReader.read(file);
+        assertTrue(read.header().source().goalie());
+        assertEquals(List.of(unanswered), read.scenes());
+        assertEquals(ActionType.NONE, read.scenes().get(0).actionType());
+
+        Path old = dir.resolve("old.json");
+        SceneFileWriter.write(old, new SceneFile(header, List.of(unanswered)));
+        assertFalse(Files.readString(old).contains("goalie"), "not written when false, as before it existed");
+        assertFalse(SceneFileReader.read(old).header().source().goalie());
+    }
+
+    @Test
     void seeAgeAndTheTackleFoulFlagSurviveAndOldFilesReadAsAgeZero() throws IOException {
         Scene aged = new Scene(8, SceneFixtures.OBSERVER, List.of(), List.of(Action.tackle(30, true)), null, 1);
         Scene fresh = new Scene(9, SceneFixtures.OBSERVER, List.of(), List.of(Action.tackle(-20, false)));
