@@ -95,8 +95,11 @@ final class ConvertCommand implements Callable<Integer> {
         if (game != null) {
             return game.run(this, grid, spec.commandLine().getOut(), err);
         }
-        SceneConverter converter = new SceneConverter(grid, pairingOptions.pairing(), pairingOptions.strict(),
-                line -> warn(err, line));
+        SceneConverter converter = SceneConverter.with(grid)
+                .pairing(pairingOptions.pairing())
+                .strict(pairingOptions.strict())
+                .warnings(line -> warn(err, line))
+                .build();
         ConversionReport total = new ConversionReport();
         List<Path> written = new java.util.concurrent.CopyOnWriteArrayList<>();
         int failed = 0;

@@ -235,7 +235,7 @@ public final class GameLogConverter {
     /** Rebuilds and converts its players, step by step, on a thread of its own (or the caller's). */
     private final class Worker implements Runnable {
         final Run run;
-        final SceneConverter converter = new SceneConverter(grid, pairing, false, line -> { });
+        final SceneConverter converter = SceneConverter.with(grid).pairing(pairing).build();
         final BlockingQueue<Step> queue;
         final StringBuilder text = new StringBuilder(4096);
         /** This worker's own: a parser serves one thread. */

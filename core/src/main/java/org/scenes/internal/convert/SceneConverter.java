@@ -57,24 +57,57 @@ public final class SceneConverter {
     private final Consumer<MalformedLine> warnings;
     private final MessageParser parser = new MessageParser();
 
-    /**
-     * @param grid the grid every object's cell is computed with
-     * @param strict whether the first malformed line stops the conversion ({@link LogException})
-     * @param warnings told of each malformed line when not strict
-     */
-    public SceneConverter(Grid grid, boolean strict, Consumer<MalformedLine> warnings) {
-        this(grid, Pairing.AUTO, strict, warnings);
+    private SceneConverter(Builder builder) {
+        this.grid = builder.grid;
+        this.pairing = builder.pairing;
+        this.strict = builder.strict;
+        this.warnings = builder.warnings;
     }
 
     /**
-     * @param pairing how sees and actions become scenes ({@link Pairing#AUTO}: per cycle once the
-     *                server confirms synchronous vision, per see otherwise)
+     * A converter computing cells in {@code grid}, with the defaults: {@link Pairing#AUTO}, not
+     * strict, malformed lines counted but told to no one. Change them on the builder, then
+     * {@link Builder#build}.
      */
-    public SceneConverter(Grid grid, Pairing pairing, boolean strict, Consumer<MalformedLine> warnings) {
-        this.grid = Objects.requireNonNull(grid, "grid");
-        this.pairing = Objects.requireNonNull(pairing, "pairing");
-        this.strict = strict;
-        this.warnings = warnings == null ? line -> { } : warnings;
+    public static Builder with(Grid grid) {
+        return new Builder(grid);
+    }
+
+    /** The settings of a {@link SceneConverter}, each named: see {@link #with}. */
+    public static final class Builder {
+        private final Grid grid;
+        private Pairing pairing = Pairing.AUTO;
+        private boolean strict;
+        private Consumer<MalformedLine> warnings = line -> { };
+
+        private Builder(Grid grid) {
+            this.grid = Objects.requireNonNull(grid, "grid");
+        }
+
+        /**
+         * How sees and actions become scenes ({@link Pairing#AUTO}, the default: per cycle once the
+         * server confirms synchronous vision, per see otherwise).
+         */
+        public Builder pairing(Pairing pairing) {
+            this.pairing = Objects.requireNonNull(pairing, "pairing");
+            return this;
+        }
+
+        /** Whether the first malformed line stops the conversion ({@link LogException}); default false. */
+        public Builder strict(boolean strict) {
+            this.strict = strict;
+            return this;
+        }
+
+        /** Told of each malformed line when not strict ({@code null}: no one). */
+        public Builder warnings(Consumer<MalformedLine> warnings) {
+            this.warnings = warnings == null ? line -> { } : warnings;
+            return this;
+        }
+
+        public SceneConverter build() {
+            return new SceneConverter(this);
+        }
     }
 
     public Grid grid() {

@@ -43,7 +43,7 @@ class SceneConverterTest {
     }
 
     private ConversionReport convert(Path file) throws IOException {
-        return new SceneConverter(Grid.DEFAULT, false, warnings::add).convert(file, scenes::add);
+        return SceneConverter.with(Grid.DEFAULT).warnings(warnings::add).build().convert(file, scenes::add);
     }
 
     private static final String INIT = "(init Carleton (version 9))";
@@ -118,7 +118,7 @@ class SceneConverterTest {
         assertEquals(1, scenes.size());
         assertEquals(1L, report.unknown().get("gibberish"));
         LogException strict = assertThrows(LogException.class,
-                () -> new SceneConverter(Grid.DEFAULT, true, null).convert(file, s -> { }));
+                () -> SceneConverter.with(Grid.DEFAULT).strict(true).build().convert(file, s -> { }));
         assertEquals(3, strict.line());
         assertTrue(strict.getMessage().startsWith(file + ":3: "), strict.getMessage());
     }
