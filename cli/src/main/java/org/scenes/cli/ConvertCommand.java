@@ -76,6 +76,10 @@ final class ConvertCommand implements Callable<Integer> {
     @Mixin
     GameLogOptions gameLogOptions;
 
+    @Option(names = "--world", description = "Give each scene the player's world model (its position, the ball's,"
+            + " the players it remembers, stamina, play mode, score; scene format 2, docs/scene-format.md).")
+    boolean world;
+
     @Option(names = "--threads", paramLabel = "N", description = "Game logs: threads rebuilding the players."
             + " Default: the number of cores.")
     int threads = Runtime.getRuntime().availableProcessors();
@@ -99,6 +103,7 @@ final class ConvertCommand implements Callable<Integer> {
                 .pairing(pairingOptions.pairing())
                 .strict(pairingOptions.strict())
                 .warnings(line -> warn(err, line))
+                .world(world)
                 .build();
         ConversionReport total = new ConversionReport();
         List<Path> written = new java.util.concurrent.CopyOnWriteArrayList<>();

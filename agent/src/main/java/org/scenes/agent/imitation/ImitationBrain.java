@@ -26,6 +26,7 @@ import org.scenes.internal.protocol.See;
 import org.scenes.internal.protocol.SenseBody;
 import org.scenes.internal.protocol.ServerNotice;
 import org.scenes.internal.validate.Validator;
+import org.scenes.internal.world.WorldModel;
 
 /**
  * The imitating player: every {@code see} becomes a scene exactly as the converter makes one
@@ -62,6 +63,8 @@ public final class ImitationBrain implements Brain {
     private final java.util.ArrayDeque<Scene> history = new java.util.ArrayDeque<>(HISTORY);
     private final Random random;
     private final MessageParser parser = new MessageParser();
+    /** What the player believes of the game, built as scene conversion builds it; each query carries it. */
+    private final WorldModel world;
     private Observer observer = Observer.UNKNOWN;
     private boolean placed;
     private final Guards guards;
@@ -119,6 +122,7 @@ public final class ImitationBrain implements Brain {
                           Supplier<List<SceneTransform>> transforms, Random random, Guards guards) {
         this.guards = Objects.requireNonNull(guards, "guards");
         this.team = Objects.requireNonNull(team, "team");
+        this.world = new WorldModel(team);
         this.recognizer = Objects.requireNonNull(recognizer, "recognizer");
         this.selector = Objects.requireNonNull(selector, "selector");
         this.transforms = Objects.requireNonNull(transforms, "transforms");
@@ -141,6 +145,7 @@ public final class ImitationBrain implements Brain {
     @Override
     public void receive(String text, Consumer<String> send) {
         Message message = parser.parse(text);
+        world.accept(message);
         if (message instanceof InitReply reply && reply.side() != null) {
             observer = new Observer(team, reply.side(), reply.uniformNumber());
         } else if (!placed && message instanceof Parameters types && types.head().equals("player_type")) {
@@ -183,7 +188,8 @@ public final class ImitationBrain implements Brain {
      */
     List<Action> decide(See see, int age) {
         Scene seen = new Scene(see.time() + age, observer,
-                SceneConverter.seenObjects(see, observer, recognizer.knowledge().grid()), List.of(), null, age);
+                SceneConverter.seenObjects(see, observer, recognizer.knowledge().grid()), List.of(), null, age,
+                world.snapshot(see.time() + age));
         Scene query = seen;
         List<SceneTransform> chain = transforms.get();
         if (!chain.isEmpty()) {
@@ -202,7 +208,8 @@ public final class ImitationBrain implements Brain {
             history.removeFirst();
         }
         List<Action> actions = Validator.withNeck(action, nearest);
-        Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age);
+        Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age, seen.world());
+        actions.forEach(world::sent);
         history.addLast(made);
         decided.accept(made);
         if (action == null) {

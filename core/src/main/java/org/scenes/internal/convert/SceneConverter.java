@@ -17,6 +17,7 @@ import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
 import org.scenes.api.Side;
+import org.scenes.api.World;
 import org.scenes.internal.protocol.InitReply;
 import org.scenes.internal.protocol.InitRequest;
 import org.scenes.internal.protocol.Message;
@@ -28,6 +29,7 @@ import org.scenes.internal.protocol.SenseBody;
 import org.scenes.internal.protocol.ServerNotice;
 import org.scenes.internal.protocol.Unknown;
 import org.scenes.internal.protocol.VisualObject;
+import org.scenes.internal.world.WorldModel;
 
 /**
  * Turns player logs into scenes (the thesis' LogToScenes, rules in docs/conversion.md): a scene is
@@ -55,6 +57,7 @@ public final class SceneConverter {
     private final Pairing pairing;
     private final boolean strict;
     private final Consumer<MalformedLine> warnings;
+    private final boolean world;
     private final MessageParser parser = new MessageParser();
 
     private SceneConverter(Builder builder) {
@@ -62,6 +65,7 @@ public final class SceneConverter {
         this.pairing = builder.pairing;
         this.strict = builder.strict;
         this.warnings = builder.warnings;
+        this.world = builder.world;
     }
 
     /**
@@ -79,6 +83,7 @@ public final class SceneConverter {
         private Pairing pairing = Pairing.AUTO;
         private boolean strict;
         private Consumer<MalformedLine> warnings = line -> { };
+        private boolean world;
 
         private Builder(Grid grid) {
             this.grid = Objects.requireNonNull(grid, "grid");
@@ -105,6 +110,15 @@ public final class SceneConverter {
             return this;
         }
 
+        /**
+         * Whether each scene carries the player's world model ({@link World}, built by
+         * {@link WorldModel} from every message of the log); default false.
+         */
+        public Builder world(boolean world) {
+            this.world = world;
+            return this;
+        }
+
         public SceneConverter build() {
             return new SceneConverter(this);
         }
@@ -112,6 +126,11 @@ public final class SceneConverter {
 
     public Grid grid() {
         return grid;
+    }
+
+    /** Whether the scenes carry the player's world model. */
+    public boolean world() {
+        return world;
     }
 
     /** Converts one log file (any {@link LogFormat}, plain or gzip). */
@@ -246,6 +265,9 @@ public final class SceneConverter {
         Action primary;
         Action secondary;
         boolean orphanActions;
+        /** The player's world model, when scenes carry it; per see, its state at the pending see. */
+        final WorldModel worldModel = world ? new WorldModel() : null;
+        World pendingWorld;
 
         Run(Path file, SceneSink sink) {
             this.file = file;
@@ -300,6 +322,20 @@ public final class SceneConverter {
 
         void handle(Message message) throws IOException {
             report.message();
+            // The world model takes each message: per see before the see opens its scene (the scene
+            // holds the model at its see), per cycle after (a scene closes on the next cycle's first
+            // message and holds the model of its whole cycle).
+            boolean worldFirst = worldModel != null && !perCycle;
+            if (worldFirst) {
+                worldModel.accept(message);
+            }
+            pairing(message);
+            if (worldModel != null && !worldFirst) {
+                worldModel.accept(message);
+            }
+        }
+
+        void pairing(Message message) throws IOException {
             if (message instanceof See see) {
                 if (perCycle) {
                     cycleSee(see);
@@ -392,6 +428,7 @@ public final class SceneConverter {
         void remember(See see) {
             pending = see;
             pendingObserver = observer;
+            pendingWorld = worldModel != null && !perCycle ? worldModel.snapshot(see.time()) : null;
             // the whole line: a server sends one message per datagram, and repeats are whole lines
             int length = lineLength;
             if (pendingBytes.length < length) {
@@ -442,8 +479,9 @@ public final class SceneConverter {
             } else {
                 List<Action> actions = primary == null ? List.of(secondary)
                         : secondary == null ? List.of(primary) : List.of(primary, secondary);
+                World seenWorld = worldModel == null ? null : perCycle ? worldModel.snapshot(cycle) : pendingWorld;
                 Scene scene = new Scene(cycle, pendingObserver, seenObjects(pending, pendingObserver, grid), actions,
-                        null, perCycle ? openAge : 0);
+                        null, perCycle ? openAge : 0, seenWorld);
                 sink.accept(scene);
                 report.scene(scene.actionType());
                 report.seeAge(scene.seeAge());
