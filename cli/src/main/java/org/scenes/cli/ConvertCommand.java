@@ -76,6 +76,10 @@ final class ConvertCommand implements Callable<Integer> {
     @Mixin
     GameLogOptions gameLogOptions;
 
+    @Option(names = "--world", description = "Give each scene the player's world model (its position, the ball's,"
+            + " the players it remembers, stamina, play mode, score; scene format 2, docs/scene-format.md).")
+    boolean world;
+
     @Option(names = "--threads", paramLabel = "N", description = "Game logs: threads rebuilding the players."
             + " Default: the number of cores.")
     int threads = Runtime.getRuntime().availableProcessors();
@@ -122,8 +126,13 @@ final class ConvertCommand implements Callable<Integer> {
         if (game != null) {
             return game.run(this, grid, spec.commandLine().getOut(), err);
         }
-        SceneConverter converter = new SceneConverter(grid, pairingOptions.pairing(), pairingOptions.strict(),
-                line -> warn(err, line)).keepUnanswered(unanswered == Unanswered.KEEP);
+        SceneConverter converter = SceneConverter.with(grid)
+                .pairing(pairingOptions.pairing())
+                .strict(pairingOptions.strict())
+                .warnings(line -> warn(err, line))
+                .world(world)
+                .keepUnanswered(unanswered == Unanswered.KEEP)
+                .build();
         ConversionReport total = new ConversionReport();
         List<Path> written = new java.util.concurrent.CopyOnWriteArrayList<>();
         int failed = 0;

@@ -257,7 +257,7 @@ class InterruptedWriteTest {
                 File[] written = logs.toFile().listFiles();
                 for (File log : written == null ? new File[0] : written) {
                     // a log is there only when complete: it converts without error
-                    assertTrue(new org.scenes.internal.convert.SceneConverter(org.scenes.api.Grid.DEFAULT, false, null)
+                    assertTrue(org.scenes.internal.convert.SceneConverter.with(org.scenes.api.Grid.DEFAULT).build()
                             .convert(log.toPath(), scene -> { }).scenes() > 0, log.toString());
                 }
             }

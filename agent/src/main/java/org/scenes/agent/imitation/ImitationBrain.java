@@ -26,6 +26,7 @@ import org.scenes.internal.protocol.See;
 import org.scenes.internal.protocol.SenseBody;
 import org.scenes.internal.protocol.ServerNotice;
 import org.scenes.internal.validate.Validator;
+import org.scenes.internal.world.WorldModel;
 
 /**
  * The imitating player: every {@code see} becomes a scene exactly as the converter makes one
@@ -75,6 +76,8 @@ public final class ImitationBrain implements Brain {
     private final java.util.ArrayDeque<Scene> history = new java.util.ArrayDeque<>(HISTORY);
     private final Random random;
     private final MessageParser parser = new MessageParser();
+    /** What the player believes of the game, built as scene conversion builds it; each query carries it. */
+    private final WorldModel world;
     private Observer observer = Observer.UNKNOWN;
     private boolean placed;
     private final Guards guards;
@@ -144,6 +147,7 @@ public final class ImitationBrain implements Brain {
                            Supplier<List<SceneTransform>> transforms, Random random, Guards guards, boolean withRoles) {
         this.guards = Objects.requireNonNull(guards, "guards");
         this.team = Objects.requireNonNull(team, "team");
+        this.world = new WorldModel(team);
         this.roles = Objects.requireNonNull(roles, "roles");
         this.withRoles = withRoles;
         this.recognizer = roles.team();
@@ -168,6 +172,7 @@ public final class ImitationBrain implements Brain {
     @Override
     public void receive(String text, Consumer<String> send) {
         Message message = parser.parse(text);
+        world.accept(message);
         if (message instanceof InitReply reply && reply.side() != null) {
             observer = new Observer(team, reply.side(), reply.uniformNumber());
             if (withRoles) {
@@ -232,7 +237,8 @@ public final class ImitationBrain implements Brain {
      */
     List<Action> decide(See see, int age) {
         Scene seen = new Scene(see.time() + age, observer,
-                SceneConverter.seenObjects(see, observer, recognizer.knowledge().grid()), List.of(), null, age);
+                SceneConverter.seenObjects(see, observer, recognizer.knowledge().grid()), List.of(), null, age,
+                world.snapshot(see.time() + age));
         Scene query = seen;
         List<SceneTransform> chain = transforms.get();
         if (!chain.isEmpty()) {
@@ -256,7 +262,8 @@ public final class ImitationBrain implements Brain {
             history.removeFirst();
         }
         List<Action> actions = Validator.withNeck(action, nearest);
-        Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age);
+        Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age, seen.world());
+        actions.forEach(world::sent);
         history.addLast(made);
         decided.accept(made);
         if (action == null) {

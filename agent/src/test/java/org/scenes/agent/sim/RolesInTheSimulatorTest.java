@@ -75,7 +75,7 @@ class RolesInTheSimulatorTest {
         assertTrue(goalieLog.getFileName().toString().startsWith("Teal_1"), goalieLog.toString());
         assertEquals(1, count(goalieLog, "(init Teal (version 9) (goalie))"));
         boolean[] told = new boolean[1];
-        new SceneConverter(Grid.DEFAULT, true, line -> { }).convert(goalieLog,
+        SceneConverter.with(Grid.DEFAULT).strict(true).build().convert(goalieLog,
                 SceneConverter.SceneSink.of(scene -> { }, () -> told[0] = true));
         assertTrue(told[0], "the player log's init says goalie");
 

@@ -110,6 +110,7 @@ public final class GameLogConverter {
     private boolean commandsBeforeSee;
     private SeePhase seePhase = SeePhase.INFER;
     private boolean keepUnanswered;
+    private boolean world;
 
     /**
      * @param grid and {@code pairing} make the scenes, as for player logs
@@ -139,9 +140,18 @@ public final class GameLogConverter {
         return this;
     }
 
-    /** Unanswered sees become scenes without action, as {@link SceneConverter#keepUnanswered}. */
+    /** Unanswered sees become scenes without action, as {@link SceneConverter.Builder#keepUnanswered}. */
     public GameLogConverter keepUnanswered(boolean keep) {
         this.keepUnanswered = keep;
+        return this;
+    }
+
+    /**
+     * Whether each scene carries the player's world model, built from the rebuilt percepts (then
+     * each {@code sense_body} carries the player's state and the referee's calls are heard); default false.
+     */
+    public GameLogConverter world(boolean world) {
+        this.world = world;
         return this;
     }
 
@@ -215,6 +225,8 @@ public final class GameLogConverter {
         boolean goalie;
         /** Set by the reading thread when the player's first show is handed out. */
         boolean started;
+        /** The play mode the player was last told (world models only). */
+        String heardMode;
         SceneConverter.Feed feed;
         SeeWriter writer;
         boolean synchSee;
@@ -249,8 +261,8 @@ public final class GameLogConverter {
     /** Rebuilds and converts its players, step by step, on a thread of its own (or the caller's). */
     private final class Worker implements Runnable {
         final Run run;
-        final SceneConverter converter = new SceneConverter(grid, pairing, false, line -> { })
-                .keepUnanswered(keepUnanswered);
+        final SceneConverter converter = SceneConverter.with(grid).pairing(pairing).world(world)
+                .keepUnanswered(keepUnanswered).build();
         final BlockingQueue<Step> queue;
         final StringBuilder text = new StringBuilder(4096);
         /** This worker's own: a parser serves one thread. */
@@ -340,7 +352,13 @@ public final class GameLogConverter {
                 if (step.commandsCover()) {
                     checkAgreement(player, state);
                 }
-                line(player, "(sense_body " + time + ")");
+                if (converter.world()) {
+                    // the world model reads the player's own state and the referee's calls
+                    senseBody(player, state, time);
+                    referee(player, frame);
+                } else {
+                    line(player, "(sense_body " + time + ")");
+                }
                 // this show's sees and commands belong to the next step
                 long next = step.index() + 1;
                 List<String> sent = sentBy(player, step);
@@ -401,6 +419,7 @@ public final class GameLogConverter {
             line(player, "(init " + o.team() + " (version " + Math.max(player.version, 3) + ")"
                     + (player.goalie ? " (goalie)" : "") + ")");
             line(player, "(init " + o.side().letter() + ' ' + o.uniformNumber() + ' ' + frame.playMode() + ")");
+            player.heardMode = frame.playMode();
             if (player.synchSee) {
                 line(player, "(ok synch_see)");
             }
@@ -477,6 +496,46 @@ public final class GameLogConverter {
             writer.lines();
             writer.end();
             line(player, text);
+        }
+
+        /**
+         * The player's {@code sense_body} as the server writes it (version 7's fields, which the
+         * world model reads): stamina, speed relative to the head, neck angle, command counts.
+         */
+        void senseBody(Player player, PlayerState self, int time) throws IOException {
+            double speed = Math.hypot(self.vx(), self.vy());
+            double head = self.body() + self.neck();
+            double direction = speed < 1e-9 ? 0
+                    : Math.rint(VisionNumbers.normalize(Math.toDegrees(Math.atan2(self.vy(), self.vx())) - head));
+            PlayerState.Counts c = self.counts();
+            text.setLength(0);
+            text.append("(sense_body ").append(time).append(" (view_mode ")
+                    .append(self.viewQuality() == 'h' ? "high " : "low ")
+                    .append(self.viewWidth() <= 60 ? "narrow" : self.viewWidth() >= 180 ? "wide" : "normal")
+                    .append(") (stamina ");
+            VisionNumbers.append(text, Math.rint(self.stamina()), 0).append(' ');
+            VisionNumbers.append(text, self.effort(), 6).append(' ');
+            VisionNumbers.append(text, self.capacity(), 0).append(") (speed ");
+            VisionNumbers.append(text, VisionNumbers.quantize(speed, 0.01), 2).append(' ');
+            VisionNumbers.append(text, direction, 0).append(") (head_angle ");
+            VisionNumbers.append(text, Math.rint(self.neck()), 0).append(") (kick ").append(c.kick())
+                    .append(") (dash ").append(c.dash()).append(") (turn ").append(c.turn())
+                    .append(") (say ").append(c.say()).append(") (turn_neck ").append(c.turnNeck())
+                    .append(") (catch ").append(c.catches()).append(") (move ").append(c.move())
+                    .append(") (change_view ").append(c.changeView()).append("))");
+            line(player, text);
+        }
+
+        /** The referee's call when the play mode changed since the player last heard ({@code goal_l_2} for goals). */
+        void referee(Player player, GameFrame frame) throws IOException {
+            String mode = frame.playMode();
+            if (mode.equals(player.heardMode)) {
+                return;
+            }
+            player.heardMode = mode;
+            String word = mode.equals("goal_l") ? "goal_l_" + frame.scoreLeft()
+                    : mode.equals("goal_r") ? "goal_r_" + frame.scoreRight() : mode;
+            line(player, "(hear " + frame.time() + " referee " + word + ")");
         }
 
         void line(Player player, CharSequence message) throws IOException {

@@ -23,6 +23,7 @@ import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
 import org.scenes.api.Side;
+import org.scenes.api.World;
 import org.scenes.internal.files.Inputs;
 
 /**
@@ -230,6 +231,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         Observer observer = header.source().observer();
         List<SeenObject> objects = null;
         List<Action> actions = null;
+        World world = null;
         while (json.nextToken() == JsonToken.FIELD_NAME) {
             String field = json.currentName();
             JsonToken value = json.nextToken();
@@ -245,6 +247,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
                 }
                 case "objects" -> objects = readObjects(value);
                 case "actions" -> actions = readActions(value);
+                case "world" -> world = readWorld(value);
                 default -> json.skipChildren();
             }
         }
@@ -253,7 +256,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
                     "a scene needs 'cycle', 'objects' and 'actions'", null);
         }
         try {
-            return new Scene(cycle, observer, objects, actions, null, seeAge);
+            return new Scene(cycle, observer, objects, actions, null, seeAge, world);
         } catch (IllegalArgumentException e) {
             throw new SceneFileException(file, start.getLineNr(), start.getColumnNr(), e.getMessage(), e);
         }
@@ -334,6 +337,87 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         }
         return new SeenObject(kind, name, team, unum, goalie, relation, distance, direction,
                 distanceChange, directionChange, bodyFacing, headFacing, pointing, mark, cell);
+    }
+
+    /** A scene's world model (format 2); values left out are unknown (NaN, age -1). */
+    private World readWorld(JsonToken start) throws IOException {
+        expect(start, JsonToken.START_OBJECT, "a world object");
+        double[] self = {Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN};
+        double[] ball = {Double.NaN, Double.NaN, Double.NaN, Double.NaN};
+        int age = -1;
+        int ballAge = -1;
+        List<World.Player> players = new ArrayList<>();
+        String playMode = "";
+        int own = 0;
+        int opponent = 0;
+        while (json.nextToken() == JsonToken.FIELD_NAME) {
+            String field = json.currentName();
+            JsonToken value = json.nextToken();
+            int index = WORLD_NUMBERS.indexOf(field);
+            if (index >= 0) {
+                self[index] = number(value);
+                continue;
+            }
+            switch (field) {
+                case "age" -> age = intValue(value);
+                case "ball" -> {
+                    expect(value, JsonToken.START_OBJECT, "a ball object");
+                    while (json.nextToken() == JsonToken.FIELD_NAME) {
+                        String ballField = json.currentName();
+                        JsonToken ballValue = json.nextToken();
+                        switch (ballField) {
+                            case "x" -> ball[0] = number(ballValue);
+                            case "y" -> ball[1] = number(ballValue);
+                            case "vx" -> ball[2] = number(ballValue);
+                            case "vy" -> ball[3] = number(ballValue);
+                            case "age" -> ballAge = intValue(ballValue);
+                            default -> json.skipChildren();
+                        }
+                    }
+                }
+                case "players" -> {
+                    expect(value, JsonToken.START_ARRAY, "an array of players");
+                    while (json.nextToken() != JsonToken.END_ARRAY) {
+                        players.add(readWorldPlayer(json.currentToken()));
+                    }
+                }
+                case "playMode" -> playMode = text(value);
+                case "score" -> {
+                    expect(value, JsonToken.START_ARRAY, "a score [own, opponent]");
+                    own = intValue(json.nextToken());
+                    opponent = intValue(json.nextToken());
+                    expect(json.nextToken(), JsonToken.END_ARRAY, "the end of the score [own, opponent]");
+                }
+                default -> json.skipChildren();
+            }
+        }
+        return new World(self[0], self[1], self[2], self[3], self[4], self[5], self[6], self[7], age,
+                ball[0], ball[1], ball[2], ball[3], ballAge, players, playMode, own, opponent);
+    }
+
+    /** The world block's own numbers, in {@link World}'s order. */
+    private static final List<String> WORLD_NUMBERS = List.of("x", "y", "body", "neck", "vx", "vy", "stamina", "effort");
+
+    private World.Player readWorldPlayer(JsonToken start) throws IOException {
+        expect(start, JsonToken.START_OBJECT, "a player object");
+        Relation relation = Relation.UNKNOWN;
+        int unum = 0;
+        double x = Double.NaN;
+        double y = Double.NaN;
+        int age = 0;
+        while (json.nextToken() == JsonToken.FIELD_NAME) {
+            String field = json.currentName();
+            JsonToken value = json.nextToken();
+            switch (field) {
+                case "relation" -> relation = parseEnum(value, Relation::fromKey);
+                case "unum" -> unum = intValue(value);
+                case "x" -> x = number(value);
+                case "y" -> y = number(value);
+                case "age" -> age = intValue(value);
+                default -> json.skipChildren();
+            }
+        }
+        return new World.Player(relation, unum, x, y, age);
     }
 
     private Cell readCell(JsonToken start) throws IOException {

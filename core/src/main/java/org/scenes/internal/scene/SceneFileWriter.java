@@ -17,6 +17,7 @@ import org.scenes.api.Observer;
 import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
+import org.scenes.api.World;
 import org.scenes.internal.files.AtomicOutput;
 
 /**
@@ -130,6 +131,9 @@ public final class SceneFileWriter implements AutoCloseable {
             writeAction(actions.get(i), i == 0);
         }
         json.writeEndArray();
+        if (scene.world() != null) {
+            writeWorld(scene.world());
+        }
         json.writeEndObject();
         written++;
     }
@@ -175,6 +179,52 @@ public final class SceneFileWriter implements AutoCloseable {
         json.writeStartArray();
         json.writeNumber(object.cell().column());
         json.writeNumber(object.cell().row());
+        json.writeEndArray();
+        json.writeEndObject();
+    }
+
+    /** The scene's world model (format 2): values not known are left out. */
+    private void writeWorld(World world) throws IOException {
+        json.writeObjectFieldStart("world");
+        writeOptional("x", world.x());
+        writeOptional("y", world.y());
+        writeOptional("body", world.body());
+        writeOptional("neck", world.neck());
+        writeOptional("vx", world.vx());
+        writeOptional("vy", world.vy());
+        writeOptional("stamina", world.stamina());
+        writeOptional("effort", world.effort());
+        if (world.age() >= 0) {
+            json.writeNumberField("age", world.age());
+        }
+        if (world.ballAge() >= 0) {
+            json.writeObjectFieldStart("ball");
+            writeOptional("x", world.ballX());
+            writeOptional("y", world.ballY());
+            writeOptional("vx", world.ballVx());
+            writeOptional("vy", world.ballVy());
+            json.writeNumberField("age", world.ballAge());
+            json.writeEndObject();
+        }
+        json.writeArrayFieldStart("players");
+        for (World.Player player : world.players()) {
+            json.writeStartObject();
+            json.writeStringField("relation", player.relation().key());
+            if (player.unum() > 0) {
+                json.writeNumberField("unum", player.unum());
+            }
+            writeOptional("x", player.x());
+            writeOptional("y", player.y());
+            json.writeNumberField("age", player.age());
+            json.writeEndObject();
+        }
+        json.writeEndArray();
+        if (!world.playMode().isEmpty()) {
+            json.writeStringField("playMode", world.playMode());
+        }
+        json.writeArrayFieldStart("score");
+        json.writeNumber(world.ownScore());
+        json.writeNumber(world.opponentScore());
         json.writeEndArray();
         json.writeEndObject();
     }

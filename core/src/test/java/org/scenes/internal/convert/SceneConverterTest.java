@@ -43,7 +43,7 @@ class SceneConverterTest {
     }
 
     private ConversionReport convert(Path file) throws IOException {
-        return new SceneConverter(Grid.DEFAULT, false, warnings::add).convert(file, scenes::add);
+        return SceneConverter.with(Grid.DEFAULT).warnings(warnings::add).build().convert(file, scenes::add);
     }
 
     private static final String INIT = "(init Carleton (version 9))";
@@ -75,7 +75,7 @@ class SceneConverterTest {
                 "(see 2 ((b) 9 0))", "(sense_body 2 (view_mode high normal))",
                 "(see 3 ((b) 8 0))", "(turn_neck 10)",
                 "(see 4 ((b) 7 0))");
-        ConversionReport kept = new SceneConverter(Grid.DEFAULT, false, warnings::add).keepUnanswered(true)
+        ConversionReport kept = SceneConverter.with(Grid.DEFAULT).warnings(warnings::add).keepUnanswered(true).build()
                 .convert(file, scenes::add);
         assertEquals(List.of(1, 2, 3, 4), scenes.stream().map(Scene::cycle).toList());
         assertEquals(List.of(), scenes.get(1).actions(), "the teacher left see 2 unanswered");
@@ -95,11 +95,11 @@ class SceneConverterTest {
     void theGoaliesInitIsToldToTheSinkBeforeItsFirstScene() throws IOException {
         List<String> told = new ArrayList<>();
         SceneConverter.SceneSink sink = SceneConverter.SceneSink.of(scene -> told.add("scene"), () -> told.add("goalie"));
-        new SceneConverter(Grid.DEFAULT, false, warnings::add).convert(log("g.lsf", "(init Carleton (version 9) (goalie))",
+        SceneConverter.with(Grid.DEFAULT).warnings(warnings::add).build().convert(log("g.lsf", "(init Carleton (version 9) (goalie))",
                 "(init l 1 before_kick_off)", "(see 1 ((b) 10 0))", "(catch 0)", "(see 2 ((b) 9 0))"), sink);
         assertEquals(List.of("goalie", "scene"), told);
         told.clear();
-        new SceneConverter(Grid.DEFAULT, false, warnings::add).convert(log("f.lsf", INIT, REPLY,
+        SceneConverter.with(Grid.DEFAULT).warnings(warnings::add).build().convert(log("f.lsf", INIT, REPLY,
                 "(see 1 ((b) 10 0))", "(dash 10)", "(see 2 ((b) 9 0))"), sink);
         assertEquals(List.of("scene"), told);
     }
@@ -154,7 +154,7 @@ class SceneConverterTest {
         assertEquals(1, scenes.size());
         assertEquals(1L, report.unknown().get("gibberish"));
         LogException strict = assertThrows(LogException.class,
-                () -> new SceneConverter(Grid.DEFAULT, true, null).convert(file, s -> { }));
+                () -> SceneConverter.with(Grid.DEFAULT).strict(true).build().convert(file, s -> { }));
         assertEquals(3, strict.line());
         assertTrue(strict.getMessage().startsWith(file + ":3: "), strict.getMessage());
     }

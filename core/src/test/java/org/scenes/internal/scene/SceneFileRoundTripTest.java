@@ -2,6 +2,7 @@ package org.scenes.internal.scene;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -20,6 +21,7 @@ import org.scenes.api.ObjectKind;
 import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
+import org.scenes.api.World;
 
 class SceneFileRoundTripTest {
     @TempDir
@@ -73,6 +75,52 @@ class SceneFileRoundTripTest {
         assertTrue(text.contains("\"foul\":1"), text);
         assertEquals(List.of(aged, fresh), SceneFileReader.read(file).scenes());
         assertEquals(0, SceneFileReader.read(file).scenes().get(1).seeAge());
+    }
+
+    @Test
+    void theWorldBlockSurvivesARoundTripAndIsWrittenOnlyWhenAScenesHasOne() throws IOException {
+        World world = new World(-12.34, 5.6, 45.5, -20, 0.12, -0.03, 7312, 0.9, 0, 3.2, -1.05, 1.5, -0.25, 2,
+                List.of(new World.Player(Relation.TEAMMATE, 7, 1, 2, 0), new World.Player(Relation.UNKNOWN, 0, -3, 4.5, 0),
+                        new World.Player(Relation.OPPONENT, 11, 30, -20, 12)),
+                "kick_off_l", 1, 2);
+        World unknown = new World(Double.NaN, Double.NaN, Double.NaN, 0, Double.NaN, Double.NaN, Double.NaN,
+                Double.NaN, -1, Double.NaN, Double.NaN, Double.NaN, Double.NaN, -1, List.of(), "", 0, 0);
+        Scene with = new Scene(8, SceneFixtures.OBSERVER, List.of(), List.of(Action.turn(30)), null, 1, world);
+        Scene lost = new Scene(9, SceneFixtures.OBSERVER, List.of(), List.of(Action.turn(30)), null, 0, unknown);
+        Scene without = new Scene(10, SceneFixtures.OBSERVER, List.of(), List.of(Action.dash(50)));
+        Path file = dir.resolve("world.json");
+        SceneFileWriter.write(file, new SceneFile(header, List.of(with, lost, without)));
+        String text = Files.readString(file);
+        assertTrue(text.startsWith("{\"format\":2"), text);
+        assertEquals(2, text.split("\"world\"", -1).length - 1, text);
+
+        SceneFile read = SceneFileReader.read(file);
+
+        assertEquals(List.of(with, lost, without), read.scenes());
+        assertEquals(2, read.header().format());
+    }
+
+    @Test
+    void aFormatOneFileReadsAsScenesWithoutWorld() throws IOException {
+        Path file = dir.resolve("old.json");
+        Files.writeString(file, "{\"format\": 1, \"grid\": {\"columns\": 5, \"bounds\": [1, 5]}, \"scenes\": [\n"
+                + "{\"cycle\": 1, \"objects\": [], \"actions\": [{\"type\": \"turn\", \"moment\": 10}]}\n]}\n");
+
+        SceneFile read = SceneFileReader.read(file);
+
+        assertEquals(1, read.header().format());
+        assertNull(read.scenes().get(0).world());
+    }
+
+    @Test
+    void formatThreeIsRefusedNamingIt() throws IOException {
+        Path file = dir.resolve("future.json");
+        Files.writeString(file, "{\"format\":3,\"grid\":{\"columns\":5,\"bounds\":[1,5]},\"scenes\":[]}\n");
+
+        SceneFileException error = assertThrows(SceneFileException.class, () -> SceneFileReader.read(file));
+
+        assertTrue(error.getMessage().contains("scene format 3 is newer than this version of scenes reads (up to 2)"),
+                error.getMessage());
     }
 
     @Test
