@@ -26,6 +26,7 @@ import org.scenes.evaluate.HtmlReport;
 import org.scenes.evaluate.Learner;
 import org.scenes.evaluate.LiveArena;
 import org.scenes.evaluate.PacedBrain;
+import org.scenes.evaluate.ServerLogGames;
 import org.scenes.evaluate.Tables;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.validate.MatchConfig;
@@ -45,7 +46,9 @@ import picocli.CommandLine.Spec;
                 + " action mix and its divergence, kicks and goals per 1000 cycles, distance to the ball, kick-off"
                 + " to first touch, stuck share, agreement with a shadow teacher, and a Turing figure.",
                 "The imitator is learnt from the teacher's own games (simulate, convert, knowledge base, in"
-                + " process), or from the SCENES files given."})
+                + " process), or from the SCENES files given.",
+                "With --teacher-games DIR --imitator-games DIR no game is played: the same figures come from"
+                + " existing server logs (.rcg or .rcg.gz, the .rcl beside when there is one) of any team."})
 final class EvaluateCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -114,8 +117,25 @@ final class EvaluateCommand implements Callable<Integer> {
                     + " Default: ${DEFAULT-VALUE}.")
     double serverWait;
 
+    @Option(names = "--teacher-games", paramLabel = "DIR",
+            description = "Evaluate from existing game logs instead of playing: the teacher's games, every .rcg or"
+                    + " .rcg.gz in DIR (with the .rcl beside when there is one). Needs --imitator-games.")
+    Path teacherGames;
+
+    @Option(names = "--imitator-games", paramLabel = "DIR",
+            description = "With --teacher-games: the imitator's game logs. Games of each side pair in name order.")
+    Path imitatorGames;
+
+    @Option(names = "--team", paramLabel = "NAME",
+            description = "With --teacher-games: the team measured in every game. Default: the one team name all"
+                    + " the games have.")
+    String team;
+
     @Override
     public Integer call() throws IOException {
+        if (teacherGames != null || imitatorGames != null || team != null) {
+            return fromGameLogs();
+        }
         Setup setup = setup();
         PrintWriter out = spec.commandLine().getOut();
         Outcome outcome = evaluate(setup, arena(), json ? null : out);
@@ -141,6 +161,70 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         out.flush();
         return ExitCodes.OK;
+    }
+
+    /** {@code --teacher-games DIR --imitator-games DIR}: the figures of existing game logs. */
+    private int fromGameLogs() throws IOException {
+        if (teacherGames == null || imitatorGames == null) {
+            throw new UsageException(teacherGames == null && imitatorGames == null
+                    ? "--team: goes with --teacher-games DIR --imitator-games DIR"
+                    : "--teacher-games and --imitator-games: give both (the teacher's and the imitator's game logs)");
+        }
+        if (!sceneFiles.isEmpty() || server != null) {
+            throw new UsageException("--teacher-games: evaluates existing game logs; it takes no SCENES and no --server");
+        }
+        long started = System.nanoTime();
+        List<Path> teacherLogs = gameLogs("--teacher-games", teacherGames);
+        List<Path> imitatorLogs = gameLogs("--imitator-games", imitatorGames);
+        ServerLogGames.Read read;
+        try (ProgressBar bar = bar("Reading games", teacherLogs.size() + imitatorLogs.size())) {
+            read = ServerLogGames.read(teacherLogs, imitatorLogs, team, games -> step(bar).accept(games));
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("--team: " + e.getMessage());
+        }
+        Comparison comparison = Comparison.of(read.results());
+        Map<String, String> about = new LinkedHashMap<>();
+        about.put("team", read.team());
+        about.put("teacher games", describe(teacherGames, read.teacherGames()));
+        about.put("imitator games", describe(imitatorGames, read.imitatorGames()));
+        about.put("games", "read from the server's logs; each side's games numbered 1, 2, ... in name order (the"
+                + " Turing figure's folds pair them)");
+        about.put("time", String.format(Locale.ROOT, "%.1f s", (System.nanoTime() - started) / 1e9));
+        PrintWriter out = spec.commandLine().getOut();
+        if (json) {
+            Map<String, Object> root = new LinkedHashMap<>();
+            root.put("about", about);
+            root.putAll(Tables.json(comparison));
+            out.println(ConfigFiles.JSON.writeValueAsString(root));
+        } else {
+            out.print(Tables.text(comparison));
+        }
+        if (report != null) {
+            Path page = HtmlReport.write(report, "scenes evaluate: " + read.team() + ", teacher's and imitator's games",
+                    about, comparison, read.results());
+            if (!json) {
+                out.println();
+                out.println("Report written to " + page.toAbsolutePath());
+            }
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    private static List<Path> gameLogs(String option, Path directory) throws IOException {
+        try {
+            return ServerLogGames.gameLogs(directory);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException(option + ": " + e.getMessage());
+        }
+    }
+
+    private static String describe(Path directory, List<ServerLogGames.Game> games) {
+        long withCommands = games.stream().filter(g -> g.commandLog() != null).count();
+        return games.size() + " in " + directory + " (" + String.join(", ", games.stream()
+                .map(g -> g.gameLog().getFileName().toString()).toList()) + "); executed commands from "
+                + (withCommands == games.size() ? "their .rcl" : withCommands == 0 ? "the .rcg's counters (no .rcl)"
+                        : withCommands + " .rcl, the others' .rcg counters");
     }
 
     /** Everything the evaluation needs, checked. */
