@@ -1,6 +1,7 @@
 package org.scenes.evaluate;
 
 import java.io.IOException;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
@@ -12,6 +13,7 @@ import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.GameLogs;
 
 /**
  * Teacher and imitator in the same situations: for every seed, one game with the teacher team on
@@ -81,7 +83,27 @@ public final class Evaluation {
         done[0] = before + plan.cycles();
         progress.accept(done[0]);
         traces.forEach(PlayerTrace::close);
-        return new PlayedGame(role, Side.LEFT, seed, result, frames, traces);
+        return new PlayedGame(role, Side.LEFT, seed, result, frames, traces,
+                executed(result, frames, Side.LEFT, left.name()));
+    }
+
+    /**
+     * The executed commands from the server's command log beside the game log the arena read (a
+     * live server's), else from the frames' counters.
+     */
+    static ExecutedCommands executed(GameResult result, List<GameFrame> frames, Side side, String team)
+            throws IOException {
+        for (Path log : result.logs()) {
+            String name = log.getFileName().toString();
+            if (name.endsWith(".rcg") || name.endsWith(".rcg.gz")) {
+                try {
+                    return ExecutedCommands.fromCommandLog(frames, side, team, GameLogs.commandLogBeside(log));
+                } catch (IllegalArgumentException none) {
+                    break; // rcssserver writes its .rcl only with text_logging
+                }
+            }
+        }
+        return ExecutedCommands.fromCounters(frames, side);
     }
 
     /**
