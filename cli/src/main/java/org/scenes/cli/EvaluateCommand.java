@@ -19,9 +19,11 @@ import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.ServerAddress;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.api.PluginRegistry;
+import org.scenes.api.Side;
 import org.scenes.evaluate.Arena;
 import org.scenes.evaluate.Comparison;
 import org.scenes.evaluate.Evaluation;
+import org.scenes.evaluate.ExternalTeam;
 import org.scenes.evaluate.HtmlReport;
 import org.scenes.evaluate.Learner;
 import org.scenes.evaluate.LiveArena;
@@ -117,6 +119,18 @@ final class EvaluateCommand implements Callable<Integer> {
                     + " Default: ${DEFAULT-VALUE}.")
     double serverWait;
 
+    @Option(names = "--teacher-command", paramLabel = "CMD",
+            description = "An external teacher team: a command started (bash -c, in its own session) for each game on"
+                    + " --server, after our opponent joined, so it plays the right side (and the imitator too);"
+                    + " {host}, {port}, {team}, {players} are replaced; its whole process group is ended after each"
+                    + " game. Needs --server-logs (the figures come from the server's logs) and SCENES.")
+    String teacherCommand;
+
+    @Option(names = "--opponent-command", paramLabel = "CMD",
+            description = "An external opponent, started like --teacher-command for each game (--players players,"
+                    + " the right side). Needs --server, --server-logs and SCENES.")
+    String opponentCommand;
+
     @Option(names = "--teacher-games", paramLabel = "DIR",
             description = "Evaluate from existing game logs instead of playing: the teacher's games, every .rcg or"
                     + " .rcg.gz in DIR (with the .rcl beside when there is one). Needs --imitator-games.")
@@ -152,7 +166,7 @@ final class EvaluateCommand implements Callable<Integer> {
             out.print(Tables.text(outcome.comparison()));
         }
         if (report != null) {
-            Path page = HtmlReport.write(report, "scenes evaluate: " + setup.teacherName + " and its imitator",
+            Path page = HtmlReport.write(report, "scenes evaluate: " + setup.teacherName() + " and its imitator",
                     outcome.about(), outcome.comparison(), outcome.results());
             if (!json) {
                 out.println();
@@ -228,7 +242,7 @@ final class EvaluateCommand implements Callable<Integer> {
     }
 
     /** Everything the evaluation needs, checked. */
-    record Setup(String teacherName, GameSetup.Team teacher, GameSetup.Team opponent, MatchConfig config,
+    record Setup(String teacherName, GameSetup.Team teacher, GameSetup.Team opponent, Side side, MatchConfig config,
                  PluginRegistry registry, List<Path> sceneFiles, int trainGames, int cycles, List<Long> seeds,
                  int thinkSteps) {
     }
@@ -258,8 +272,32 @@ final class EvaluateCommand implements Callable<Integer> {
         if (thinkSteps < 0) {
             throw new UsageException("--think-steps: must be 0 or more, not " + thinkSteps);
         }
-        return new Setup(teacher, SimulateCommand.team(teacher + ":" + players, "Teal"),
-                SimulateCommand.team(opponent, "Amber"), configs.get(0), top.global.registry(), sceneFiles, trainGames,
+        if (teacherCommand != null || opponentCommand != null) {
+            if (teacherCommand != null && opponentCommand != null) {
+                throw new UsageException("--teacher-command and --opponent-command: one external team a game for now"
+                        + " (ours joins first, the external one after it)");
+            }
+            String option = teacherCommand != null ? "--teacher-command" : "--opponent-command";
+            if (server == null || serverLogs == null) {
+                throw new UsageException(option + ": an external team plays on a server and is measured from its"
+                        + " logs: give --server HOST:PORT and --server-logs DIR");
+            }
+            if (sceneFiles.isEmpty()) {
+                throw new UsageException(option + ": give the SCENES to learn the imitator from (the teacher's games"
+                        + " are not played in process with an external team)");
+            }
+            if ((teacherCommand != null ? teacherCommand : opponentCommand).isBlank()) {
+                throw new UsageException(option + ": an empty command");
+            }
+        }
+        GameSetup.Team teacherTeam = teacherCommand != null
+                ? new GameSetup.Team("Teal", players, new ExternalTeam(teacherCommand))
+                : SimulateCommand.team(teacher + ":" + players, "Teal");
+        GameSetup.Team opponentTeam = opponentCommand != null
+                ? new GameSetup.Team("Amber", players, new ExternalTeam(opponentCommand))
+                : SimulateCommand.team(opponent, "Amber");
+        return new Setup(teacherCommand != null ? "the command '" + teacherCommand + "'" : teacher, teacherTeam,
+                opponentTeam, teacherCommand != null ? Side.RIGHT : Side.LEFT, configs.get(0), top.global.registry(), sceneFiles, trainGames,
                 cycles, seedList, thinkSteps);
     }
 
@@ -335,7 +373,7 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         Evaluation.Plan plan = new Evaluation.Plan(setup.teacher(),
                 PacedBrain.pace(imitator.brains(), setup.thinkSteps()), setup.opponent(), setup.cycles(),
-                setup.seeds());
+                setup.seeds(), setup.side());
         Evaluation.Results results;
         try (ProgressBar bar = bar("Evaluating", plan.totalCycles())) {
             results = Evaluation.run(plan, arena, step(bar));
@@ -349,6 +387,9 @@ final class EvaluateCommand implements Callable<Integer> {
     }
 
     static String describe(GameSetup.Team team) {
+        if (team.brains() instanceof ExternalTeam external) {
+            return team.name() + ", " + team.players() + " players, the command '" + external.command() + "'";
+        }
         return team.name() + ", " + team.players() + " players";
     }
 
