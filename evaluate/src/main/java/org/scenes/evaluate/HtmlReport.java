@@ -51,9 +51,18 @@ public final class HtmlReport {
                     .append(ReplayPage.escape(target.reached())).append("</td><td class=\"")
                     .append(target.met() ? "met\">met" : "missed\">not met").append("</td></tr>\n");
         }
-        html.append("</table>\n<h2>Figures</h2>\n<p class=\"note\">Mean over ").append(comparison.seeds().size())
-                .append(" seeds (").append(comparison.seeds()).append("), &plusmn; the standard deviation over seeds."
-                        + " Teacher and imitator play the same seeds, start positions and opponent.</p>\n");
+        boolean fromLogs = Stream.concat(results.teacher().stream(), results.imitator().stream())
+                .allMatch(g -> g.traces().isEmpty());
+        html.append("</table>\n<h2>Figures</h2>\n<p class=\"note\">");
+        if (fromLogs) {
+            html.append("Mean over ").append(results.teacher().size()).append(" teacher and ")
+                    .append(results.imitator().size()).append(" imitator games read from the server's logs, &plusmn;"
+                            + " the standard deviation over games.</p>\n");
+        } else {
+            html.append("Mean over ").append(comparison.seeds().size()).append(" seeds (").append(comparison.seeds())
+                    .append("), &plusmn; the standard deviation over seeds. Teacher and imitator play the same seeds,"
+                            + " start positions and opponent.</p>\n");
+        }
         html.append(Tables.html(comparison));
         html.append("<div class=\"row\">\n");
         html.append(bars(comparison, "Action mix", "% of body commands",
