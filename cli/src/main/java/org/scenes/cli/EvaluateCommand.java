@@ -191,7 +191,9 @@ final class EvaluateCommand implements Callable<Integer> {
         List<Path> teacherLogs = gameLogs("--teacher-games", teacherGames);
         List<Path> imitatorLogs = gameLogs("--imitator-games", imitatorGames);
         ServerLogGames.Read read;
-        try (ProgressBar bar = bar("Reading games", teacherLogs.size() + imitatorLogs.size())) {
+        try (ProgressBar bar = System.console() == null ? null : new ProgressBarBuilder().setTaskName("Reading games")
+                .setInitialMax(teacherLogs.size() + imitatorLogs.size()).setUnit(" games", 1)
+                .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build()) {
             read = ServerLogGames.read(teacherLogs, imitatorLogs, team, games -> step(bar).accept(games));
         } catch (IllegalArgumentException e) {
             throw new UsageException("--team: " + e.getMessage());
@@ -203,6 +205,8 @@ final class EvaluateCommand implements Callable<Integer> {
         about.put("imitator games", describe(imitatorGames, read.imitatorGames()));
         about.put("games", "read from the server's logs; each side's games numbered 1, 2, ... in name order (the"
                 + " Turing figure's folds pair them)");
+        about.put("not measured", "what only the players' own traffic tells: sees answered, the mix of commands"
+                + " sent on sees and its stuck share, agreement with a shadow teacher");
         about.put("time", String.format(Locale.ROOT, "%.1f s", (System.nanoTime() - started) / 1e9));
         PrintWriter out = spec.commandLine().getOut();
         if (json) {

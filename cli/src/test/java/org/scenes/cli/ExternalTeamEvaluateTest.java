@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -94,11 +95,23 @@ class ExternalTeamEvaluateTest {
             assertNothingLeft("sleep 735");
         }
         try (Server server = new Server(logs, 1, 3000)) {
+            // the team plays a while of a long game, then its player processes are killed
             CommandRunner cli = new CommandRunner();
-            // the team plays a few seconds of a long game, then its players are killed
-            assertEquals(ExitCodes.FAILURE, evaluate(cli, server, teamCommand("7354") + " & sleep 4; kill -9 $!",
-                    "3000", "60"));
-            assertTrue(cli.err().matches("(?s).*ended \\(exit 0\\) at cycle \\d+, before time over.*"), cli.err());
+            CompletableFuture<Integer> status = new CompletableFuture<>();
+            Thread evaluating = new Thread(() -> status.complete(evaluate(cli, server, teamCommand("7354"), "3000",
+                    "60")), "evaluate");
+            evaluating.setDaemon(true);
+            evaluating.start();
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+            while (server.time.get() < 50 && !status.isDone() && System.nanoTime() < deadline) {
+                Thread.sleep(20);
+            }
+            List<ProcessHandle> team = processesWith("--seed 7354");
+            assertTrue(server.time.get() >= 50 && !team.isEmpty(), "the game under way: cycle " + server.time.get()
+                    + ", team " + team + ", " + cli.err());
+            team.forEach(ProcessHandle::destroyForcibly);
+            assertEquals(ExitCodes.FAILURE, status.get(60, TimeUnit.SECONDS), cli.err());
+            assertTrue(cli.err().matches("(?s).*ended \\(exit \\d+\\) at cycle \\d+, before time over.*"), cli.err());
             assertNothingLeft("7354");
         }
         CommandRunner usage = new CommandRunner();
@@ -117,18 +130,43 @@ class ExternalTeamEvaluateTest {
                 "--cycles", cycles, "--seeds", "1", "--metric", "ball-goal", scenes);
     }
 
-    private static void assertNothingLeft(String marker) throws InterruptedException {
+    private static void assertNothingLeft(String marker) throws InterruptedException, IOException {
         // the group is ended before evaluate returns; give the kernel a moment to reap
         Thread.sleep(300);
-        List<String> left = ProcessHandle.allProcesses().map(p -> p.info().commandLine().orElse(""))
-                .filter(line -> line.contains(marker)).toList();
+        List<ProcessHandle> left = processesWith(marker);
         assertTrue(left.isEmpty(), "still running: " + left);
+    }
+
+    /**
+     * The processes whose command line holds {@code marker}, read from /proc (ProcessHandle's
+     * command line is empty for a JVM with a class path as long as this test's).
+     */
+    private static List<ProcessHandle> processesWith(String marker) throws IOException {
+        List<ProcessHandle> found = new java.util.ArrayList<>();
+        try (var entries = Files.list(Path.of("/proc"))) {
+            for (Path entry : entries.filter(e -> e.getFileName().toString().matches("\\d+")).toList()) {
+                String line;
+                try {
+                    line = new String(Files.readAllBytes(entry.resolve("cmdline")), java.nio.charset.StandardCharsets.UTF_8)
+                            .replace('\0', ' ');
+                } catch (IOException gone) {
+                    continue;
+                }
+                long pid = Long.parseLong(entry.getFileName().toString());
+                if (line.contains(marker) && pid != ProcessHandle.current().pid()) {
+                    ProcessHandle.of(pid).ifPresent(found::add);
+                }
+            }
+        }
+        return found;
     }
 
     /** The project's server on a free port, serving a series of games, stopped on close. */
     private static final class Server implements AutoCloseable {
         final Path logs;
         final int port;
+        /** The game clock of the latest step. */
+        final java.util.concurrent.atomic.AtomicInteger time = new java.util.concurrent.atomic.AtomicInteger();
         private final GameSeries series;
         private final ExecutorService executor = Executors.newSingleThreadExecutor();
         private final Future<List<ServerResult>> serving;
@@ -139,7 +177,8 @@ class ExternalTeamEvaluateTest {
                     .withRecordDirectory(logs).withTimings(Duration.ofSeconds(1), Duration.ofSeconds(5));
             series = new GameSeries(config, games, games, line -> { });
             CompletableFuture<Integer> started = new CompletableFuture<>();
-            serving = executor.submit(() -> series.run(s -> started.complete(s[1]), result -> { }, frame -> { }));
+            serving = executor.submit(() -> series.run(s -> started.complete(s[1]), result -> { },
+                    frame -> time.set(frame.time())));
             port = started.get(30, TimeUnit.SECONDS);
         }
 

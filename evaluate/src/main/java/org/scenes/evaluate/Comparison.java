@@ -10,7 +10,9 @@ import org.scenes.internal.protocol.CommandType;
 
 /**
  * Teacher against imitator, figure by figure, each with its spread over the seeds; the action
- * mixes' Jensen-Shannon divergence per seed; the Turing figure; and the targets of issue 13.
+ * mixes' Jensen-Shannon divergence per seed (of the commands sent on sees, and of the commands
+ * executed as the server's logs tell them); each uniform number's mean position; the Turing
+ * figure; and the targets of issue 13.
  */
 public record Comparison(List<Figure> figures, double[] teacherMix, double[] imitatorMix, Spread divergence,
                          double[] teacherExecutedMix, double[] imitatorExecutedMix, Spread executedDivergence,

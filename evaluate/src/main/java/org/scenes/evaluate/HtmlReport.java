@@ -69,11 +69,11 @@ public final class HtmlReport {
                 List.of("dashShare", "turnShare", "kickShare"), 100, "0.0"));
         html.append(bars(comparison, "Shares", "%", List.of("answered", "stuckShare", "agreement", "typeAgreement"),
                 100, "0.0"));
-        html.append(bars(comparison, "Executed action mix (server log)", "% of executed body commands",
+        html.append(bars(comparison, "Executed action mix (game log)", "% of executed body commands",
                 Comparison.EXECUTED_KEYS, 100, "0.0"));
-        html.append(bars(comparison, "Tempo and repeats (server log)", "%",
+        html.append(bars(comparison, "Tempo and repeats (game log)", "%",
                 List.of("bodyPerStep", "repeatShare"), 100, "0.0"));
-        html.append(bars(comparison, "Where the players are (server log)", "% of play-on frames",
+        html.append(bars(comparison, "Where the players are (game log)", "% of play-on frames",
                 List.of("nearBall", "onPitch", "logStuckShare", "kickOffsTaken"), 100, "0.0"));
         html.append(bars(comparison, "Per 1000 cycles", "per 1000 cycles",
                 List.of("kicksPer1000", "goalsPer1000", "goalsAgainstPer1000"), 1, "0.00"));

@@ -107,8 +107,10 @@ public final class Tables {
         root.put("teacherExecutedMix", nullable(comparison.teacherExecutedMix()));
         root.put("imitatorExecutedMix", nullable(comparison.imitatorExecutedMix()));
         root.put("executedDivergence", spread(comparison.executedDivergence()));
-        root.put("positions", Map.of("teacher", positions(comparison.teacherPositions()), "imitator",
-                positions(comparison.imitatorPositions())));
+        Map<String, Object> positions = new LinkedHashMap<>();
+        positions.put("teacher", positions(comparison.teacherPositions()));
+        positions.put("imitator", positions(comparison.imitatorPositions()));
+        root.put("positions", positions);
         TuringTest.Outcome turing = comparison.turing();
         Map<String, Object> t = new LinkedHashMap<>();
         t.put("accuracy", nullable(turing.accuracy()));
