@@ -134,6 +134,33 @@ class LogFiguresTest {
         assertEquals(20, Math.abs(figures.positions()[3][1]), 1e-9);
     }
 
+    @Test
+    void kickDirectionsAreMeasuredTowardsTheGoalTheTeamAttacks() {
+        // a kick from (10, 5): the left team aims at (52.5, 0), the right team at (-52.5, 0)
+        assertEquals(0, kickAngle(Side.LEFT, 42.5, -5), 1e-9);
+        assertEquals(0, kickAngle(Side.RIGHT, -62.5, -5), 1e-9);
+        assertEquals(180, kickAngle(Side.RIGHT, 62.5, 5), 1e-9);
+        assertEquals(90, kickAngle(Side.LEFT, 5, 42.5), 1e-9);
+    }
+
+    /** The kick angle of one kick from (10, 5) that sends the ball along (vx, vy), by a player of {@code side}. */
+    private static double kickAngle(Side side, double vx, double vy) {
+        List<GameFrame> frames = List.of(kickFrame(side, 1, 0, 0, 0), kickFrame(side, 2, 0, vx / 100, vy / 100));
+        PlayedGame game = new PlayedGame(PlayedGame.Role.TEACHER, side, 1, new GameResult(0, 0, 0, 0, 2, 2, List.of()),
+                frames, List.of());
+        LogFigures figures = LogFigures.of(game);
+        assertEquals(1, figures.kicks());
+        return figures.kickAngle();
+    }
+
+    private static GameFrame kickFrame(Side side, int time, int kicks, double vx, double vy) {
+        org.scenes.internal.gamelog.PlayerState player = new org.scenes.internal.gamelog.PlayerState(side, 1, 0, 1,
+                10.5, 5, 0, 0, 0, 0, 'h', 90, 8000, 1, 1, Double.NaN,
+                new org.scenes.internal.gamelog.PlayerState.Counts(kicks + time - 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0));
+        return new GameFrame(time, "play_on", "Teal", "Amber", 0, 0, new GameFrame.BallState(10, 5, vx, vy),
+                List.of(player));
+    }
+
     /** Players that move to the same spots and then do nothing. */
     private static final BrainFactory MUTE = (team, random) -> (message, send) -> {
         if (message.startsWith("(init ")) {
