@@ -78,6 +78,25 @@ class ExternalTeamEvaluateTest {
     }
 
     @Test
+    void anExternalOpponentPlaysTheRightSideAgainstTheTracedTeams() throws Exception {
+        Path logs = Files.createDirectories(dir.resolve("logs"));
+        try (Server server = new Server(logs, 2, 100)) {
+            CommandRunner cli = new CommandRunner();
+            int status = cli.run("evaluate", "--server", "127.0.0.1:" + server.port, "--server-logs", logs,
+                    "--server-wait", "60", "--opponent-command", teamCommand("7355").replace("krislet", "statebased"),
+                    "--players", "1", "--cycles", "100", "--seeds", "1", "--metric", "ball-goal", scenes, "--json");
+            assertEquals(ExitCodes.OK, status, cli.err());
+            assertEquals(2, server.served().size());
+            JsonNode root = ConfigFiles.JSON.readTree(cli.out());
+            assertTrue(root.at("/about/opponent").asText().startsWith("Amber, 1 players, the command '"));
+            // our teams are traced (the shadow beside the imitator), and measured from the logs too
+            assertTrue(root.at("/figures/agreement/imitator/mean").isNumber(), root.get("figures").toString());
+            assertTrue(root.at("/figures/executedDash/teacher/mean").asDouble() > 0.2);
+        }
+        assertNothingLeft("7355");
+    }
+
+    @Test
     void aCommandThatFailsNeverJoinsOrDiesGivesOneLineAndLeavesNothingRunning() throws Exception {
         Path logs = Files.createDirectories(dir.resolve("logs"));
         try (Server server = new Server(logs, 1, 200)) {
