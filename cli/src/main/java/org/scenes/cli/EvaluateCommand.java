@@ -115,8 +115,8 @@ final class EvaluateCommand implements Callable<Integer> {
     Path serverLogs;
 
     @Option(names = "--server-wait", paramLabel = "SECONDS", defaultValue = "60",
-            description = "With --server: how long each game waits for the server to accept its first player."
-                    + " Default: ${DEFAULT-VALUE}.")
+            description = "With --server: how long each game waits for the server to accept its first player,"
+                    + " and for an external team's players to join. Default: ${DEFAULT-VALUE}.")
     double serverWait;
 
     @Option(names = "--teacher-command", paramLabel = "CMD",
@@ -301,8 +301,8 @@ final class EvaluateCommand implements Callable<Integer> {
                 ? new GameSetup.Team("Amber", players, new ExternalTeam(opponentCommand))
                 : SimulateCommand.team(opponent, "Amber");
         return new Setup(teacherCommand != null ? "the command '" + teacherCommand + "'" : teacher, teacherTeam,
-                opponentTeam, teacherCommand != null ? Side.RIGHT : Side.LEFT, configs.get(0), top.global.registry(), sceneFiles, trainGames,
-                cycles, seedList, thinkSteps);
+                opponentTeam, teacherCommand != null ? Side.RIGHT : Side.LEFT, configs.get(0), top.global.registry(),
+                sceneFiles, trainGames, cycles, seedList, thinkSteps);
     }
 
     /** The embedded simulator, or with --server the live server. */

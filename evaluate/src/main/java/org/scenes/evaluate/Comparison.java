@@ -21,6 +21,10 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
     /** The order of the action mix's shares. */
     public static final List<String> ACTIONS = List.of("dash", "turn", "kick");
 
+    /** Keys of the executed action mix's shares, in the order of {@link ExecutedCommands#TYPES}. */
+    public static final List<String> EXECUTED_KEYS = List.of("executedDash", "executedTurn", "executedKick",
+            "executedCatch", "executedTackle", "executedMove");
+
     /** One figure for both sides; {@code percent} figures are shares shown as %. */
     public record Figure(String key, String label, boolean percent, Spread teacher, Spread imitator) {
     }
@@ -87,7 +91,7 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
         figures.add(figure("kickOffs", "own kick-offs per game", false, teacherLog, imitatorLog, f -> f.kickOffs()));
         figures.add(figure("kickOffsTaken", "own kick-offs taken", true, teacherLog, imitatorLog,
                 LogFigures::kickOffShare));
-        figures.add(figure("logStuckShare", "stuck share (server log)", true, teacherLog, imitatorLog,
+        figures.add(figure("logStuckShare", "stuck share (game log)", true, teacherLog, imitatorLog,
                 LogFigures::stuckShare));
         int pairs = Math.min(teacher.size(), imitator.size());
         double[] divergences = new double[pairs];
@@ -107,10 +111,6 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
                 targets(figures, traced ? "action-mix divergence" : "executed action-mix divergence",
                         traced ? divergence : executedDivergence, turing), seeds);
     }
-
-    /** Keys of the executed action mix's shares, in the order of {@link ExecutedCommands#TYPES}. */
-    public static final List<String> EXECUTED_KEYS = List.of("executedDash", "executedTurn", "executedKick",
-            "executedCatch", "executedTackle", "executedMove");
 
     public Figure figure(String key) {
         return figures.stream().filter(f -> f.key().equals(key)).findFirst()
