@@ -29,6 +29,7 @@ import org.jfree.chart.title.TextTitle;
 import org.jfree.chart.ui.TextAnchor;
 import org.jfree.data.category.DefaultCategoryDataset;
 import org.jfree.svg.SVGGraphics2D;
+import org.scenes.app.validate.Validation;
 import org.scenes.internal.files.AtomicOutput;
 import org.scenes.internal.validate.ValidationReport;
 
@@ -45,7 +46,7 @@ final class Charts {
     private Charts() {
     }
 
-    static void write(Path file, List<ValidateCommand.Outcome> outcomes) throws IOException {
+    static void write(Path file, List<Validation.Outcome> outcomes) throws IOException {
         String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
         if (!name.endsWith(".png") && !name.endsWith(".svg")) {
             throw new UsageException("--chart " + file + ": the name must end in .png or .svg");
@@ -76,20 +77,20 @@ final class Charts {
         }
     }
 
-    static JFreeChart chart(List<ValidateCommand.Outcome> outcomes) {
+    static JFreeChart chart(List<Validation.Outcome> outcomes) {
         DefaultCategoryDataset data = new DefaultCategoryDataset();
-        List<String> labels = shortLabels(outcomes.stream().map(ValidateCommand.Outcome::label).toList());
+        List<String> labels = shortLabels(outcomes.stream().map(Validation.Outcome::label).toList());
         for (int i = 0; i < outcomes.size(); i++) {
-            ValidateCommand.Outcome outcome = outcomes.get(i);
+            Validation.Outcome outcome = outcomes.get(i);
             add(data, 100 * figure(outcome, ValidationReport::accuracy), "action %", labels.get(i));
             add(data, 100 * figure(outcome, ValidationReport::directionAccuracy), "action with direction %", labels.get(i));
             add(data, 100 * figure(outcome, ValidationReport::macroF1), "macro F1 %", labels.get(i));
         }
-        String common = commonPart(outcomes.stream().map(ValidateCommand.Outcome::label).toList());
+        String common = commonPart(outcomes.stream().map(Validation.Outcome::label).toList());
         return bars("Prediction per configuration", common, "%", data, 100);
     }
 
-    private static double figure(ValidateCommand.Outcome outcome, ToDoubleFunction<ValidationReport> figure) {
+    private static double figure(Validation.Outcome outcome, ToDoubleFunction<ValidationReport> figure) {
         return outcome.report() != null ? figure.applyAsDouble(outcome.report()) : outcome.folds().mean(figure);
     }
 

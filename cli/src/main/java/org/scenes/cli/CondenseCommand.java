@@ -6,17 +6,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.scenes.api.Grid;
-import org.scenes.api.PluginRegistry;
-import org.scenes.api.Scene;
-import org.scenes.internal.match.KnowledgeBase;
-import org.scenes.internal.scene.SceneFile;
-import org.scenes.internal.scene.SceneFileHeader;
-import org.scenes.internal.scene.SceneFileReader;
-import org.scenes.internal.scene.SceneFileWriter;
-import org.scenes.internal.scene.SceneSource;
+import org.scenes.app.condense.Condensation;
 import org.scenes.internal.validate.MatchConfig;
-import org.scenes.plugins.coverage.Condenser;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -59,34 +50,15 @@ final class CondenseCommand implements Callable<Integer> {
             throw new UsageException("condense takes one metric and one k");
         }
         MatchConfig config = configs.get(0);
-        PluginRegistry registry = top.global.registry();
-        config.check(registry);
-        List<Scene> scenes = new ArrayList<>();
-        List<SceneFile> files = train.stream().map(SceneFileReader::read).toList();
-        Grid grid = Grid.common(train, files.stream().map(SceneFile::grid).toList());
-        for (SceneFile file : files) {
-            // what a knowledge base of these files would store (transforms such as mirror add scenes)
-            scenes.addAll(KnowledgeBase.stored(file.scenes(), config.transformFactory(registry).get()));
-        }
-        long start = System.nanoTime();
-        Condenser.Result result = new Condenser(config.metricFactory(registry), editK).condense(grid, scenes);
-        double seconds = (System.nanoTime() - start) / 1e9;
-        try (SceneFileWriter writer = SceneFileWriter.create(output,
-                SceneFileHeader.of(grid, new SceneSource("condensed", null)))) {
-            for (Scene scene : result.scenes()) {
-                // remembered objects and memory are rebuilt by transforms when the file is read
-                writer.write(scene.withPrevious(null).withObjects(
-                        scene.objects().stream().filter(o -> !o.remembered()).toList()));
-            }
-            writer.commit();
-        }
+        Condensation.Result result = Condensation.run(new Condensation.Request(train, config, editK, output),
+                top.global.registry());
         PrintWriter out = spec.commandLine().getOut();
         out.printf(Locale.ROOT, "%-24s %s%n", "Configuration", config.describe());
-        out.printf(Locale.ROOT, "%-24s %d%n", "Scenes", scenes.size());
+        out.printf(Locale.ROOT, "%-24s %d%n", "Scenes", result.scenes());
         out.printf(Locale.ROOT, "%-24s %d%n", "Edited away", result.edited());
-        out.printf(Locale.ROOT, "%-24s %d (%.1f %% of the scenes), %d passes%n", "Kept", result.scenes().size(),
-                100.0 * result.scenes().size() / scenes.size(), result.passes());
-        out.printf(Locale.ROOT, "%-24s %.1f s%n", "Time", seconds);
+        out.printf(Locale.ROOT, "%-24s %d (%.1f %% of the scenes), %d passes%n", "Kept", result.kept(),
+                100.0 * result.kept() / result.scenes(), result.passes());
+        out.printf(Locale.ROOT, "%-24s %.1f s%n", "Time", result.seconds());
         out.printf(Locale.ROOT, "%-24s %s%n", "Written", output);
         return ExitCodes.OK;
     }

@@ -10,9 +10,6 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
-import me.tongfei.progressbar.ConsoleProgressBarConsumer;
-import me.tongfei.progressbar.ProgressBar;
-import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.api.Grid;
 import org.scenes.api.Scene;
 import org.scenes.internal.convert.ConversionReport;
@@ -233,12 +230,12 @@ final class ConvertCommand implements Callable<Integer> {
      * the compression ratio seen so far.
      */
     private static final class Progress implements AutoCloseable {
-        private final ProgressBar bar;
+        private final TerminalProgress bar;
         private final long compressedTotal;
         private long compressedDone;
         private long textDone;
 
-        private Progress(ProgressBar bar, long compressedTotal) {
+        private Progress(TerminalProgress bar, long compressedTotal) {
             this.bar = bar;
             this.compressedTotal = compressedTotal;
         }
@@ -248,27 +245,22 @@ final class ConvertCommand implements Callable<Integer> {
             for (Path log : logs) {
                 size += Files.isRegularFile(log) ? Files.size(log) : 0;
             }
-            if (System.console() == null || (logs.size() < 2 && size < LARGE_INPUT)) {
-                return new Progress(null, size);
+            if (logs.size() < 2 && size < LARGE_INPUT) {
+                return new Progress(TerminalProgress.none(), size);
             }
             // about 10 bytes of text per gzip byte in recorded games; corrected as logs are read
             boolean compressed = logs.stream().anyMatch(l -> l.getFileName().toString().endsWith(".gz"));
-            ProgressBar bar = new ProgressBarBuilder().setTaskName("Converting")
-                    .setInitialMax(compressed ? size * 10 : size).setUnit(" MB", 1L << 20)
-                    .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build();
-            return new Progress(bar, size);
+            return new Progress(TerminalProgress.start("Converting", compressed ? size * 10 : size, " MB", 1L << 20), size);
         }
 
         void step(long textBytes) {
             textDone += textBytes;
-            if (bar != null) {
-                bar.stepBy(textBytes);
-            }
+            bar.stepBy(textBytes);
         }
 
         void logDone(Path log) throws IOException {
             compressedDone += Files.isRegularFile(log) ? Files.size(log) : 0;
-            if (bar != null && compressedDone > 0) {
+            if (compressedDone > 0) {
                 double ratio = (double) textDone / compressedDone;
                 bar.maxHint(textDone + (long) (ratio * Math.max(0, compressedTotal - compressedDone)));
             }
@@ -276,9 +268,7 @@ final class ConvertCommand implements Callable<Integer> {
 
         @Override
         public void close() {
-            if (bar != null) {
-                bar.close();
-            }
+            bar.close();
         }
     }
 

@@ -11,10 +11,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import java.util.function.LongConsumer;
-import me.tongfei.progressbar.ConsoleProgressBarConsumer;
-import me.tongfei.progressbar.ProgressBar;
-import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.ServerAddress;
 import org.scenes.agent.sim.GameSetup;
@@ -354,9 +350,10 @@ final class EvaluateCommand implements Callable<Integer> {
             for (int i = 0; i < setup.trainGames(); i++) {
                 trainingSeeds.add(1001L + i);
             }
-            try (ProgressBar bar = bar("Learning", (long) setup.trainGames() * setup.cycles())) {
+            try (TerminalProgress bar = TerminalProgress.start("Learning", (long) setup.trainGames() * setup.cycles(),
+                    " cycles", 1)) {
                 imitator = Learner.fromTeacherGames(setup.teacher(), setup.opponent(), setup.cycles(), trainingSeeds,
-                        matching, step(bar));
+                        matching, bar.stepper());
             }
             about.put("imitator learnt from", setup.trainGames() + " teacher games of " + setup.cycles()
                     + " cycles against the same opponent, seeds " + trainingSeeds + " (" + imitator.scenes() + " scenes)");
@@ -379,8 +376,8 @@ final class EvaluateCommand implements Callable<Integer> {
                 PacedBrain.pace(imitator.brains(), setup.thinkSteps()), setup.opponent(), setup.cycles(),
                 setup.seeds(), setup.side());
         Evaluation.Results results;
-        try (ProgressBar bar = bar("Evaluating", plan.totalCycles())) {
-            results = Evaluation.run(plan, arena, step(bar));
+        try (TerminalProgress bar = TerminalProgress.start("Evaluating", plan.totalCycles(), " cycles", 1)) {
+            results = Evaluation.run(plan, arena, bar.stepper());
         }
         Comparison comparison = Comparison.of(results);
         if (results.teacher().stream().anyMatch(g -> g.frames().isEmpty())) {
@@ -395,20 +392,5 @@ final class EvaluateCommand implements Callable<Integer> {
             return team.name() + ", " + team.players() + " players, the command '" + external.command() + "'";
         }
         return team.name() + ", " + team.players() + " players";
-    }
-
-    /** A progress bar on a terminal, none when piped. */
-    static ProgressBar bar(String task, long max) {
-        return System.console() == null ? null
-                : new ProgressBarBuilder().setTaskName(task).setInitialMax(max).setUnit(" cycles", 1)
-                        .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build();
-    }
-
-    static LongConsumer step(ProgressBar bar) {
-        return done -> {
-            if (bar != null) {
-                bar.stepTo(done);
-            }
-        };
     }
 }

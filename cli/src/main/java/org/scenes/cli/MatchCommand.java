@@ -11,7 +11,6 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
-import me.tongfei.progressbar.ProgressBar;
 import org.scenes.agent.BrainFactory;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.teacher.Teachers;
@@ -100,9 +99,9 @@ final class MatchCommand implements Callable<Integer> {
             throw new UsageException("--names: the two teams need different names");
         }
         Match.Outcome outcome;
-        try (ProgressBar bar = EvaluateCommand.bar("Playing", cycles)) {
+        try (TerminalProgress bar = TerminalProgress.start("Playing", cycles, " cycles", 1)) {
             outcome = Match.play(l.team(), l.shadow(), r.team(), r.shadow(), cycles, gameSeed, Arena.embedded(),
-                    time -> EvaluateCommand.step(bar).accept(time));
+                    bar::stepTo);
         }
         GameFigures leftFigures = GameFigures.of(outcome.left());
         GameFigures rightFigures = GameFigures.of(outcome.right());

@@ -4,6 +4,7 @@ import java.io.PrintWriter;
 import java.util.List;
 import java.util.Map;
 import java.util.function.ToDoubleFunction;
+import org.scenes.app.validate.Validation;
 import org.scenes.api.ActionLabel;
 import org.scenes.api.ActionType;
 import org.scenes.internal.validate.Folds;
@@ -14,8 +15,8 @@ final class ReportTables {
     private ReportTables() {
     }
 
-    static void print(PrintWriter out, List<ValidateCommand.Outcome> outcomes) {
-        for (ValidateCommand.Outcome outcome : outcomes) {
+    static void print(PrintWriter out, List<Validation.Outcome> outcomes) {
+        for (Validation.Outcome outcome : outcomes) {
             out.println("== " + outcome.label());
             if (outcome.report() != null) {
                 printRun(out, outcome.report());
@@ -26,7 +27,7 @@ final class ReportTables {
         }
         if (outcomes.size() > 1) {
             out.printf("%-60s %9s %9s %9s %9s%n", "Configuration", "Action%", "Majority%", "Previous%", "Kick%");
-            for (ValidateCommand.Outcome outcome : outcomes) {
+            for (Validation.Outcome outcome : outcomes) {
                 ValidationReport pooled = outcome.report() != null ? outcome.report() : outcome.folds().pooled();
                 out.printf("%-60s %9.3f %9.3f %9.3f %9.3f%n", outcome.label(), 100 * outcome.accuracy(),
                         100 * pooled.majorityBaseline(ActionLabel.PRIMARY), 100 * pooled.repeatPreviousBaseline(ActionLabel.PRIMARY),

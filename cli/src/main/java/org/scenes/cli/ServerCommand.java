@@ -43,8 +43,9 @@ final class ServerCommand implements Callable<Integer> {
             description = "Game length in cycles; half time at half. Default: ${DEFAULT-VALUE}.")
     int cycles;
 
-    @Option(names = "--seed", paramLabel = "N", defaultValue = "1",
-            description = "Seed of the server's randomness (motion and kick noise). Default: ${DEFAULT-VALUE}.")
+    @Option(names = {"--game-seed", "--seed"}, paramLabel = "N", defaultValue = "1",
+            description = "The game's seed: the server's randomness (motion and kick noise); --seed is the older spelling."
+                    + " Default: ${DEFAULT-VALUE}.")
     long seed;
 
     @Option(names = "--record", paramLabel = "DIR",
@@ -67,7 +68,7 @@ final class ServerCommand implements Callable<Integer> {
     int games;
 
     @Option(names = "--games-per-seed", paramLabel = "K", defaultValue = "1",
-            description = "With --games: K games in a row share a seed, game g (from 0) plays seed --seed + g / K;"
+            description = "With --games: K games in a row share a seed, game g (from 0) plays seed --game-seed + g / K;"
                     + " 2 serves the teacher's and the imitator's game of each seed of 'scenes evaluate'."
                     + " Default: ${DEFAULT-VALUE}.")
     int gamesPerSeed;

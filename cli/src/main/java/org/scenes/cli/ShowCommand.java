@@ -11,6 +11,7 @@ import org.scenes.internal.scene.VisionTable;
 import org.scenes.plugins.coverage.KeyScenes;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -45,12 +46,8 @@ final class ShowCommand implements Callable<Integer> {
     @ParentCommand
     ScenesCommand top;
 
-    @Option(names = "--metric", paramLabel = "NAME", description = "The metric ranking --key-scenes (default: the default configuration's).")
-    String metric;
-
-    @Option(names = "--key-by", paramLabel = "influence|events",
-            description = "--key-scenes by influence on neighbours' predictions (default) or the first N events (kicks, moves, the ball changing hands).")
-    String keyBy = "influence";
+    @Mixin
+    KeySceneChoice keyScenes;
 
     @Override
     public Integer call() {
@@ -87,7 +84,7 @@ final class ShowCommand implements Callable<Integer> {
 
     private int showKeyScenes(PrintWriter out, int count) {
         SceneFile scenes = SceneFileReader.read(file);
-        return print(out, KeySceneChoice.choose(scenes, count, keyBy, metric, top.global.registry()), scenes.grid(), keyBy);
+        return print(out, keyScenes.choose(scenes, count, top.global.registry()), scenes.grid(), keyScenes.keyBy.key());
     }
 
     private static int print(PrintWriter out, java.util.List<KeyScenes.Ranked> ranked, Grid grid, String measure) {

@@ -5,9 +5,6 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import me.tongfei.progressbar.ConsoleProgressBarConsumer;
-import me.tongfei.progressbar.ProgressBar;
-import me.tongfei.progressbar.ProgressBarBuilder;
 import org.scenes.agent.BrainFactory;
 import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
@@ -45,8 +42,9 @@ final class SimulateCommand implements Callable<Integer> {
             description = "Game length in cycles of 100 ms; half time at half. Default: ${DEFAULT-VALUE}.")
     int cycles;
 
-    @Option(names = "--seed", paramLabel = "N", defaultValue = "1",
-            description = "Seed of all randomness (noise, teachers' choices). Default: ${DEFAULT-VALUE}.")
+    @Option(names = {"--game-seed", "--seed"}, paramLabel = "N", defaultValue = "1",
+            description = "The game's seed: all its randomness (noise, teachers' choices); --seed is the older spelling."
+                    + " Default: ${DEFAULT-VALUE}.")
     long seed;
 
     @Option(names = "--out-dir", paramLabel = "DIR", required = true,
@@ -107,15 +105,8 @@ final class SimulateCommand implements Callable<Integer> {
 
     /** Runs the simulator's game with a progress bar in game cycles on a terminal, silent when piped. */
     static GameResult play(Simulator simulator, int cycles) throws IOException {
-        try (ProgressBar bar = System.console() == null ? null
-                : new ProgressBarBuilder().setTaskName("Simulating").setInitialMax(cycles)
-                        .setUnit(" cycles", 1).setConsumer(new ConsoleProgressBarConsumer(System.err))
-                        .clearDisplayOnFinish().build()) {
-            return simulator.run(time -> {
-                if (bar != null) {
-                    bar.stepTo(time);
-                }
-            });
+        try (TerminalProgress bar = TerminalProgress.start("Simulating", cycles, " cycles", 1)) {
+            return simulator.run(bar::stepTo);
         }
     }
 

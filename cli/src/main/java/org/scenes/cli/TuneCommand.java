@@ -3,19 +3,10 @@ package org.scenes.cli;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import me.tongfei.progressbar.ConsoleProgressBarConsumer;
-import me.tongfei.progressbar.ProgressBar;
-import me.tongfei.progressbar.ProgressBarBuilder;
-import org.scenes.internal.scene.SceneFile;
-import org.scenes.internal.scene.SceneFileReader;
-import org.scenes.internal.validate.Folds;
-import org.scenes.internal.validate.MatchConfig;
-import org.scenes.internal.validate.RandomSearch;
-import org.scenes.internal.validate.Tuner;
+import org.scenes.app.tune.Tuning;
 import org.scenes.options.TuneOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -75,27 +66,20 @@ final class TuneCommand implements Callable<Integer> {
             TriedTable.checkName(table);
             OutputPaths.checkFile("--table", table, train);
         }
-        List<SceneFile> files = new ArrayList<>();
-        for (Path path : train) {
-            files.add(SceneFileReader.read(path));
-        }
         PrintWriter out = spec.commandLine().getOut();
-        Folds.Protocol chosen = tuning.protocol();
-        Tuner.Objective goal = tuning.objective();
+        Tuning.Request request = new Tuning.Request(train, tuning.protocol(), tuning.objective(), tuning.seed());
         if (search.equals("random")) {
-            return random(files, chosen, goal, limit, out);
+            return random(request, limit, out);
         }
-        Tuner tuner = new Tuner(files, top.global.registry(), chosen, goal, tuning.quiet() ? null : line -> {
+        Tuning.Outcome outcome = Tuning.descent(request, sweeps, top.global.registry(), tuning.quiet() ? null : line -> {
             out.println(line);
             out.flush();
         });
-        Tuner.Result result = tuner.tune(Tuner.defaultStarts(MatchConfig.DEFAULT.withSeed(tuning.seed())), Tuner.defaultSearch(), sweeps);
         if (table != null) {
-            TriedTable.write(table, tuner.tried());
+            TriedTable.write(table, outcome.tried());
         }
-        Map<String, Object> score = tuning.crossValidation(result, train.stream().map(Path::toString).toList());
-        ConfigFiles.write(output, result.config(), Map.of("crossValidation", score));
-        TuneOptions.printBest(out, result);
+        ConfigFiles.write(output, outcome.config(), Map.of("crossValidation", outcome.crossValidation()));
+        TuneOptions.printBest(out, outcome.configurations(), outcome.config(), outcome.score(), outcome.figures());
         out.println("Written to " + output);
         out.flush();
         return ExitCodes.OK;
@@ -127,44 +111,27 @@ final class TuneCommand implements Callable<Integer> {
         }
     }
 
-    private Integer random(List<SceneFile> files, Folds.Protocol chosen, Tuner.Objective goal, Budget limit, PrintWriter out)
-            throws java.io.IOException {
-        RandomSearch searcher = new RandomSearch(files, top.global.registry(), chosen, goal);
-        long startNanos = System.nanoTime();
-        long deadline = limit.nanos() == Long.MAX_VALUE ? Long.MAX_VALUE : startNanos + limit.nanos();
-        RandomSearch.Result result;
-        try (ProgressBar bar = System.console() == null || tuning.quiet() ? null
-                : new ProgressBarBuilder().setTaskName("Tuning").setInitialMax(1).setUnit(" configurations", 1)
-                        .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build()) {
-            result = searcher.run(MatchConfig.DEFAULT.withSeed(tuning.seed()), tuning.seed(), limit.configurations(), deadline,
-                    bar == null ? null : (done, planned, best) -> {
+    private Integer random(Tuning.Request request, Budget limit, PrintWriter out) throws java.io.IOException {
+        Tuning.Outcome outcome;
+        try (TerminalProgress bar = tuning.quiet() ? TerminalProgress.none()
+                : TerminalProgress.start("Tuning", 1, " configurations", 1)) {
+            outcome = Tuning.random(request, limit.configurations(), limit.nanos(), top.global.registry(),
+                    !bar.shown() ? null : (done, planned, best) -> {
                         synchronized (bar) {
                             bar.maxHint(Math.max(planned, done));
                             bar.stepTo(done);
-                            bar.setExtraMessage(Double.isInfinite(best) ? "" : String.format(java.util.Locale.ROOT, "best %.4f", best));
+                            bar.message(Double.isInfinite(best) ? "" : String.format(java.util.Locale.ROOT, "best %.4f", best));
                         }
                     });
         }
-        double seconds = (System.nanoTime() - startNanos) / 1e9;
         if (table != null) {
-            TriedTable.write(table, result.table());
+            TriedTable.write(table, outcome.tried());
         }
-        long distinct = result.table().stream().map(RandomSearch.Tried::config).distinct().count();
-        Map<String, Object> score = new LinkedHashMap<>();
-        score.put("score", result.score());
-        score.put("protocol", tuning.protocolName());
-        score.put("objective", tuning.objectiveName());
-        score.put("search", "random search with successive halving");
-        score.put("figures", result.figures());
-        score.put("configurationsTried", distinct);
-        score.put("scores", result.table().size());
-        score.put("seconds", Math.round(seconds * 10) / 10.0);
-        score.put("trainFiles", train.stream().map(Path::toString).toList());
-        ConfigFiles.write(output, result.config(), Map.of("crossValidation", score));
-        out.printf("Best of %d configurations (%d scores, %.1f s): %s%n", distinct, result.table().size(), seconds,
-                result.config().describe());
-        out.printf("Cross-validation score %.4f (accuracy %.4f, with direction %.4f, macro F1 %.4f)%n", result.score(),
-                result.figures().get("accuracy"), result.figures().get("directionAccuracy"), result.figures().get("macroF1"));
+        ConfigFiles.write(output, outcome.config(), Map.of("crossValidation", outcome.crossValidation()));
+        out.printf("Best of %d configurations (%d scores, %.1f s): %s%n", outcome.configurations(), outcome.scores(),
+                outcome.seconds(), outcome.config().describe());
+        out.printf("Cross-validation score %.4f (accuracy %.4f, with direction %.4f, macro F1 %.4f)%n", outcome.score(),
+                outcome.figures().get("accuracy"), outcome.figures().get("directionAccuracy"), outcome.figures().get("macroF1"));
         if (table != null) {
             out.println("Tried configurations written to " + table);
         }

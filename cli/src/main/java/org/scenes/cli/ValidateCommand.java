@@ -7,22 +7,12 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import me.tongfei.progressbar.ConsoleProgressBarConsumer;
-import me.tongfei.progressbar.ProgressBar;
-import me.tongfei.progressbar.ProgressBarBuilder;
-import org.scenes.api.ActionType;
-import org.scenes.api.Grid;
-import org.scenes.api.PluginRegistry;
-import org.scenes.api.Scene;
-import org.scenes.internal.files.CsvTables;
-import org.scenes.internal.match.KnowledgeBase;
-import org.scenes.internal.scene.SceneFile;
-import org.scenes.internal.scene.SceneFileException;
-import org.scenes.internal.scene.SceneFileReader;
+import org.scenes.app.validate.Validation;
+import org.scenes.app.validate.Validation.Outcome;
 import org.scenes.internal.validate.Folds;
 import org.scenes.internal.validate.MatchConfig;
-import org.scenes.internal.validate.ValidationReport;
-import org.scenes.internal.validate.Validator;
+import org.scenes.internal.validate.MatchConfigFile;
+import org.scenes.options.KeyConverters;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -56,9 +46,11 @@ final class ValidateCommand implements Callable<Integer> {
             description = "Cross-validate: each file is tested against the next one (cyclically); mean and standard deviation.")
     List<Path> folds = new ArrayList<>();
 
-    @Option(names = "--protocol", paramLabel = "next|leave-one-out",
-            description = "With --folds: train on the next file (the thesis' protocol, default) or on all other files.")
-    String protocol = "next";
+    @Option(names = "--protocol", paramLabel = "next|leave-one-out", defaultValue = "next",
+            converter = KeyConverters.Protocol.class,
+            description = "With --folds: train on the next file (the thesis' protocol, validate's default) or on all other"
+                    + " files (tune's default).")
+    Folds.Protocol foldProtocol;
 
     @Mixin
     MatchOptions match;
@@ -80,17 +72,6 @@ final class ValidateCommand implements Callable<Integer> {
     @Option(names = "--sequential", description = "Run queries on one thread (same results, for timing comparisons).")
     boolean sequential;
 
-    /** One configuration's result: a single run, or folds. */
-    record Outcome(String label, MatchConfig config, ValidationReport report, Folds folds) {
-        double accuracy() {
-            return report != null ? report.accuracy() : folds.mean(ValidationReport::accuracy);
-        }
-
-        double kickRecall() {
-            return report != null ? report.recall(ActionType.KICK) : folds.mean(r -> r.recall(ActionType.KICK));
-        }
-    }
-
     @Override
     public Integer call() throws Exception {
         boolean split = !train.isEmpty() || !test.isEmpty();
@@ -106,10 +87,6 @@ final class ValidateCommand implements Callable<Integer> {
                         : "give --test FILE... or --self");
             }
         }
-        Folds.Protocol foldProtocol = Folds.Protocol.fromKey(protocol);
-        if (foldProtocol == null) {
-            throw new UsageException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
-        }
         if (chart != null) {
             OutputPaths.checkFile("--chart", chart, OutputPaths.inputs(train, test, folds), ".png", ".svg");
         }
@@ -120,62 +97,15 @@ final class ValidateCommand implements Callable<Integer> {
             OutputPaths.checkFile("--predictions", predictions, OutputPaths.inputs(train, test, folds), ".csv");
         }
         List<MatchConfig> configs = match.configs();
-        PluginRegistry registry = top.global.registry();
-        for (MatchConfig config : configs) {
-            config.check(registry);
-        }
         if (!labels.isEmpty() && labels.size() != configs.size()) {
             throw new UsageException(labels.size() + " --label for " + configs.size() + " configurations");
         }
-        List<Path> trainPaths = folds.isEmpty() ? train : folds;
-        List<Path> testPaths = self ? List.of() : test;
-        // Train and test are checked as one set: a test grid unlike the training grid matches silently wrong.
-        List<Path> allPaths = concat(trainPaths, testPaths);
-        List<SceneFile> all = readSameGrid(allPaths);
-        for (int i = 0; i < all.size(); i++) {
-            if (all.get(i).scenes().isEmpty()) {
-                // an accuracy over no scene is NaN, and a knowledge base without it silently smaller
-                throw new SceneFileException(allPaths.get(i), 0, 0, "holds no scenes; convert a log that has some", null);
-            }
-        }
-        List<SceneFile> trainFiles = all.subList(0, trainPaths.size());
-        List<SceneFile> testFiles = self ? trainFiles : all.subList(trainPaths.size(), all.size());
-        long queries = (long) configs.size() * testFiles.stream().mapToLong(f -> f.scenes().size()).sum();
-        List<Outcome> outcomes = new ArrayList<>();
-        // per configuration, the file and cycle of each query, for --predictions
-        List<List<String>> queryFiles = new ArrayList<>();
-        List<List<Integer>> queryCycles = new ArrayList<>();
-        try (ProgressBar bar = progress(queries)) {
-            Runnable tick = bar == null ? null : bar::step;
-            for (int i = 0; i < configs.size(); i++) {
-                MatchConfig config = configs.get(i);
-                String label = labels.isEmpty() ? config.describe() : labels.get(i);
-                if (!folds.isEmpty()) {
-                    outcomes.add(new Outcome(label, config, null, Folds.run(trainFiles, config, registry, !sequential, tick, foldProtocol)));
-                } else {
-                    KnowledgeBase knowledge = KnowledgeBase.fromFiles(trainFiles, config.transformFactory(registry));
-                    List<Scene> queriesOf = new ArrayList<>();
-                    List<String> fileOf = new ArrayList<>();
-                    List<Integer> cycleOf = new ArrayList<>();
-                    queryFiles.add(fileOf);
-                    queryCycles.add(cycleOf);
-                    List<Path> testNames = self ? trainPaths : testPaths;
-                    for (int f = 0; f < testFiles.size(); f++) {
-                        List<Scene> transformed = KnowledgeBase.transform(testFiles.get(f).scenes(),
-                                config.transformFactory(registry).get());
-                        queriesOf.addAll(transformed);
-                        for (Scene scene : transformed) {
-                            fileOf.add(String.valueOf(testNames.get(f).getFileName()));
-                            cycleOf.add(scene.cycle());
-                        }
-                    }
-                    ValidationReport report = Validator.run(knowledge, queriesOf, config, registry, !sequential, tick);
-                    outcomes.add(new Outcome(label, config, report, null));
-                }
-            }
-        }
+        boolean crossValidate = !folds.isEmpty();
+        Validation.Request request = new Validation.Request(crossValidate ? folds : train, self ? List.of() : test, self,
+                crossValidate, foldProtocol, configs, labels, !sequential);
+        List<Outcome> outcomes = Validation.run(request, top.global.registry(), TerminalProgress.reporter());
         if (predictions != null) {
-            writePredictions(outcomes, queryFiles, queryCycles);
+            Validation.writePredictions(predictions, outcomes);
         }
         PrintWriter out = spec.commandLine().getOut();
         if (json) {
@@ -193,64 +123,12 @@ final class ValidateCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
-    /** One row per test scene and configuration, for error analysis (pandas, a spreadsheet). */
-    private void writePredictions(List<Outcome> outcomes, List<List<String>> files, List<List<Integer>> cycles)
-            throws java.io.IOException {
-        List<List<Object>> rows = new ArrayList<>();
-        for (int o = 0; o < outcomes.size(); o++) {
-            Outcome outcome = outcomes.get(o);
-            ValidationReport report = outcome.report();
-            for (int i = 0; i < report.testScenes(); i++) {
-                rows.add(List.of(outcome.label(), files.get(o).get(i), cycles.get(o).get(i), commands(report.recorded().get(i)),
-                        commands(report.predictions().get(i)), report.right(i), report.rightWithDirection(i)));
-            }
-        }
-        CsvTables.write(predictions, List.of("configuration", "file", "cycle", "recorded", "predicted", "type_right",
-                "direction_right"), rows);
-    }
-
-    private static String commands(List<org.scenes.api.Action> actions) {
-        StringBuilder text = new StringBuilder();
-        for (org.scenes.api.Action action : actions) {
-            text.append(action.command());
-        }
-        return text.length() == 0 ? "none" : text.toString();
-    }
-
-    /**
-     * Reads scene files that must share one grid (matching never mixes grids), on all cores:
-     * reading is the part of a validation that does not spread over queries.
-     */
-    static List<SceneFile> readSameGrid(List<Path> paths) {
-        List<SceneFile> files = paths.parallelStream().map(SceneFileReader::read).toList();
-        Grid.common(paths, files.stream().map(SceneFile::grid).toList());
-        return files;
-    }
-
-    private static List<Path> concat(List<Path> first, List<Path> second) {
-        List<Path> all = new ArrayList<>(first);
-        all.addAll(second);
-        return all;
-    }
-
-    /**
-     * A bar on a terminal, whatever the number of queries (a slow configuration takes minutes over a
-     * few thousand), cleared when done; none when output is piped.
-     */
-    private static ProgressBar progress(long total) {
-        if (System.console() == null || total == 0) {
-            return null;
-        }
-        return new ProgressBarBuilder().setTaskName("Validating").setInitialMax(total)
-                .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build();
-    }
-
     private static void printJson(PrintWriter out, List<Outcome> outcomes) throws Exception {
         List<Map<String, Object>> maps = new ArrayList<>();
         for (Outcome outcome : outcomes) {
             Map<String, Object> map = new LinkedHashMap<>();
             map.put("label", outcome.label());
-            map.put("config", ConfigFiles.toMap(outcome.config()));
+            map.put("config", MatchConfigFile.toMap(outcome.config()));
             map.putAll(outcome.report() != null ? outcome.report().toMap() : outcome.folds().toMap());
             maps.add(map);
         }

@@ -1,5 +1,6 @@
 package org.scenes.api;
 
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -21,5 +22,15 @@ public interface NamedProvider {
      */
     default Map<String, String> options() {
         return Map.of();
+    }
+
+    /**
+     * The options {@code scenes tune --search random} may search, each with its values and scale;
+     * each names one of {@link #options()} (the registry refuses a provider whose dimension does not).
+     *
+     * @return the searchable options, none by default
+     */
+    default List<TuneDimension> tuneDimensions() {
+        return List.of();
     }
 }

@@ -1,5 +1,7 @@
 package org.scenes.api;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 import org.scenes.internal.match.ObjectSetMetric;
 
@@ -24,6 +26,30 @@ public final class ObjectSetMetrics {
      */
     public static Map<String, String> options(boolean projection) {
         return ObjectSetMetric.options(projection);
+    }
+
+    /**
+     * The dimensions {@code scenes tune} may search for an object-set metric that compares positions
+     * ({@code continuous}, {@code projection}): the polar space's distance and direction weights, the
+     * side of the heading, the distance rings, the unmatched penalty and its scale, and for a
+     * projecting metric the cycles projected. The values are the random search's (docs/validation.md).
+     *
+     * @param projection true for a projecting metric's {@code cycles}
+     * @return the dimensions, in the order the search draws them
+     */
+    public static List<TuneDimension> tuneDimensions(boolean projection) {
+        List<TuneDimension> dimensions = new ArrayList<>(List.of(
+                TuneDimension.log("distance-weight", 1, 3, 10, 30, 100),
+                TuneDimension.log("direction-weight", 0.3, 1, 3, 10, 30, 100),
+                TuneDimension.log("side-weight", 30, 100, 300, 1000),
+                // 1000 twice: drawn twice as often; 0: no rings
+                TuneDimension.log("row-weight", 0, 10, 100, 1000, 1000, 3000),
+                TuneDimension.log("penalty", 10, 100, 1000, 20000, 20000),
+                TuneDimension.log("penalty-scale", 10, 100, 10000)));
+        if (projection) {
+            dimensions.add(TuneDimension.linear("cycles", -1, 1, 2));
+        }
+        return dimensions;
     }
 
     /**

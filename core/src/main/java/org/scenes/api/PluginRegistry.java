@@ -10,6 +10,7 @@ import java.security.CodeSource;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.EnumMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -147,6 +148,12 @@ public final class PluginRegistry {
                     + origin(provider) + " has an invalid name '" + name
                     + "': use lower case letters, digits and dashes, starting with a letter or digit");
         }
+        for (TuneDimension dimension : provider.tuneDimensions()) {
+            if (!provider.options().containsKey(dimension.option())) {
+                throw new PluginException("the " + kind.label() + " plugin '" + name + "' from " + origin(provider)
+                        + " declares the tune dimension '" + dimension.option() + "', which is not one of its options");
+            }
+        }
         NamedProvider previous = byName.putIfAbsent(name, provider);
         if (previous != null) {
             throw new PluginException("two " + kind.label() + " plugins are named '" + name + "': "
@@ -250,6 +257,22 @@ public final class PluginRegistry {
         }
         int colon = spec.indexOf(':');
         return (colon < 0 ? spec : spec.substring(0, colon)).trim().toLowerCase(Locale.ROOT);
+    }
+
+    /**
+     * The dimensions {@code scenes tune} may search for a provider, by option key.
+     *
+     * @param kind metric, selector or transform
+     * @param spec the provider's name, optionally followed by {@code :argument}
+     * @return the provider's declared dimensions, in its order
+     * @throws PluginException when no provider of that kind has the name
+     */
+    public Map<String, TuneDimension> tuneDimensions(PluginKind kind, String spec) {
+        Map<String, TuneDimension> dimensions = new LinkedHashMap<>();
+        for (TuneDimension dimension : find(kind, spec).tuneDimensions()) {
+            dimensions.put(dimension.option(), dimension);
+        }
+        return dimensions;
     }
 
     /**

@@ -73,6 +73,35 @@ class PluginRegistryTest {
     }
 
     @Test
+    void aProviderDeclaresTheDimensionsTuneMaySearch() {
+        TuneDimension scale = registry.tuneDimensions(PluginKind.METRIC, "counting").get("scale");
+        assertEquals(List.of(0.0, 1.0, 10.0), scale.values());
+        assertEquals(TuneDimension.Scale.LOG, scale.scale());
+        assertEquals(10.0, scale.max());
+        assertTrue(registry.tuneDimensions(PluginKind.METRIC, "constant").isEmpty());
+    }
+
+    @Test
+    void aTuneDimensionThatIsNoOptionIsAnError(@TempDir Path dir) throws IOException {
+        Path services = dir.resolve("META-INF/services/org.scenes.api.MetricProvider");
+        Files.createDirectories(services.getParent());
+        Files.writeString(services, "org.scenes.api.TestMetrics$Misdeclared\n");
+        ClassLoader loader = new URLClassLoader(new URL[] {dir.toUri().toURL()}, getClass().getClassLoader());
+
+        PluginException error = assertThrows(PluginException.class, () -> PluginRegistry.load(loader));
+
+        assertTrue(error.getMessage().contains("'misdeclared'") && error.getMessage().contains("tune dimension 'scal'"),
+                error.getMessage());
+    }
+
+    @Test
+    void aLogDimensionTakesNoNegativeValues() {
+        assertThrows(IllegalArgumentException.class, () -> TuneDimension.log("scale", -1, 1));
+        assertThrows(IllegalArgumentException.class, () -> TuneDimension.linear("cycles"));
+        assertEquals(-1.0, TuneDimension.linear("cycles", -1, 1, 2).min());
+    }
+
+    @Test
     void aMissingPluginDirectoryIsNamed(@TempDir Path dir) {
         Path missing = dir.resolve("nope");
         PluginException error = assertThrows(PluginException.class, () -> PluginRegistry.load(List.of(missing)));

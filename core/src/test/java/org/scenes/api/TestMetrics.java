@@ -1,5 +1,6 @@
 package org.scenes.api;
 
+import java.util.List;
 import java.util.Map;
 
 /** Metric providers on the test class path, registered in META-INF/services. */
@@ -25,6 +26,11 @@ final class TestMetrics {
         }
 
         @Override
+        public List<TuneDimension> tuneDimensions() {
+            return List.of(TuneDimension.log("scale", 0, 1, 10));
+        }
+
+        @Override
         public SceneMetric create(PluginConfig config) {
             double scale = config.doubleOption("scale", 1);
             return (query, stored) -> scale * stored.objects().size();
@@ -47,6 +53,19 @@ final class TestMetrics {
         public SceneMetric create(PluginConfig config) {
             double value = Double.parseDouble(config.argument());
             return (query, stored) -> value;
+        }
+    }
+
+    /** Declares a tune dimension that is none of its options: loading it must fail. */
+    public static final class Misdeclared extends Counting {
+        @Override
+        public String name() {
+            return "misdeclared";
+        }
+
+        @Override
+        public List<TuneDimension> tuneDimensions() {
+            return List.of(TuneDimension.log("scal", 1, 10));
         }
     }
 

@@ -1,10 +1,9 @@
 package org.scenes.options;
 
 import java.io.PrintWriter;
-import java.util.LinkedHashMap;
-import java.util.List;
 import java.util.Map;
 import org.scenes.internal.validate.Folds;
+import org.scenes.internal.validate.MatchConfig;
 import org.scenes.internal.validate.Tuner;
 import picocli.CommandLine.Option;
 
@@ -16,13 +15,16 @@ public final class TuneOptions {
     @Option(names = "--sweeps", paramLabel = "N", description = "Passes over the search dimensions (default 2).")
     private int sweeps = 2;
 
-    @Option(names = "--protocol", paramLabel = "leave-one-out|next",
-            description = "Cross-validation: each file against all others (default) or against the next one, as the thesis did.")
-    private String protocol = "leave-one-out";
+    @Option(names = "--protocol", paramLabel = "leave-one-out|next", defaultValue = "leave-one-out",
+            converter = KeyConverters.Protocol.class,
+            description = "Cross-validation: each file against all others (tune's default) or against the next one, as the"
+                    + " thesis did (validate --folds' default).")
+    private Folds.Protocol protocol;
 
-    @Option(names = "--objective", paramLabel = "mean|accuracy|direction|macro-f1",
+    @Option(names = "--objective", paramLabel = "mean|accuracy|direction|macro-f1", defaultValue = "mean",
+            converter = KeyConverters.Objective.class,
             description = "What to maximise: the mean of accuracy, action-with-direction accuracy and macro F1 (default), or one of them.")
-    private String objective = "mean";
+    private Tuner.Objective objective;
 
     @Option(names = "--quiet", description = "Do not print each configuration tried.")
     private boolean quiet;
@@ -47,56 +49,23 @@ public final class TuneOptions {
         return sweeps;
     }
 
-    /** @throws OptionException for an unknown protocol */
     public Folds.Protocol protocol() {
-        Folds.Protocol chosen = Folds.Protocol.fromKey(protocol);
-        if (chosen == null) {
-            throw new OptionException("--protocol must be " + Folds.Protocol.keys() + ", not " + protocol);
-        }
-        return chosen;
-    }
-
-    /** @throws OptionException for an unknown objective */
-    public Tuner.Objective objective() {
-        return switch (objective) {
-            case "mean" -> Tuner.Objective.MEAN;
-            case "accuracy" -> Tuner.Objective.ACCURACY;
-            case "direction" -> Tuner.Objective.DIRECTION;
-            case "macro-f1" -> Tuner.Objective.MACRO_F1;
-            default -> throw new OptionException("--objective must be mean, accuracy, direction or macro-f1, not "
-                    + objective);
-        };
-    }
-
-    /** The {@code crossValidation} block of the configuration file a descent writes. */
-    public Map<String, Object> crossValidation(Tuner.Result result, List<String> trainFiles) {
-        Map<String, Object> score = new LinkedHashMap<>();
-        score.put("score", result.score());
-        score.put("protocol", protocol);
-        score.put("objective", objective);
-        score.put("scoreFormula", objective.equals("mean")
-                ? "(accuracy + action-with-direction accuracy + macro F1) / 3 over the decisions of all folds"
-                : objective + " over the decisions of all folds");
-        score.put("figures", result.figures());
-        score.put("configurationsTried", result.evaluated());
-        score.put("trainFiles", trainFiles);
-        return score;
-    }
-
-    /** The protocol's name as given. */
-    public String protocolName() {
         return protocol;
     }
 
-    /** The objective's name as given. */
-    public String objectiveName() {
+    public Tuner.Objective objective() {
         return objective;
     }
 
     /** The two lines naming the configuration a descent chose and its score. */
     public static void printBest(PrintWriter out, Tuner.Result result) {
-        out.printf("Best of %d configurations: %s%n", result.evaluated(), result.config().describe());
-        out.printf("Cross-validation score %.4f (accuracy %.4f, with direction %.4f, macro F1 %.4f)%n", result.score(),
-                result.figures().get("accuracy"), result.figures().get("directionAccuracy"), result.figures().get("macroF1"));
+        printBest(out, result.evaluated(), result.config(), result.score(), result.figures());
+    }
+
+    /** The two lines naming the configuration a descent chose, of {@code tried}, and its score and figures. */
+    public static void printBest(PrintWriter out, long tried, MatchConfig config, double score, Map<String, Double> figures) {
+        out.printf("Best of %d configurations: %s%n", tried, config.describe());
+        out.printf("Cross-validation score %.4f (accuracy %.4f, with direction %.4f, macro F1 %.4f)%n", score,
+                figures.get("accuracy"), figures.get("directionAccuracy"), figures.get("macroF1"));
     }
 }

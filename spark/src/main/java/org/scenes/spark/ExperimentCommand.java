@@ -2,7 +2,6 @@ package org.scenes.spark;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -11,12 +10,12 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.apache.hadoop.fs.FileStatus;
 import org.apache.spark.api.java.JavaSparkContext;
+import org.scenes.app.experiment.Sweeping;
 import org.scenes.internal.experiment.Configuration;
 import org.scenes.internal.experiment.FoldValidation;
 import org.scenes.internal.experiment.Result;
 import org.scenes.internal.experiment.ResultTable;
 import org.scenes.internal.experiment.Sweep;
-import org.scenes.internal.files.CsvTables;
 import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.validate.MatchConfig;
 import org.scenes.options.SweepOptions;
@@ -84,14 +83,7 @@ final class ExperimentCommand implements Callable<Integer> {
         Path scratch = Files.createTempDirectory("scenes-spark-results");
         List<String> written = new ArrayList<>();
         try {
-            Path csv = scratch.resolve(base + ".csv");
-            Path json = scratch.resolve(base + ".json");
-            Path markdown = scratch.resolve(base + ".md");
-            CsvTables.write(csv, table.csvHeader(), table.csvRows());
-            table.writeJson(json, command);
-            Files.writeString(markdown, table.markdownDocument(markdown.getFileName().toString(), command, null),
-                    StandardCharsets.UTF_8);
-            for (Path file : List.of(csv, json, markdown)) {
+            for (Path file : Sweeping.writeTables(table, scratch, base, command, null)) {
                 String target = directory.replaceFirst("/+$", "") + "/" + file.getFileName();
                 hadoop.publish(file, target);
                 written.add(target);

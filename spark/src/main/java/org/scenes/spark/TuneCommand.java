@@ -1,21 +1,19 @@
 package org.scenes.spark;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.SerializationFeature;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.TreeMap;
 import java.util.concurrent.Callable;
 import org.apache.spark.api.java.JavaSparkContext;
+import org.scenes.app.tune.Tuning;
 import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.validate.Folds;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.internal.validate.MatchConfigFile;
 import org.scenes.internal.validate.Tuner;
 import org.scenes.options.TuneOptions;
 import picocli.CommandLine.Command;
@@ -31,8 +29,6 @@ import picocli.CommandLine.Spec;
                 + "files, as 'scenes tune' does and with the same result, each (configuration, fold) a Spark task; "
                 + "writes the best configuration for --config.")
 final class TuneCommand implements Callable<Integer> {
-    private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
-
     @Spec
     CommandSpec spec;
 
@@ -70,7 +66,7 @@ final class TuneCommand implements Callable<Integer> {
             result = tuner.tune(Tuner.defaultStarts(MatchConfig.DEFAULT.withSeed(tuning.seed())), Tuner.defaultSearch(), sweeps);
             validated = tuner.validated();
         }
-        write(hadoop, result.config(), tuning.crossValidation(result, train));
+        write(hadoop, result.config(), Tuning.crossValidation(result, chosen, goal, train));
         TuneOptions.printBest(out, result);
         out.printf("Validated %d configurations in all (%d ahead of the search, to keep the executors busy)%n", validated,
                 validated - result.evaluated());
@@ -79,22 +75,11 @@ final class TuneCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** The configuration file of {@code scenes tune}: the same fields in the same order. */
+    /** The configuration file of {@code scenes tune}, written locally and published to {@code --output}. */
     private void write(HadoopFiles hadoop, MatchConfig config, Map<String, Object> crossValidation) throws IOException {
-        Map<String, Object> map = new LinkedHashMap<>();
-        map.put("metric", config.metric());
-        map.put("options", new TreeMap<>(config.metricOptions()));
-        map.put("objectWeights", config.objectWeights().format());
-        map.put("actionWeights", config.actionWeights().format());
-        map.put("k", config.k());
-        map.put("selector", config.selector());
-        map.put("selectorOptions", new TreeMap<>(config.selectorOptions()));
-        map.put("transforms", config.transforms());
-        map.put("seed", config.seed());
-        map.put("crossValidation", crossValidation);
         Path scratch = Files.createTempFile("scenes-spark-tune", ".json");
         try {
-            JSON.writeValue(scratch.toFile(), map);
+            MatchConfigFile.write(Files.newOutputStream(scratch), config, Map.of("crossValidation", crossValidation));
             hadoop.publish(scratch, output);
         } finally {
             Files.deleteIfExists(scratch);

@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
@@ -86,14 +87,20 @@ class LiveTeamsOnScenesServerTest {
                 .withTimings(Duration.ofMillis(500), Duration.ofSeconds(3));
         ExecutorService executor = Executors.newCachedThreadPool();
         List<String> notices = java.util.Collections.synchronizedList(new ArrayList<>());
-        try (SoccerServer server = SoccerServer.open(config, line -> { })) {
+        // the server's notice of each imitator's connection, which the teachers wait for
+        CountDownLatch imitatorsIn = new CountDownLatch(PLAYERS);
+        try (SoccerServer server = SoccerServer.open(config, line -> {
+            if (line.startsWith("A new ") && line.contains(" player (Imitator ")) {
+                imitatorsIn.countDown();
+            }
+        })) {
             Future<ServerResult> running = executor.submit(() -> server.run(frame -> { }));
             ServerAddress address = new ServerAddress("127.0.0.1", server.port());
             TeamRunner imitators = new TeamRunner(ClientOptions.of(address, "Imitator").withGoalie(true), PLAYERS,
                     ImitationBrain.factory(recognizer, () -> first, List::of, ImitationBrain.Guards.ON), 1, notices::add);
             Future<List<PlayerReport>> left = executor.submit(imitators::play);
             // the imitators connect first, so they are the left team
-            Thread.sleep(300);
+            assertTrue(imitatorsIn.await(60, TimeUnit.SECONDS), "the imitators connected: " + notices);
             TeamRunner teachers = new TeamRunner(ClientOptions.of(address, "Krislet"), PLAYERS,
                     Teachers.byName("krislet"), 1, notices::add);
             Future<List<PlayerReport>> right = executor.submit(teachers::play);

@@ -16,8 +16,10 @@ import org.scenes.api.ActionType;
 import org.scenes.api.ActionWeights;
 import org.scenes.api.Neighbour;
 import org.scenes.api.ObjectWeights;
+import org.scenes.api.PluginKind;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
+import org.scenes.api.TuneDimension;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.scene.SceneFile;
@@ -352,7 +354,7 @@ public final class RandomSearch {
     private static final double[] GOALS = {0, 0.02, 0.05, 0.1, 0.3, 1};
 
     /** One random metric setting with three of its k and selector variants. */
-    static List<MatchConfig> randomGroup(MatchConfig start, SplittableRandom random) {
+    private List<MatchConfig> randomGroup(MatchConfig start, SplittableRandom random) {
         MatchConfig metric = randomMetric(start, random);
         List<MatchConfig> variants = new ArrayList<>(List.of(
                 metric.withK(1).withSelector("first-valid", Map.of()),
@@ -370,7 +372,13 @@ public final class RandomSearch {
         return chosen;
     }
 
-    private static MatchConfig randomMetric(MatchConfig start, SplittableRandom random) {
+    /**
+     * One random metric setting. What to search in a metric's own options, and over which values,
+     * the metric's provider declares ({@link org.scenes.api.TuneDimension}); what spans plugins
+     * (memory, which needs the memory transform and a metric reading it, object weights, the family
+     * mix) is this search's.
+     */
+    private MatchConfig randomMetric(MatchConfig start, SplittableRandom random) {
         double memory = pick(random, 0, 0, 0, 0.03, 0.1, 0.3, 1);
         double memoryAction = pick(random, 0, 0, 10, 100, 100, 1000);
         // deeper memory of actions: 2 to 4 actions back, each further one weighing decay times the last
@@ -378,34 +386,36 @@ public final class RandomSearch {
         double decay = pick(random, 0.3, 0.5, 1);
         int family = random.nextInt(20);
         if (family < 3) {
+            Map<String, TuneDimension> ballGoal = registry.tuneDimensions(PluginKind.METRIC, "ball-goal");
             Map<String, String> options = new HashMap<>();
-            options.put("angle-weight", format(pick(random, 0.5, 2, 5, 10)));
-            options.put("row-weight", format(pick(random, 1, 3, 10, 30)));
-            options.put("column-weight", format(pick(random, 0.5, 1, 2)));
+            for (TuneDimension dimension : ballGoal.values()) {
+                options.put(dimension.option(), format(pick(random, dimension.valueArray())));
+            }
             MatchConfig config = start.withMetric("ball-goal", options)
                     .withObjectWeights(ObjectWeights.of(1, pick(random, 0.3, 1, 3), 0, 0, 0, 0, 0, 0));
             return Tuner.withMemory(config, memory, memoryAction);
         }
         String name = family < 14 ? "continuous" : family < 17 ? "projection" : "cell";
-        double[] weights = new double[8];
-        weights[0] = 1;
-        weights[1] = pick(random, GOALS);
-        if (random.nextInt(4) == 0) {
-            weights[2] = pick(random, 0.001, 0.005, 0.02, 0.05);
-        }
-        if (random.nextInt(5) == 0) {
-            weights[3] = pick(random, 0.005, 0.02, 0.1);
-        }
+        Map<String, TuneDimension> declared = registry.tuneDimensions(PluginKind.METRIC, name);
+        Map<String, String> accepted = registry.find(PluginKind.METRIC, name).options();
+        double goal = pick(random, GOALS);
+        double flag = random.nextInt(4) == 0 ? pick(random, 0.001, 0.005, 0.02, 0.05) : 0;
+        double line = random.nextInt(5) == 0 ? pick(random, 0.005, 0.02, 0.1) : 0;
+        double allPlayers = 0;
+        double teammates = 0;
+        double opponents = 0;
+        double unknownPlayers = 0;
         int players = random.nextInt(10);
         if (players == 0) {
-            weights[4] = pick(random, 0.005, 0.02, 0.1);
+            allPlayers = pick(random, 0.005, 0.02, 0.1);
         } else if (players <= 2) {
-            weights[5] = pick(random, 0, 0.005, 0.02, 0.1);
-            weights[6] = pick(random, 0, 0.005, 0.02, 0.1);
-            weights[7] = pick(random, 0, 0.005, 0.02);
+            teammates = pick(random, 0, 0.005, 0.02, 0.1);
+            opponents = pick(random, 0, 0.005, 0.02, 0.1);
+            unknownPlayers = pick(random, 0, 0.005, 0.02);
         }
-        boolean lowDimensional = weights[2] == 0 && weights[3] == 0 && weights[4] == 0 && weights[5] == 0
-                && weights[6] == 0 && weights[7] == 0;
+        ObjectWeights weights = new ObjectWeights(1, goal, flag, line, allPlayers, teammates, opponents, unknownPlayers);
+        boolean lowDimensional = flag == 0 && line == 0 && allPlayers == 0 && teammates == 0 && opponents == 0
+                && unknownPlayers == 0;
         if (!lowDimensional) {
             // the previous scene's flags, lines or players: no packed form, each query decodes and
             // compares whole scenes (the dearest configurations by far); memory of actions packs
@@ -416,41 +426,37 @@ public final class RandomSearch {
         if (lowDimensional && random.nextInt(3) == 0) {
             options.put("matching", "optimal");
         }
-        boolean polar = !name.equals("cell") && random.nextInt(10) < 7;
+        boolean polar = declared.containsKey("direction-weight") && random.nextInt(10) < 7;
         if (polar) {
             options.put("space", "polar");
-            options.put("distance-weight", format(pick(random, 1, 3, 10, 30, 100)));
-            double direction = pick(random, 0.3, 1, 3, 10, 30, 100);
-            options.put("direction-weight", format(direction));
+            draw(options, random, declared, "distance-weight");
+            double direction = draw(options, random, declared, "direction-weight");
             if (memory > 0 && random.nextBoolean()) {
                 // the previous scene's directions weighed less than the current one's (better for Krislet)
                 options.put("memory-direction-weight", format(direction * pick(random, 0.1, 0.3)));
             }
         }
-        if (!name.equals("cell") && random.nextInt(10) < 7) {
+        if (accepted.containsKey("log-distance") && random.nextInt(10) < 7) {
             options.put("log-distance", "true");
         }
         if (random.nextBoolean()) {
             // dead ahead apart from either side (Krislet dashes only at 0 degrees)
-            options.put("side-weight", format(pick(random, 30, 100, 300, 1000)));
+            draw(options, random, declared, "side-weight");
         }
-        double rows = pick(random, 0, 10, 100, 1000, 1000, 3000);
-        if (rows > 0) {
-            options.put("row-weight", format(rows));
-            if (memory > 0 && random.nextBoolean()) {
-                // the remembered scene's rings weighed less than the current one's
-                options.put("memory-row-weight", format(rows * pick(random, 0.1, 0.3)));
-            }
+        double rows = draw(options, random, declared, "row-weight");
+        if (rows > 0 && memory > 0 && random.nextBoolean()) {
+            // the remembered scene's rings weighed less than the current one's
+            options.put("memory-row-weight", format(rows * pick(random, 0.1, 0.3)));
         }
         if (random.nextInt(3) == 0) {
             options.put("own-goal-weight", "0"); // only the goal attacked
         }
-        options.put("penalty", format(name.equals("cell") ? pick(random, 1, 10, 100) : pick(random, 10, 100, 1000, 20000, 20000)));
-        options.put("penalty-scale", format(name.equals("cell") ? pick(random, 1, 3) : pick(random, 10, 100, 10000)));
-        if (name.equals("projection")) {
-            options.put("cycles", format(pick(random, -1, 1, 2)));
+        draw(options, random, declared, "penalty");
+        draw(options, random, declared, "penalty-scale");
+        if (declared.containsKey("cycles")) { // a projecting metric
+            draw(options, random, declared, "cycles");
         }
-        MatchConfig config = Tuner.withMemory(start.withMetric(name, options).withObjectWeights(ObjectWeights.of(weights)),
+        MatchConfig config = Tuner.withMemory(start.withMetric(name, options).withObjectWeights(weights),
                 memory, memoryAction);
         return depth == 1 ? config : withMemoryDepth(config, depth, decay);
     }
@@ -461,6 +467,24 @@ public final class RandomSearch {
         options.put("memory-depth", Integer.toString(depth));
         options.put("memory-decay", format(decay));
         return config.withMetric(config.metric(), options).withTransforms(List.of("long-memory"));
+    }
+
+    /**
+     * One of the values a metric declares for an option, set in {@code options} (a log dimension's 0
+     * leaves the option out); a metric that declares none cannot be searched.
+     */
+    private static double draw(Map<String, String> options, SplittableRandom random, Map<String, TuneDimension> declared,
+                               String option) {
+        TuneDimension dimension = declared.get(option);
+        if (dimension == null) {
+            throw new IllegalStateException("the metric declares no tune dimension '" + option + "' (its dimensions: "
+                    + declared.keySet() + ")");
+        }
+        double value = pick(random, dimension.valueArray());
+        if (value != 0 || dimension.scale() == TuneDimension.Scale.LINEAR) {
+            options.put(option, format(value));
+        }
+        return value;
     }
 
     private static double pick(SplittableRandom random, double... values) {

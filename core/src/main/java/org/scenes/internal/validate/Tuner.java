@@ -65,11 +65,32 @@ public final class Tuner {
     /** What the search maximises, over the decisions of all folds pooled. */
     public enum Objective {
         /** the mean of accuracy, action-with-direction accuracy and macro F1 (default) */
-        MEAN,
-        ACCURACY,
+        MEAN("mean"),
+        ACCURACY("accuracy"),
         /** action-with-direction accuracy */
-        DIRECTION,
-        MACRO_F1;
+        DIRECTION("direction"),
+        MACRO_F1("macro-f1");
+
+        private final String key;
+
+        Objective(String key) {
+            this.key = key;
+        }
+
+        /** The name written in results and read from options: {@code mean}, {@code macro-f1}. */
+        public String key() {
+            return key;
+        }
+
+        /** The objective of that key; null for none (the caller says where the bad name came from). */
+        public static Objective fromKey(String key) {
+            for (Objective objective : values()) {
+                if (objective.key.equals(key)) {
+                    return objective;
+                }
+            }
+            return null;
+        }
 
         public double of(ValidationReport pooled) {
             return switch (this) {

@@ -14,6 +14,7 @@ import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneMetric;
 import org.scenes.api.SeenObject;
+import org.scenes.api.TuneDimension;
 
 /**
  * {@code ball-goal}: only the ball and the opponent goal count, each compared by its cell
@@ -43,6 +44,14 @@ public final class BallGoalMetricProvider implements MetricProvider {
         options.put("remembered", "cost added when the ball or goal is remembered (recall transform) in one scene and seen in the other (default 0: compared alike)");
         options.put("index", "true: search an exact index of the distinct ball and goal keys; false: scan every scene (default true)");
         return options;
+    }
+
+    /** The direction, ring and column costs, in the order the search draws them. */
+    @Override
+    public List<TuneDimension> tuneDimensions() {
+        return List.of(TuneDimension.log("angle-weight", 0.5, 2, 5, 10),
+                TuneDimension.log("row-weight", 1, 3, 10, 30),
+                TuneDimension.log("column-weight", 0.5, 1, 2));
     }
 
     @Override

@@ -1,10 +1,12 @@
 package org.scenes.plugins.continuous;
 
+import java.util.List;
 import java.util.Map;
 import org.scenes.api.MetricProvider;
 import org.scenes.api.ObjectSetMetrics;
 import org.scenes.api.PluginConfig;
 import org.scenes.api.SceneMetric;
+import org.scenes.api.TuneDimension;
 
 /** {@code continuous}: objects compared by type at their exact positions (docs/metrics.md). */
 public final class ContinuousMetricProvider implements MetricProvider {
@@ -21,6 +23,11 @@ public final class ContinuousMetricProvider implements MetricProvider {
     @Override
     public Map<String, String> options() {
         return ObjectSetMetrics.options(false);
+    }
+
+    @Override
+    public List<TuneDimension> tuneDimensions() {
+        return ObjectSetMetrics.tuneDimensions(false);
     }
 
     @Override

@@ -1,11 +1,13 @@
 package org.scenes.plugins.projection;
 
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import org.scenes.api.MetricProvider;
 import org.scenes.api.ObjectSetMetrics;
 import org.scenes.api.PluginConfig;
 import org.scenes.api.SceneMetric;
+import org.scenes.api.TuneDimension;
 
 /**
  * {@code projection}: like {@code continuous}, but each object is first moved n cycles forward
@@ -28,6 +30,11 @@ public final class ProjectionMetricProvider implements MetricProvider {
         Map<String, String> options = new LinkedHashMap<>(ObjectSetMetrics.options(true));
         options.put("space", "cartesian or polar (default cartesian)");
         return options;
+    }
+
+    @Override
+    public List<TuneDimension> tuneDimensions() {
+        return ObjectSetMetrics.tuneDimensions(true);
     }
 
     @Override

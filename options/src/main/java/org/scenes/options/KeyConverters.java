@@ -1,0 +1,46 @@
+package org.scenes.options;
+
+import java.util.function.Function;
+import org.scenes.internal.validate.Folds;
+import org.scenes.internal.validate.Tuner;
+import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.TypeConversionException;
+
+/**
+ * The converters of options whose values are enum constants, each read by the key results and
+ * scripts write ({@code leave-one-out}, {@code macro-f1}): one parser per option value, in every
+ * command that takes it. A bad value is picocli's usage error, naming the option.
+ */
+public final class KeyConverters {
+    private KeyConverters() {
+    }
+
+    private static <E> E convert(String value, Function<String, E> fromKey, String keys) {
+        E constant = fromKey.apply(value);
+        if (constant == null) {
+            throw new TypeConversionException("expected " + keys + ", not '" + value + "'");
+        }
+        return constant;
+    }
+
+    /**
+     * {@code --protocol next|leave-one-out}. Its one default rule: {@code validate --folds} trains on
+     * the next file (the thesis' protocol, so its figures compare with the thesis'); {@code tune}
+     * trains on all other files (closest to training on the whole game, which the tuned configuration
+     * will do).
+     */
+    public static final class Protocol implements ITypeConverter<Folds.Protocol> {
+        @Override
+        public Folds.Protocol convert(String value) {
+            return KeyConverters.convert(value, Folds.Protocol::fromKey, Folds.Protocol.keys());
+        }
+    }
+
+    /** {@code --objective mean|accuracy|direction|macro-f1}. */
+    public static final class Objective implements ITypeConverter<Tuner.Objective> {
+        @Override
+        public Tuner.Objective convert(String value) {
+            return KeyConverters.convert(value, Tuner.Objective::fromKey, "mean, accuracy, direction or macro-f1");
+        }
+    }
+}
