@@ -187,10 +187,9 @@ final class EvaluateCommand implements Callable<Integer> {
         List<Path> teacherLogs = gameLogs("--teacher-games", teacherGames);
         List<Path> imitatorLogs = gameLogs("--imitator-games", imitatorGames);
         ServerLogGames.Read read;
-        try (ProgressBar bar = System.console() == null ? null : new ProgressBarBuilder().setTaskName("Reading games")
-                .setInitialMax(teacherLogs.size() + imitatorLogs.size()).setUnit(" games", 1)
-                .setConsumer(new ConsoleProgressBarConsumer(System.err)).clearDisplayOnFinish().build()) {
-            read = ServerLogGames.read(teacherLogs, imitatorLogs, team, games -> step(bar).accept(games));
+        try (TerminalProgress bar = TerminalProgress.start("Reading games", teacherLogs.size() + imitatorLogs.size(),
+                " games", 1)) {
+            read = ServerLogGames.read(teacherLogs, imitatorLogs, team, bar::stepTo);
         } catch (IllegalArgumentException e) {
             throw new UsageException("--team: " + e.getMessage());
         }
