@@ -13,4 +13,14 @@ public interface Brain {
      * {@code hear}, errors) and sends zero or more commands through {@code send}.
      */
     void receive(String message, Consumer<String> send);
+
+    /**
+     * Whether the runtime sends this brain's kick-off {@code move} again at the start of the two
+     * cycles after a goal or half time (the default, see {@code agent.net.LivePlayer}). An imitator
+     * whose teacher never moved after a goal answers false: it does not send moves its teacher
+     * never sent.
+     */
+    default boolean repeatsKickOffMove() {
+        return true;
+    }
 }

@@ -92,6 +92,9 @@ final class BenchCommand implements Callable<Integer> {
         if (synthetic != null && synthetic < 1) {
             throw new UsageException("--synthetic needs at least 1 scene, not " + synthetic);
         }
+        if (synthetic != null) {
+            Limits.heapFor("--synthetic", synthetic, Limits.BYTES_PER_SCENE);
+        }
         if (syntheticRun < 1) {
             throw new UsageException("--synthetic-run must be at least 1, not " + syntheticRun);
         }

@@ -72,15 +72,42 @@ final class ConvertCommand implements Callable<Integer> {
     @Mixin
     GameLogOptions gameLogOptions;
 
+    @Option(names = "--world", description = "Give each scene the player's world model (its position, the ball's,"
+            + " the players it remembers, stamina, play mode, score; scene format 2, docs/scene-format.md).")
+    boolean world;
+
     @Option(names = "--threads", paramLabel = "N", description = "Game logs: threads rebuilding the players."
             + " Default: the number of cores.")
     int threads = Runtime.getRuntime().availableProcessors();
+
+    /** What becomes of a see the player left unanswered. */
+    enum Unanswered { KEEP, DROP }
+
+    @Option(names = "--unanswered", paramLabel = "keep|drop", defaultValue = "drop",
+            converter = UnansweredConverter.class,
+            description = {"A see the player left unanswered (no action before the next see): drop it (default, the"
+                    + " classic rule) or keep it as a scene without action, so an imitator learns when its teacher"
+                    + " waits (docs/conversion.md, unanswered sees)."})
+    Unanswered unanswered;
+
+    static final class UnansweredConverter implements picocli.CommandLine.ITypeConverter<Unanswered> {
+        @Override
+        public Unanswered convert(String value) {
+            return switch (value) {
+                case "keep" -> Unanswered.KEEP;
+                case "drop" -> Unanswered.DROP;
+                default -> throw new picocli.CommandLine.TypeConversionException("expected keep or drop, not '"
+                        + value + "'");
+            };
+        }
+    }
 
     private int warningsShown;
 
     @Override
     public Integer call() throws IOException {
         Grid grid = gridOptions.grid();
+        Limits.threads("--threads", threads);
         if (output.file != null) {
             OutputPaths.checkFile("-o", output.file, logs);
         } else {
@@ -95,8 +122,13 @@ final class ConvertCommand implements Callable<Integer> {
         if (game != null) {
             return game.run(this, grid, spec.commandLine().getOut(), err);
         }
-        SceneConverter converter = new SceneConverter(grid, pairingOptions.pairing(), pairingOptions.strict(),
-                line -> warn(err, line));
+        SceneConverter converter = SceneConverter.with(grid)
+                .pairing(pairingOptions.pairing())
+                .strict(pairingOptions.strict())
+                .warnings(line -> warn(err, line))
+                .world(world)
+                .keepUnanswered(unanswered == Unanswered.KEEP)
+                .build();
         ConversionReport total = new ConversionReport();
         List<Path> written = new java.util.concurrent.CopyOnWriteArrayList<>();
         int failed = 0;
@@ -115,7 +147,7 @@ final class ConvertCommand implements Callable<Integer> {
                 if (output.file != null) {
                     try (LazySceneFileWriter writer = new LazySceneFileWriter(output.file, grid, sourceName(logs))) {
                         for (Path log : logs) {
-                            ConversionReport report = converter.convert(log, writer::write, progress::step);
+                            ConversionReport report = converter.convert(log, SceneConverter.SceneSink.of(writer::write, writer::goalie), progress::step);
                             total.add(report);
                             failed += noScenes(err, log, report) ? 1 : 0;
                             progress.logDone(log);
@@ -132,7 +164,7 @@ final class ConvertCommand implements Callable<Integer> {
                         Path log = logs.get(i);
                         Path target = output.directory.resolve(names.get(i) + ".json.gz");
                         try (LazySceneFileWriter writer = new LazySceneFileWriter(target, grid, log.getFileName().toString())) {
-                            ConversionReport report = converter.convert(log, writer::write, progress::step);
+                            ConversionReport report = converter.convert(log, SceneConverter.SceneSink.of(writer::write, writer::goalie), progress::step);
                             total.add(report);
                             if (noScenes(err, log, report)) {
                                 failed++;

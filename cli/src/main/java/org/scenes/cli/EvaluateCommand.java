@@ -15,13 +15,16 @@ import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.ServerAddress;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.api.PluginRegistry;
+import org.scenes.api.Side;
 import org.scenes.evaluate.Arena;
 import org.scenes.evaluate.Comparison;
 import org.scenes.evaluate.Evaluation;
+import org.scenes.evaluate.ExternalTeam;
 import org.scenes.evaluate.HtmlReport;
 import org.scenes.evaluate.Learner;
 import org.scenes.evaluate.LiveArena;
 import org.scenes.evaluate.PacedBrain;
+import org.scenes.evaluate.ServerLogGames;
 import org.scenes.evaluate.Tables;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.validate.MatchConfig;
@@ -41,7 +44,9 @@ import picocli.CommandLine.Spec;
                 + " action mix and its divergence, kicks and goals per 1000 cycles, distance to the ball, kick-off"
                 + " to first touch, stuck share, agreement with a shadow teacher, and a Turing figure.",
                 "The imitator is learnt from the teacher's own games (simulate, convert, knowledge base, in"
-                + " process), or from the SCENES files given."})
+                + " process), or from the SCENES files given.",
+                "With --teacher-games DIR --imitator-games DIR no game is played: the same figures come from"
+                + " existing server logs (.rcg or .rcg.gz, the .rcl beside when there is one) of any team."})
 final class EvaluateCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -106,12 +111,41 @@ final class EvaluateCommand implements Callable<Integer> {
     Path serverLogs;
 
     @Option(names = "--server-wait", paramLabel = "SECONDS", defaultValue = "60",
-            description = "With --server: how long each game waits for the server to accept its first player."
-                    + " Default: ${DEFAULT-VALUE}.")
+            description = "With --server: how long each game waits for the server to accept its first player,"
+                    + " and for an external team's players to join. Default: ${DEFAULT-VALUE}.")
     double serverWait;
+
+    @Option(names = "--teacher-command", paramLabel = "CMD",
+            description = "An external teacher team: a command started (bash -c, in its own session) for each game on"
+                    + " --server, after our opponent joined, so it plays the right side (and the imitator too);"
+                    + " {host}, {port}, {team}, {players} are replaced; its whole process group is ended after each"
+                    + " game. Needs --server-logs (the figures come from the server's logs) and SCENES.")
+    String teacherCommand;
+
+    @Option(names = "--opponent-command", paramLabel = "CMD",
+            description = "An external opponent, started like --teacher-command for each game (--players players,"
+                    + " the right side). Needs --server, --server-logs and SCENES.")
+    String opponentCommand;
+
+    @Option(names = "--teacher-games", paramLabel = "DIR",
+            description = "Evaluate from existing game logs instead of playing: the teacher's games, every .rcg or"
+                    + " .rcg.gz in DIR (with the .rcl beside when there is one). Needs --imitator-games.")
+    Path teacherGames;
+
+    @Option(names = "--imitator-games", paramLabel = "DIR",
+            description = "With --teacher-games: the imitator's game logs. Games of each side pair in name order.")
+    Path imitatorGames;
+
+    @Option(names = "--team", paramLabel = "NAME",
+            description = "With --teacher-games: the team measured in every game. Default: the one team name all"
+                    + " the games have.")
+    String team;
 
     @Override
     public Integer call() throws IOException {
+        if (teacherGames != null || imitatorGames != null || team != null) {
+            return fromGameLogs();
+        }
         Setup setup = setup();
         PrintWriter out = spec.commandLine().getOut();
         Outcome outcome = evaluate(setup, arena(), json ? null : out);
@@ -128,7 +162,7 @@ final class EvaluateCommand implements Callable<Integer> {
             out.print(Tables.text(outcome.comparison()));
         }
         if (report != null) {
-            Path page = HtmlReport.write(report, "scenes evaluate: " + setup.teacherName + " and its imitator",
+            Path page = HtmlReport.write(report, "scenes evaluate: " + setup.teacherName() + " and its imitator",
                     outcome.about(), outcome.comparison(), outcome.results());
             if (!json) {
                 out.println();
@@ -139,8 +173,75 @@ final class EvaluateCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
+    /** {@code --teacher-games DIR --imitator-games DIR}: the figures of existing game logs. */
+    private int fromGameLogs() throws IOException {
+        if (teacherGames == null || imitatorGames == null) {
+            throw new UsageException(teacherGames == null && imitatorGames == null
+                    ? "--team: goes with --teacher-games DIR --imitator-games DIR"
+                    : "--teacher-games and --imitator-games: give both (the teacher's and the imitator's game logs)");
+        }
+        if (!sceneFiles.isEmpty() || server != null) {
+            throw new UsageException("--teacher-games: evaluates existing game logs; it takes no SCENES and no --server");
+        }
+        long started = System.nanoTime();
+        List<Path> teacherLogs = gameLogs("--teacher-games", teacherGames);
+        List<Path> imitatorLogs = gameLogs("--imitator-games", imitatorGames);
+        ServerLogGames.Read read;
+        try (TerminalProgress bar = TerminalProgress.start("Reading games", teacherLogs.size() + imitatorLogs.size(),
+                " games", 1)) {
+            read = ServerLogGames.read(teacherLogs, imitatorLogs, team, bar::stepTo);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("--team: " + e.getMessage());
+        }
+        Comparison comparison = Comparison.of(read.results());
+        Map<String, String> about = new LinkedHashMap<>();
+        about.put("team", read.team());
+        about.put("teacher games", describe(teacherGames, read.teacherGames()));
+        about.put("imitator games", describe(imitatorGames, read.imitatorGames()));
+        about.put("games", "read from the server's logs; each side's games numbered 1, 2, ... in name order (the"
+                + " Turing figure's folds pair them)");
+        about.put("not measured", "what only the players' own traffic tells: sees answered, the mix of commands"
+                + " sent on sees and its stuck share, agreement with a shadow teacher");
+        about.put("time", String.format(Locale.ROOT, "%.1f s", (System.nanoTime() - started) / 1e9));
+        PrintWriter out = spec.commandLine().getOut();
+        if (json) {
+            Map<String, Object> root = new LinkedHashMap<>();
+            root.put("about", about);
+            root.putAll(Tables.json(comparison));
+            out.println(ConfigFiles.JSON.writeValueAsString(root));
+        } else {
+            out.print(Tables.text(comparison));
+        }
+        if (report != null) {
+            Path page = HtmlReport.write(report, "scenes evaluate: " + read.team() + ", teacher's and imitator's games",
+                    about, comparison, read.results());
+            if (!json) {
+                out.println();
+                out.println("Report written to " + page.toAbsolutePath());
+            }
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    private static List<Path> gameLogs(String option, Path directory) throws IOException {
+        try {
+            return ServerLogGames.gameLogs(directory);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException(option + ": " + e.getMessage());
+        }
+    }
+
+    private static String describe(Path directory, List<ServerLogGames.Game> games) {
+        long withCommands = games.stream().filter(g -> g.commandLog() != null).count();
+        return games.size() + " in " + directory + " (" + String.join(", ", games.stream()
+                .map(g -> g.gameLog().getFileName().toString()).toList()) + "); executed commands from "
+                + (withCommands == games.size() ? "their .rcl" : withCommands == 0 ? "the .rcg's counters (no .rcl)"
+                        : withCommands + " .rcl, the others' .rcg counters");
+    }
+
     /** Everything the evaluation needs, checked. */
-    record Setup(String teacherName, GameSetup.Team teacher, GameSetup.Team opponent, MatchConfig config,
+    record Setup(String teacherName, GameSetup.Team teacher, GameSetup.Team opponent, Side side, MatchConfig config,
                  PluginRegistry registry, List<Path> sceneFiles, int trainGames, int cycles, List<Long> seeds,
                  int thinkSteps) {
     }
@@ -170,9 +271,33 @@ final class EvaluateCommand implements Callable<Integer> {
         if (thinkSteps < 0) {
             throw new UsageException("--think-steps: must be 0 or more, not " + thinkSteps);
         }
-        return new Setup(teacher, SimulateCommand.team(teacher + ":" + players, "Teal"),
-                SimulateCommand.team(opponent, "Amber"), configs.get(0), top.global.registry(), sceneFiles, trainGames,
-                cycles, seedList, thinkSteps);
+        if (teacherCommand != null || opponentCommand != null) {
+            if (teacherCommand != null && opponentCommand != null) {
+                throw new UsageException("--teacher-command and --opponent-command: one external team a game for now"
+                        + " (ours joins first, the external one after it)");
+            }
+            String option = teacherCommand != null ? "--teacher-command" : "--opponent-command";
+            if (server == null || serverLogs == null) {
+                throw new UsageException(option + ": an external team plays on a server and is measured from its"
+                        + " logs: give --server HOST:PORT and --server-logs DIR");
+            }
+            if (sceneFiles.isEmpty()) {
+                throw new UsageException(option + ": give the SCENES to learn the imitator from (the teacher's games"
+                        + " are not played in process with an external team)");
+            }
+            if ((teacherCommand != null ? teacherCommand : opponentCommand).isBlank()) {
+                throw new UsageException(option + ": an empty command");
+            }
+        }
+        GameSetup.Team teacherTeam = teacherCommand != null
+                ? new GameSetup.Team("Teal", players, new ExternalTeam(teacherCommand))
+                : SimulateCommand.team(teacher + ":" + players, "Teal");
+        GameSetup.Team opponentTeam = opponentCommand != null
+                ? new GameSetup.Team("Amber", players, new ExternalTeam(opponentCommand))
+                : SimulateCommand.team(opponent, "Amber");
+        return new Setup(teacherCommand != null ? "the command '" + teacherCommand + "'" : teacher, teacherTeam,
+                opponentTeam, teacherCommand != null ? Side.RIGHT : Side.LEFT, configs.get(0), top.global.registry(),
+                sceneFiles, trainGames, cycles, seedList, thinkSteps);
     }
 
     /** The embedded simulator, or with --server the live server. */
@@ -248,7 +373,7 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         Evaluation.Plan plan = new Evaluation.Plan(setup.teacher(),
                 PacedBrain.pace(imitator.brains(), setup.thinkSteps()), setup.opponent(), setup.cycles(),
-                setup.seeds());
+                setup.seeds(), setup.side());
         Evaluation.Results results;
         try (TerminalProgress bar = TerminalProgress.start("Evaluating", plan.totalCycles(), " cycles", 1)) {
             results = Evaluation.run(plan, arena, bar.stepper());
@@ -262,6 +387,9 @@ final class EvaluateCommand implements Callable<Integer> {
     }
 
     static String describe(GameSetup.Team team) {
+        if (team.brains() instanceof ExternalTeam external) {
+            return team.name() + ", " + team.players() + " players, the command '" + external.command() + "'";
+        }
         return team.name() + ", " + team.players() + " players";
     }
 }

@@ -41,10 +41,7 @@ final class ExperimentCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        int workers = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
-        if (workers < 1) {
-            throw new UsageException("--threads must be at least 1, not " + workers);
-        }
+        int workers = Limits.threads("--threads", threads == null ? Runtime.getRuntime().availableProcessors() : threads);
         Sweep sweep = sweepOptions.load();
         Sweeping.Outcome outcome = Sweeping.run(sweep, read(sweep.data()), top.global.registry(), workers,
                 TerminalProgress.reporter());

@@ -20,7 +20,14 @@ public final class Main {
         if (args.length > 0 && ABANDONED_ON_INTERRUPT.contains(args[0])) {
             Runtime.getRuntime().addShutdownHook(new Thread(AtomicOutput::abandonAll, "scenes-abandon-outputs"));
         }
-        System.exit(ScenesCommand.commandLine().execute(args));
+        int status;
+        try {
+            status = ScenesCommand.commandLine().execute(args);
+        } catch (OutOfMemoryError e) {
+            System.err.println("scenes: " + Limits.outOfMemoryMessage());
+            status = ExitCodes.FAILURE;
+        }
+        System.exit(status);
     }
 
     /** Runs a command line with the given output streams and returns its exit code, for embedding and tests. */
@@ -30,6 +37,9 @@ public final class Main {
         commandLine.setErr(err);
         try {
             return commandLine.execute(args);
+        } catch (OutOfMemoryError e) {
+            err.println("scenes: " + Limits.outOfMemoryMessage());
+            return ExitCodes.FAILURE;
         } finally {
             out.flush();
             err.flush();

@@ -16,11 +16,10 @@ import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.teacher.Teachers;
 import org.scenes.evaluate.Arena;
 import org.scenes.evaluate.GameFigures;
-import org.scenes.evaluate.Learner;
+import org.scenes.agent.imitation.ImitationBrain;
+import org.scenes.agent.imitation.ImitationTeam;
 import org.scenes.evaluate.Match;
-import org.scenes.evaluate.PacedBrain;
 import org.scenes.evaluate.Tables;
-import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.validate.MatchConfig;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -66,9 +65,8 @@ final class MatchCommand implements Callable<Integer> {
             description = "The teacher an imitator's agreement is measured against. Default: ${DEFAULT-VALUE}.")
     String shadow;
 
-    @Option(names = "--think-steps", paramLabel = "N", defaultValue = "0",
-            description = "Imitators decide on the latest see every N steps (Krislet's think loop: 2); 0: every see.")
-    int thinkSteps;
+    @Mixin
+    ImitationTeamOptions roles;
 
     @Option(names = "--json", description = "Print one JSON object instead of the table.")
     boolean json;
@@ -86,8 +84,8 @@ final class MatchCommand implements Callable<Integer> {
         if (cycles < 1) {
             throw new UsageException("--cycles: must be at least 1, not " + cycles);
         }
-        if (thinkSteps < 0) {
-            throw new UsageException("--think-steps: must be 0 or more, not " + thinkSteps);
+        if (roles.thinkSteps < 0) {
+            throw new UsageException("--think-steps: must be 0 or more, not " + roles.thinkSteps);
         }
         BrainFactory shadowTeacher;
         try {
@@ -170,18 +168,17 @@ final class MatchCommand implements Callable<Integer> {
             }
             config = configs.get(0);
         }
-        Learner.Matching matching;
         try {
-            matching = Learner.Matching.of(config, top.global.registry());
+            config.check(top.global.registry());
         } catch (IllegalArgumentException e) {
             throw new UsageException(option + ": " + e.getMessage());
         }
         // a file the knowledge base cannot hold is failed work (exit 1), its message names the file
-        KnowledgeBase knowledge = KnowledgeBase.load(files, matching.transforms());
-        Learner.Imitator imitator = Learner.of(knowledge, matching);
+        ImitationTeam team = roles.load(files, config, top.global.registry());
         try {
-            return new Side(new GameSetup.Team(name, players, PacedBrain.pace(imitator.brains(), thinkSteps)),
-                    shadowTeacher, "imitator of " + imitator.scenes() + " scenes, " + config.describe());
+            return new Side(new GameSetup.Team(name, players, roles.brains(team, config, top.global.registry(),
+                    ImitationBrain.Guards.OFF)), shadowTeacher, "imitator of " + team.scenes() + " scenes, "
+                    + team.describe() + ", " + config.describe());
         } catch (IllegalArgumentException e) {
             throw new UsageException(option + ": " + e.getMessage());
         }

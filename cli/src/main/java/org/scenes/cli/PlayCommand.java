@@ -10,8 +10,7 @@ import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.api.PluginRegistry;
-import org.scenes.internal.match.KnowledgeBase;
-import org.scenes.internal.match.Recognizer;
+import org.scenes.agent.imitation.ImitationTeam;
 import org.scenes.internal.validate.MatchConfig;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -61,6 +60,9 @@ final class PlayCommand implements Callable<Integer> {
     @Mixin
     LiveOptions live;
 
+    @Mixin
+    ImitationTeamOptions roles;
+
     @Option(names = "--opponent", paramLabel = "TEACHER:N", defaultValue = "krislet:5",
             description = "The right team: teacher and number of players. Default: ${DEFAULT-VALUE}.")
     String opponent;
@@ -107,19 +109,18 @@ final class PlayCommand implements Callable<Integer> {
         }
         GameSetup.Team right = SimulateCommand.team(opponent, teamNames[1].trim());
         long started = System.nanoTime();
-        KnowledgeBase knowledge = KnowledgeBase.load(sceneFiles, config.transformFactory(registry));
-        Recognizer recognizer = config.recognizer(knowledge, registry, config.k());
+        ImitationTeam team = roles.load(sceneFiles, config, registry);
         GameSetup setup;
         try {
-            GameSetup.Team left = new GameSetup.Team(teamNames[0].trim(), players, ImitationBrain.factory(recognizer,
-                    config.selectorFactory(registry), config.transformFactory(registry), guards));
+            GameSetup.Team left = new GameSetup.Team(teamNames[0].trim(), players,
+                    roles.brains(team, config, registry, guards));
             setup = new GameSetup(left, right, cycles, config.seed(), outDir);
         } catch (IllegalArgumentException e) {
             throw new UsageException(e.getMessage());
         }
         PrintWriter out = spec.commandLine().getOut();
-        out.printf(Locale.ROOT, "%-14s %d scenes from %d files; %s%n", "Learnt", knowledge.size(), sceneFiles.size(),
-                config.describe());
+        out.printf(Locale.ROOT, "%-14s %d scenes from %d files, %s; %s%n", "Learnt", team.scenes(), sceneFiles.size(),
+                team.describe(), config.describe());
         org.scenes.agent.sim.Simulator simulator = new org.scenes.agent.sim.Simulator(setup);
         if (recordDir != null) {
             simulator.recordTo(recordDir);
@@ -143,14 +144,12 @@ final class PlayCommand implements Callable<Integer> {
             }
         }
         var options = live.clientOptions("Imitator");
-        KnowledgeBase knowledge = KnowledgeBase.load(sceneFiles, config.transformFactory(registry));
-        Recognizer recognizer = config.recognizer(knowledge, registry, config.k());
+        ImitationTeam team = roles.load(sceneFiles, config, registry);
         PrintWriter err = spec.commandLine().getErr();
-        err.printf(Locale.ROOT, "%-14s %d scenes from %d files; %s%n", "Learnt", knowledge.size(), sceneFiles.size(),
-                config.describe());
+        err.printf(Locale.ROOT, "%-14s %d scenes from %d files, %s; %s%n", "Learnt", team.scenes(), sceneFiles.size(),
+                team.describe(), config.describe());
         err.flush();
-        return LiveTeam.play(options, players == null ? 11 : players, ImitationBrain.factory(recognizer,
-                config.selectorFactory(registry), config.transformFactory(registry), guards), config.seed(),
-                live.json, spec.commandLine().getOut(), err);
+        return LiveTeam.play(options, players == null ? 11 : players, roles.brains(team, config, registry, guards),
+                config.seed(), live.json, spec.commandLine().getOut(), err);
     }
 }

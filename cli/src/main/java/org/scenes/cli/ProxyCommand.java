@@ -83,8 +83,16 @@ final class ProxyCommand implements Callable<Integer> {
             description = "Clients served at once; datagrams from further new addresses are dropped. Default: ${DEFAULT-VALUE}.")
     int maxClients;
 
+    @Option(names = "--games", paramLabel = "N",
+            description = "Stop by itself once N games have ended (every client gone after time_over or bye), so a recipe"
+                    + " finishes on its own. Default: run until SIGINT/SIGTERM.")
+    Integer games;
+
     @Override
     public Integer call() throws IOException, InterruptedException {
+        if (games != null && games < 1) {
+            throw new UsageException("--games must be at least 1, not " + games);
+        }
         PrintWriter console = spec.commandLine().getOut();
         InetSocketAddress playerServer = address("--server", server, -1);
         List<Route> routes = new ArrayList<>();
@@ -112,13 +120,18 @@ final class ProxyCommand implements Callable<Integer> {
         } catch (UnknownHostException e) {
             throw new UsageException("--bind: unknown host " + bind);
         }
-        ProxyConfig config = new ProxyConfig(bindAddress, routes, out, logFormat(), seconds(idleTimeout),
-                seconds(endGrace), logBufferMb << 20, maxClients, line -> {
-                    synchronized (console) {
-                        console.println(line);
-                        console.flush();
-                    }
-                });
+        ProxyConfig config;
+        try {
+            config = new ProxyConfig(bindAddress, routes, out, logFormat(), seconds(idleTimeout),
+                    seconds(endGrace), logBufferMb << 20, maxClients, line -> {
+                        synchronized (console) {
+                            console.println(line);
+                            console.flush();
+                        }
+                    });
+        } catch (IllegalArgumentException e) {
+            throw new UsageException(e.getMessage());
+        }
         LogProxy proxy = LogProxy.start(config);
         CountDownLatch stopped = new CountDownLatch(1);
         AtomicBoolean closed = new AtomicBoolean();
@@ -154,7 +167,13 @@ final class ProxyCommand implements Callable<Integer> {
         }
         console.printf("logging to %s (%s); Ctrl-C to stop%n", out, format);
         console.flush();
-        stopped.await();
+        while (!stopped.await(200, java.util.concurrent.TimeUnit.MILLISECONDS)) {
+            if (games != null && proxy.gamesEnded() >= games) {
+                console.printf("%d game%s ended: stopping%n", games, games == 1 ? "" : "s");
+                new Thread(stop, "scenes-proxy-games-ended").start();
+                stopped.await();
+            }
+        }
         return clean.get() ? ExitCodes.OK : ExitCodes.FAILURE;
     }
 

@@ -20,7 +20,7 @@ import picocli.CommandLine;
                 ValidateCommand.class, TuneCommand.class, ExperimentCommand.class, BenchCommand.class,
                 SimulateCommand.class, PlayCommand.class, TeamCommand.class, EvaluateCommand.class,
                 MatchCommand.class, ReplayCommand.class, DemoCommand.class, ProxyCommand.class, ServerCommand.class,
-                CompareCommand.class})
+                CompareCommand.class, WorldErrorCommand.class})
 final class ScenesCommand implements Runnable {
     @Spec
     CommandLine.Model.CommandSpec spec;
@@ -44,9 +44,20 @@ final class ScenesCommand implements Runnable {
         return commandLine;
     }
 
+    /** picocli's words for a value that starts with '-', such as {@code --bounds=-1,5}. */
+    private static final java.util.regex.Pattern DASHED_VALUE =
+            java.util.regex.Pattern.compile("Expected parameter for option '([^']+)' but found '(-[0-9.][^']*)'");
+
     private static int handleUsageError(CommandLine.ParameterException e, String[] args) {
         PrintWriter err = e.getCommandLine().getErr();
-        err.println("scenes: " + e.getMessage());
+        java.util.regex.Matcher dashed = DASHED_VALUE.matcher(e.getMessage());
+        if (dashed.find()) {
+            // --bounds=-1,5: not an unknown option, a value that looks like one
+            err.println("scenes: option '" + dashed.group(1) + "' expects a value, not '" + dashed.group(2)
+                    + "' (a word starting with '-' is taken for an option)");
+        } else {
+            err.println("scenes: " + printable(e.getMessage()));
+        }
         CommandLine.UnmatchedArgumentException.printSuggestions(e, err);
         err.println("Try '" + e.getCommandLine().getCommandSpec().qualifiedName() + " --help' for usage.");
         return ExitCodes.USAGE;
@@ -56,6 +67,12 @@ final class ScenesCommand implements Runnable {
         PrintWriter err = commandLine.getErr();
         boolean verbose = parseResult.hasMatchedOption("--verbose")
                 || (parseResult.subcommand() != null && anyVerbose(parseResult));
+        if (Limits.outOfMemory(e) != null) {
+            // a worker thread's OutOfMemoryError, wrapped: the same one line as the main thread's
+            err.println("scenes: " + Limits.outOfMemoryMessage());
+            err.flush();
+            return ExitCodes.FAILURE;
+        }
         err.println("scenes: " + printable(message(e)));
         if (verbose) {
             e.printStackTrace(err);
@@ -95,12 +112,15 @@ final class ScenesCommand implements Runnable {
         return message == null ? e.getClass().getSimpleName() : message;
     }
 
-    /** Control characters of a message (quoted from a file) escaped, so they cannot drive the terminal. */
+    /**
+     * Control characters of a message (quoted from a file, or in a file's name) escaped, so they
+     * cannot drive the terminal, and a newline cannot break the message's one line.
+     */
     static String printable(String message) {
         StringBuilder text = new StringBuilder(message.length());
         for (int i = 0; i < message.length(); i++) {
             char c = message.charAt(i);
-            if ((c < 0x20 && c != '\n') || c == 0x7f) {
+            if (c < 0x20 || c == 0x7f) {
                 text.append(String.format("\\x%02X", (int) c));
             } else {
                 text.append(c);

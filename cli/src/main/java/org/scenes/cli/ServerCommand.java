@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
@@ -112,6 +113,15 @@ final class ServerCommand implements Callable<Integer> {
             }
         }, "server-stop");
         Runtime.getRuntime().addShutdownHook(hook);
+        // Ctrl-C and SIGTERM are how a server is stopped: handled here, the game ends as at time over
+        // and the command exits 0 as the proxy does (the JVM's default would exit 130/143)
+        for (String signal : List.of("INT", "TERM")) {
+            try {
+                sun.misc.Signal.handle(new sun.misc.Signal(signal), s -> new Thread(series::stop, "server-signal").start());
+            } catch (IllegalArgumentException unavailable) {
+                // no such signal here: the shutdown hook still completes the logs
+            }
+        }
         try {
             series.run(started -> {
                 String game = games == 1 ? "" : String.format(Locale.ROOT, "game %d of %d, ", started[0], games);

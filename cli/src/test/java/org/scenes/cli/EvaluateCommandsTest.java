@@ -113,6 +113,73 @@ class EvaluateCommandsTest {
         assertEquals(ExitCodes.FAILURE, missing.run("replay", dir.resolve("none.rcg"), "-o", dir.resolve("x.html")));
     }
 
+    @Test
+    void evaluateReadsExistingGameLogsOfAnyTeam() throws Exception {
+        // the teacher's games against Amber, the "imitator's" (another teacher) against Red, the
+        // imitator on the right in its second game: Teal is the one team of all four
+        Path teacher = dir.resolve("teacher");
+        Path imitator = dir.resolve("imitator");
+        record(teacher, "krislet:2,krislet:2", "Teal,Amber", 1);
+        record(teacher, "krislet:2,krislet:2", "Teal,Amber", 2);
+        record(imitator, "statebased:2,krislet:2", "Teal,Red", 1);
+        record(imitator, "krislet:2,statebased:2", "Red,Teal", 2);
+        try (var files = Files.list(teacher)) {
+            // one game without its command log: its commands come from the .rcg's counters
+            Files.delete(files.filter(f -> f.toString().endsWith(".rcl")).sorted().findFirst().orElseThrow());
+        }
+        Path report = dir.resolve("report");
+        int status = cli.run("evaluate", "--teacher-games", teacher, "--imitator-games", imitator, "--json",
+                "--report", report);
+        assertEquals(ExitCodes.OK, status, cli.err());
+        JsonNode root = ConfigFiles.JSON.readTree(cli.out());
+        assertEquals("Teal", root.at("/about/team").asText());
+        assertTrue(root.at("/about/teacher games").asText().contains("1 .rcl, the others' .rcg counters"),
+                root.get("about").toString());
+        double dash = root.at("/figures/executedDash/teacher/mean").asDouble();
+        assertTrue(dash > 0.3 && dash < 1, "executed dash share " + dash);
+        assertTrue(root.at("/figures/dashShare").isMissingNode(), "no traffic traced: no mix of sees answered");
+        double onPitch = root.at("/figures/onPitch/imitator/mean").asDouble();
+        assertTrue(onPitch > 0.5 && onPitch <= 1, "on pitch " + onPitch);
+        assertTrue(root.at("/executedDivergence/mean").asDouble() >= 0);
+        assertEquals(2, root.at("/positions/imitator").size(), "two players' mean positions");
+        assertEquals("executed dash share", root.at("/turing/features/5").asText());
+        String page = Files.readString(report.resolve("index.html"));
+        assertEquals(2, count(page, "class=\"replay\""));
+        assertTrue(page.contains("Imitator, player 2"), "a heat map per uniform number");
+
+        // several teams in every game: the team must be named
+        CommandRunner both = new CommandRunner();
+        assertEquals(ExitCodes.USAGE, both.run("evaluate", "--teacher-games", teacher, "--imitator-games", teacher));
+        assertTrue(both.err().contains("--team: more than one team plays in all 4 games")
+                && both.err().contains("Teal (4 games), Amber (4 games)"), both.err());
+        assertEquals(ExitCodes.USAGE, both.run("evaluate", "--teacher-games", teacher, "--imitator-games", imitator,
+                "--team", "Amber"));
+        assertTrue(both.err().contains("not of Amber"), both.err());
+        // a bad directory: one line, usage
+        CommandRunner bad = new CommandRunner();
+        assertEquals(ExitCodes.USAGE, bad.run("evaluate", "--teacher-games", dir.resolve("none"), "--imitator-games",
+                imitator));
+        assertEquals("scenes: --teacher-games: " + dir.resolve("none") + " is not a directory", bad.err().strip());
+        assertEquals(ExitCodes.USAGE, bad.run("evaluate", "--teacher-games", teacher));
+        assertTrue(bad.err().contains("give both"), bad.err());
+    }
+
+    private static void record(Path directory, String teams, String names, int seed) {
+        CommandRunner simulate = new CommandRunner();
+        Path game = directory.resolve("game" + seed);
+        assertEquals(ExitCodes.OK, simulate.run("simulate", "--cycles", "300", "--teams", teams, "--names", names,
+                "--seed", seed, "--out-dir", directory.resolve("players" + seed), "--record", game), simulate.err());
+        try (var files = Files.list(game)) {
+            // the game's logs in the side's directory, named by the game
+            for (Path log : files.toList()) {
+                String name = log.getFileName().toString();
+                Files.move(log, directory.resolve("game" + seed + name.substring(name.lastIndexOf('.'))));
+            }
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
     private static int count(String text, String part) {
         int count = 0;
         for (int i = text.indexOf(part); i >= 0; i = text.indexOf(part, i + 1)) {

@@ -48,7 +48,7 @@ class ExperimentCommandTest {
                 new GameSetup.Team("University", 3, Teachers.byName("krislet")), 1500, 1, game)).run(t -> { });
         for (int player = 1; player <= 3; player++) {
             List<Scene> scenes = new ArrayList<>();
-            new SceneConverter(Grid.DEFAULT, false, null).convert(game.resolve("Carleton_" + player + ".lsf.gz"), scenes::add);
+            SceneConverter.with(Grid.DEFAULT).build().convert(game.resolve("Carleton_" + player + ".lsf.gz"), scenes::add);
             Path file = work.resolve("Carleton_" + player + ".json");
             SceneFileWriter.write(file, new SceneFile(SceneFileHeader.of(Grid.DEFAULT, new SceneSource("Carleton_" + player, null)),
                     scenes.subList(0, SCENES_PER_FILE)));

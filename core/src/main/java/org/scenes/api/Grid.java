@@ -34,12 +34,15 @@ public final class Grid {
         if (columns < 1) {
             throw new IllegalArgumentException("a grid needs at least one column, not " + columns);
         }
+        if (!Double.isFinite(minAngle) || !Double.isFinite(maxAngle)) {
+            throw new IllegalArgumentException("angle range [" + minAngle + ", " + maxAngle + "] must be finite");
+        }
         if (!(maxAngle > minAngle)) {
             throw new IllegalArgumentException("angle range [" + minAngle + ", " + maxAngle + "] is empty");
         }
         for (int i = 0; i < bounds.length; i++) {
-            if (!(bounds[i] > 0) || (i > 0 && !(bounds[i] > bounds[i - 1]))) {
-                throw new IllegalArgumentException("distance bounds must be positive and ascending: "
+            if (!(bounds[i] > 0) || !Double.isFinite(bounds[i]) || (i > 0 && !(bounds[i] > bounds[i - 1]))) {
+                throw new IllegalArgumentException("distance bounds must be finite, positive and ascending: "
                         + Arrays.toString(bounds));
             }
         }

@@ -24,9 +24,11 @@ import java.util.stream.Collectors;
  * @param seeAge cycles between the {@code see} the objects come from and {@code cycle}: 0 when the
  *               player saw in the cycle it acted, 1 when it acted on the see of the cycle before
  *               (synchronous vision sends a see every other cycle in normal view)
+ * @param world what the player believed about the game in {@code cycle} (its world model), or null
+ *              when the scene was made without one
  */
 public record Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions, Scene previous,
-                    int seeAge) {
+                    int seeAge, World world) {
     /** The most actions a scene holds: the primary one and one more (e.g. a turn_neck). */
     public static final int MAX_ACTIONS = 2;
     /** The longest chain of remembered scenes a scene may carry ({@link #withHistory}). */
@@ -58,6 +60,21 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
     }
 
     /**
+     * A scene without world model.
+     *
+     * @param cycle the server cycle of the {@code see}
+     * @param observer the player who saw (null for unknown)
+     * @param objects the seen objects, in server order
+     * @param actions at most {@link #MAX_ACTIONS} actions, primary first
+     * @param previous the same player's scene before this one, or null
+     * @param seeAge cycles between the {@code see} and {@code cycle}, 0 or more
+     */
+    public Scene(int cycle, Observer observer, List<SeenObject> objects, List<Action> actions, Scene previous,
+                 int seeAge) {
+        this(cycle, observer, objects, actions, previous, seeAge, null);
+    }
+
+    /**
      * Copies the lists, bounds the memory chain and checks the action count and see age.
      *
      * @param cycle the server cycle of the {@code see}
@@ -66,6 +83,7 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
      * @param actions at most {@link #MAX_ACTIONS} actions, primary first
      * @param previous the same player's scene before this one, or null
      * @param seeAge cycles between the {@code see} and {@code cycle}, 0 or more
+     * @param world the player's world model in {@code cycle}, or null
      */
     public Scene {
         observer = observer == null ? Observer.UNKNOWN : observer;
@@ -90,7 +108,8 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
      * @return the scene with one remembered scene at most
      */
     public Scene withPrevious(Scene earlier) {
-        return new Scene(cycle, observer, objects, actions, earlier == null ? null : earlier.withPrevious(null), seeAge);
+        return new Scene(cycle, observer, objects, actions, earlier == null ? null : earlier.withPrevious(null), seeAge,
+                world);
     }
 
     /**
@@ -101,7 +120,7 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
      * @return the scene with the chain
      */
     public Scene withHistory(Scene earlier) {
-        return new Scene(cycle, observer, objects, actions, earlier, seeAge);
+        return new Scene(cycle, observer, objects, actions, earlier, seeAge, world);
     }
 
     /**
@@ -119,7 +138,8 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
 
     private Scene truncated(int depth) {
         return depth == 0 ? withPrevious(null)
-                : new Scene(cycle, observer, objects, actions, previous == null ? null : previous.truncated(depth - 1), seeAge);
+                : new Scene(cycle, observer, objects, actions, previous == null ? null : previous.truncated(depth - 1), seeAge,
+                        world);
     }
 
     /**
@@ -147,7 +167,7 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
      * @return the copy
      */
     public Scene withObjects(List<SeenObject> newObjects) {
-        return new Scene(cycle, observer, newObjects, actions, previous, seeAge);
+        return new Scene(cycle, observer, newObjects, actions, previous, seeAge, world);
     }
 
     /*
@@ -214,6 +234,16 @@ public record Scene(int cycle, Observer observer, List<SeenObject> objects, List
     public Scene regrid(Grid grid) {
         return new Scene(cycle, observer,
                 objects.stream().map(o -> o.withCell(grid.cell(o.distance(), o.direction()))).toList(), actions,
-                previous == null ? null : previous.regrid(grid), seeAge);
+                previous == null ? null : previous.regrid(grid), seeAge, world);
+    }
+
+    /**
+     * The same scene with another world model.
+     *
+     * @param newWorld the world model it holds instead, or null for none
+     * @return the copy
+     */
+    public Scene withWorld(World newWorld) {
+        return new Scene(cycle, observer, objects, actions, previous, seeAge, newWorld);
     }
 }

@@ -1,6 +1,7 @@
 package org.scenes.evaluate;
 
 import java.io.IOException;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
@@ -12,6 +13,7 @@ import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.GameLogs;
 
 /**
  * Teacher and imitator in the same situations: for every seed, one game with the teacher team on
@@ -29,9 +31,22 @@ public final class Evaluation {
      * @param opponent the right team in every game
      * @param cycles each game's length
      * @param seeds one pair of games per seed
+     * @param side the side teacher and imitator play: the right one when the teacher is an
+     *             {@link ExternalTeam} (an external team connects second, after ours)
      */
     public record Plan(GameSetup.Team teacher, BrainFactory imitator, GameSetup.Team opponent, int cycles,
-                       List<Long> seeds) {
+                       List<Long> seeds, Side side) {
+        /** A plan with teacher and imitator on the left. */
+        public Plan(GameSetup.Team teacher, BrainFactory imitator, GameSetup.Team opponent, int cycles,
+                    List<Long> seeds) {
+            this(teacher, imitator, opponent, cycles, seeds, Side.LEFT);
+        }
+
+        /** Whether a team of the plan is an {@link ExternalTeam}: its games are measured from the server's logs. */
+        public boolean external() {
+            return teacher.brains() instanceof ExternalTeam || opponent.brains() instanceof ExternalTeam;
+        }
+
         public Plan {
             Objects.requireNonNull(teacher, "teacher");
             Objects.requireNonNull(imitator, "imitator");
@@ -42,6 +57,16 @@ public final class Evaluation {
             }
             if (cycles < 1) {
                 throw new IllegalArgumentException("cycles must be at least 1, not " + cycles);
+            }
+            Objects.requireNonNull(side, "side");
+            boolean externalTeacher = teacher.brains() instanceof ExternalTeam;
+            boolean externalOpponent = opponent.brains() instanceof ExternalTeam;
+            if (externalTeacher && externalOpponent) {
+                throw new IllegalArgumentException("one external team a game: ours joins first, the external one"
+                        + " after it");
+            }
+            if ((externalTeacher && side != Side.RIGHT) || (externalOpponent && side != Side.LEFT)) {
+                throw new IllegalArgumentException("an external team plays on the right, after ours");
             }
         }
 
@@ -62,26 +87,58 @@ public final class Evaluation {
         for (long seed : plan.seeds()) {
             teacherGames.add(play(PlayedGame.Role.TEACHER, plan.teacher(), null, plan, seed, arena, done, progress));
             GameSetup.Team imitating = new GameSetup.Team(plan.teacher().name(), plan.teacher().players(), plan.imitator());
-            imitatorGames.add(play(PlayedGame.Role.IMITATOR, imitating, plan.teacher().brains(), plan, seed, arena, done,
-                    progress));
+            // an external teacher has no shadow in process
+            BrainFactory shadow = plan.teacher().brains() instanceof ExternalTeam ? null : plan.teacher().brains();
+            imitatorGames.add(play(PlayedGame.Role.IMITATOR, imitating, shadow, plan, seed, arena, done, progress));
         }
         return new Results(teacherGames, imitatorGames);
     }
 
-    /** One game with {@code left} driving and {@code shadow} (or none) beside each of its players. */
-    static PlayedGame play(PlayedGame.Role role, GameSetup.Team left, BrainFactory shadow, Plan plan, long seed,
+    /**
+     * One game with {@code team} driving on the plan's side and {@code shadow} (or none) beside each
+     * of its players; an external team is not traced.
+     */
+    static PlayedGame play(PlayedGame.Role role, GameSetup.Team team, BrainFactory shadow, Plan plan, long seed,
                                   Arena arena, long[] done, LongConsumer progress) throws IOException {
         List<PlayerTrace> traces = new ArrayList<>();
-        BrainFactory traced = traced(left.brains(), shadow, seed, traces);
-        GameSetup setup = new GameSetup(new GameSetup.Team(left.name(), left.players(), traced), plan.opponent(),
-                plan.cycles(), seed, null);
+        BrainFactory brains = team.brains() instanceof ExternalTeam ? team.brains()
+                : traced(team.brains(), shadow, seed, traces);
+        GameSetup.Team seated = new GameSetup.Team(team.name(), team.players(), brains);
+        GameSetup setup = plan.side() == Side.LEFT
+                ? new GameSetup(seated, plan.opponent(), plan.cycles(), seed, null)
+                : new GameSetup(plan.opponent(), seated, plan.cycles(), seed, null);
         List<GameFrame> frames = new ArrayList<>();
         long before = done[0];
         GameResult result = arena.play(setup, time -> progress.accept(before + time), frames::add);
         done[0] = before + plan.cycles();
         progress.accept(done[0]);
         traces.forEach(PlayerTrace::close);
-        return new PlayedGame(role, Side.LEFT, seed, result, frames, traces);
+        if (plan.external()) {
+            // our players hear only their own kick counters: every game's kicks from the game log, alike
+            result = new GameResult(result.scoreLeft(), result.scoreRight(), ServerLogGames.kicks(frames, Side.LEFT),
+                    ServerLogGames.kicks(frames, Side.RIGHT), result.cycles(), result.steps(), result.logs());
+        }
+        return new PlayedGame(role, plan.side(), seed, result, frames, traces,
+                executed(result, frames, plan.side(), team.name()));
+    }
+
+    /**
+     * The executed commands from the server's command log beside the game log the arena read (a
+     * live server's), else from the frames' counters.
+     */
+    static ExecutedCommands executed(GameResult result, List<GameFrame> frames, Side side, String team)
+            throws IOException {
+        for (Path log : result.logs()) {
+            String name = log.getFileName().toString();
+            if (name.endsWith(".rcg") || name.endsWith(".rcg.gz")) {
+                try {
+                    return ExecutedCommands.fromCommandLog(frames, side, team, GameLogs.commandLogBeside(log));
+                } catch (IllegalArgumentException none) {
+                    break; // rcssserver writes its .rcl only with text_logging
+                }
+            }
+        }
+        return ExecutedCommands.fromCounters(frames, side);
     }
 
     /**

@@ -51,19 +51,36 @@ public final class HtmlReport {
                     .append(ReplayPage.escape(target.reached())).append("</td><td class=\"")
                     .append(target.met() ? "met\">met" : "missed\">not met").append("</td></tr>\n");
         }
-        html.append("</table>\n<h2>Figures</h2>\n<p class=\"note\">Mean over ").append(comparison.seeds().size())
-                .append(" seeds (").append(comparison.seeds()).append("), &plusmn; the standard deviation over seeds."
-                        + " Teacher and imitator play the same seeds, start positions and opponent.</p>\n");
+        boolean fromLogs = Stream.concat(results.teacher().stream(), results.imitator().stream())
+                .allMatch(g -> g.traces().isEmpty());
+        html.append("</table>\n<h2>Figures</h2>\n<p class=\"note\">");
+        if (fromLogs) {
+            html.append("Mean over ").append(results.teacher().size()).append(" teacher and ")
+                    .append(results.imitator().size()).append(" imitator games read from the server's logs, &plusmn;"
+                            + " the standard deviation over games.</p>\n");
+        } else {
+            html.append("Mean over ").append(comparison.seeds().size()).append(" seeds (").append(comparison.seeds())
+                    .append("), &plusmn; the standard deviation over seeds. Teacher and imitator play the same seeds,"
+                            + " start positions and opponent.</p>\n");
+        }
         html.append(Tables.html(comparison));
         html.append("<div class=\"row\">\n");
         html.append(bars(comparison, "Action mix", "% of body commands",
                 List.of("dashShare", "turnShare", "kickShare"), 100, "0.0"));
         html.append(bars(comparison, "Shares", "%", List.of("answered", "stuckShare", "agreement", "typeAgreement"),
                 100, "0.0"));
+        html.append(bars(comparison, "Executed action mix (game log)", "% of executed body commands",
+                Comparison.EXECUTED_KEYS, 100, "0.0"));
+        html.append(bars(comparison, "Tempo and repeats (game log)", "%",
+                List.of("bodyPerStep", "repeatShare"), 100, "0.0"));
+        html.append(bars(comparison, "Where the players are (game log)", "% of play-on frames",
+                List.of("nearBall", "onPitch", "logStuckShare", "kickOffsTaken"), 100, "0.0"));
         html.append(bars(comparison, "Per 1000 cycles", "per 1000 cycles",
                 List.of("kicksPer1000", "goalsPer1000", "goalsAgainstPer1000"), 1, "0.00"));
         html.append(bars(comparison, "Distance to ball", "m", List.of("ballDistance"), 1, "0.0"));
         html.append(bars(comparison, "Kick-off to first touch", "cycles", List.of("firstTouch"), 1, "0.0"));
+        html.append(bars(comparison, "Kicks off the goal direction", "degrees", List.of("kickAngle"), 1, "0.0"));
+        html.append(bars(comparison, "Stamina", "stamina", List.of("stamina"), 1, "0"));
         html.append("<div>").append(ReportCharts.svg(ReportCharts.turing(comparison.turing()), 420, 360))
                 .append("</div>\n</div>\n");
         TuringTest.Outcome turing = comparison.turing();
@@ -83,15 +100,16 @@ public final class HtmlReport {
             html.append("<div class=\"row\">\n");
             html.append("<div>").append(ReportCharts.svg(ReportCharts.trajectories("Teacher: paths, first "
                     + TRAJECTORY_CYCLES + " cycles, seed " + teacherGame.seed(), teacherGame.frames(),
-                    TRAJECTORY_CYCLES), 600, 455)).append("</div>\n");
+                    TRAJECTORY_CYCLES, teacherGame.side()), 600, 455)).append("</div>\n");
             html.append("<div>").append(ReportCharts.svg(ReportCharts.trajectories("Imitator: paths, first "
                     + TRAJECTORY_CYCLES + " cycles, seed " + imitatorGame.seed(), imitatorGame.frames(),
-                    TRAJECTORY_CYCLES), 600, 455)).append("</div>\n");
+                    TRAJECTORY_CYCLES, imitatorGame.side()), 600, 455)).append("</div>\n");
             html.append("<div>").append(ReportCharts.svg(ReportCharts.heatMap(
                     "Teacher: where the ball was (play on, all seeds)", results.teacher()), 600, 425)).append("</div>\n");
             html.append("<div>").append(ReportCharts.svg(ReportCharts.heatMap(
                     "Imitator: where the ball was (play on, all seeds)", results.imitator()), 600, 425))
                     .append("</div>\n</div>\n");
+            html.append(playerHeatMaps(comparison, results));
             html.append("<h2>Replay: teacher, seed ").append(teacherGame.seed()).append(", ")
                     .append(score(teacherGame)).append("</h2>\n").append(ReplayPage.section("replay-teacher",
                             teacherGame.frames()));
@@ -107,16 +125,41 @@ public final class HtmlReport {
         return file;
     }
 
+    /**
+     * Where each uniform number played (play on, all games, the team attacking towards x+), the
+     * teacher's and the imitator's player side by side.
+     */
+    private static String playerHeatMaps(Comparison comparison, Evaluation.Results results) {
+        int players = Math.max(comparison.teacherPositions().length, comparison.imitatorPositions().length) - 1;
+        if (players < 1) {
+            return "";
+        }
+        StringBuilder html = new StringBuilder("<h2>Positions by uniform number</h2>\n<p class=\"note\">Share of"
+                + " play-on frames in each 5 m cell, all games, each team attacking towards the right; teacher and"
+                + " imitator side by side.</p>\n<div class=\"row\">\n");
+        for (int unum = 1; unum <= players; unum++) {
+            html.append("<div>").append(ReportCharts.svg(ReportCharts.playerHeatMap("Teacher, player " + unum,
+                    results.teacher(), unum), 300, 210)).append(ReportCharts.svg(ReportCharts.playerHeatMap(
+                    "Imitator, player " + unum, results.imitator(), unum), 300, 210)).append("</div>\n");
+        }
+        return html.append("</div>\n").toString();
+    }
+
     private static String score(PlayedGame game) {
         return game.result().scoreLeft() + " : " + game.result().scoreRight();
     }
 
     private static String bars(Comparison comparison, String title, String unit, List<String> keys, double factor,
                                String format) {
-        List<Comparison.Figure> figures = keys.stream().map(comparison::figure).toList();
+        // the figures the games gave: games read from logs have no traced ones
+        List<Comparison.Figure> figures = comparison.figures().stream().filter(f -> keys.contains(f.key()))
+                .sorted(java.util.Comparator.comparingInt(f -> keys.indexOf(f.key()))).toList();
+        if (figures.isEmpty()) {
+            return "";
+        }
         return "<div>" + ReportCharts.svg(ReportCharts.bars(title, unit, figures.stream().map(Tables::shortLabel).toList(),
                 figures.stream().map(Comparison.Figure::teacher).toList(),
                 figures.stream().map(Comparison.Figure::imitator).toList(), factor, format),
-                Math.max(320, 150 + 130 * keys.size()), 360) + "</div>\n";
+                Math.max(320, 150 + 130 * figures.size()), 360) + "</div>\n";
     }
 }

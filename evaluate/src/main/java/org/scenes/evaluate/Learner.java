@@ -59,7 +59,7 @@ public final class Learner {
         Path directory = Files.createTempDirectory("scenes-evaluate-");
         try {
             KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
-            SceneConverter converter = new SceneConverter(Grid.DEFAULT, false, line -> { });
+            SceneConverter converter = SceneConverter.with(Grid.DEFAULT).build();
             long done = 0;
             for (long seed : trainingSeeds) {
                 Path logs = directory.resolve("seed-" + seed);

@@ -75,21 +75,28 @@ public final class LiveArena implements Arena {
 
     @Override
     public GameResult play(GameSetup setup, IntConsumer progress, Consumer<GameFrame> frames) throws IOException {
+        if (setup.left().brains() instanceof ExternalTeam) {
+            throw new IllegalArgumentException("an external team plays on the right: ours connects first");
+        }
         Scoreboard board = new Scoreboard();
         List<PlayerReport> reports = new ArrayList<>();
         FileTime begun;
         try {
-            Thread left = connect(setup.left(), Side.LEFT, setup.seed(), board, reports, System.nanoTime()
+            Connected left = connect(setup.left(), Side.LEFT, setup.seed(), board, reports, System.nanoTime()
                     + serverWait.toNanos());
             // the server took this game, so the previous game's log is complete: a log newer than this is ours
             begun = FileTime.fromMillis(System.currentTimeMillis());
-            // the right team only once the left is complete: the first team to connect is the left one
-            Thread right = connect(setup.right(), Side.RIGHT, setup.seed(), board, reports, System.nanoTime()
-                    + client.connectTimeout().toNanos() * 2);
-            while (left.isAlive() || right.isAlive()) {
-                progress.accept(board.time.get());
-                left.join(POLL_MILLIS);
-                right.join(1);
+            if (setup.right().brains() instanceof ExternalTeam external) {
+                playAgainst(external, setup.right(), left, board, progress);
+            } else {
+                // the right team only once the left is complete: the first team to connect is the left one
+                Connected right = connect(setup.right(), Side.RIGHT, setup.seed(), board, reports, System.nanoTime()
+                        + client.connectTimeout().toNanos() * 2);
+                while (left.thread().isAlive() || right.thread().isAlive()) {
+                    progress.accept(board.time.get());
+                    left.thread().join(POLL_MILLIS);
+                    right.thread().join(1);
+                }
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -124,8 +131,8 @@ public final class LiveArena implements Arena {
      * Starts the team's runner and waits until all its players are connected, trying again
      * (until {@code deadline}) while the server does not accept the first one.
      */
-    private Thread connect(GameSetup.Team team, Side side, long seed, Scoreboard board, List<PlayerReport> reports,
-                           long deadline) throws InterruptedException, IOException {
+    private Connected connect(GameSetup.Team team, Side side, long seed, Scoreboard board, List<PlayerReport> reports,
+                              long deadline) throws InterruptedException, IOException {
         String lastReason = "";
         while (true) {
             // each try waits for its answer at most until the deadline (and at least a second)
@@ -164,7 +171,7 @@ public final class LiveArena implements Arena {
                         + ": is another team connected?");
             }
             if (connected.get() == team.players()) {
-                return thread;
+                return new Connected(thread, runner);
             }
             thread.join();
             List<PlayerReport> failed;
@@ -183,6 +190,57 @@ public final class LiveArena implements Arena {
             }
             Thread.sleep(500);
         }
+    }
+
+    /** Our team on the server: the thread running it and the runner to stop it. */
+    private record Connected(Thread thread, TeamRunner runner) {
+    }
+
+    /**
+     * Starts the external team's command once ours is connected (so it takes the right side), waits
+     * until the server starts the game (the clock our players hear runs: no game starts without the
+     * other team) and plays it to the end; the command's whole process group is ended afterwards,
+     * and ours stopped if the command fails.
+     */
+    private void playAgainst(ExternalTeam external, GameSetup.Team team, Connected ours, Scoreboard board,
+                             IntConsumer progress) throws IOException, InterruptedException {
+        Path output = Files.createTempFile("scenes-team-" + team.name() + "-", ".log");
+        boolean failed = true;
+        try (ExternalTeam.Running running = external.start(client.server().host(), client.server().port(),
+                team.name(), team.players(), output)) {
+            long deadline = System.nanoTime() + serverWait.toNanos();
+            while (board.time.get() < 1 && !board.timeOver && ours.thread().isAlive()) {
+                if (!running.alive()) {
+                    throw new IOException(team.name() + ": the command '" + running.command() + "' ended (exit "
+                            + running.exitCode() + ") before the game began" + quoted(running.lastWords()));
+                }
+                if (System.nanoTime() > deadline) {
+                    throw new IOException(team.name() + ": no player of the command '" + running.command()
+                            + "' joined the game on " + client.server() + " within " + serverWait.toSeconds() + " s"
+                            + quoted(running.lastWords()));
+                }
+                ours.thread().join(POLL_MILLIS);
+            }
+            while (ours.thread().isAlive()) {
+                progress.accept(board.time.get());
+                ours.thread().join(POLL_MILLIS);
+                if (!running.alive() && !board.timeOver && ours.thread().isAlive()) {
+                    throw new IOException(team.name() + ": the command '" + running.command() + "' ended (exit "
+                            + running.exitCode() + ") at cycle " + board.time.get() + ", before time over"
+                            + quoted(running.lastWords()));
+                }
+            }
+            failed = false;
+        } finally {
+            if (failed) {
+                ours.runner().stopAndAwait();
+            }
+            Files.deleteIfExists(output);
+        }
+    }
+
+    private static String quoted(String lastWords) {
+        return lastWords.isEmpty() ? "" : " (it said: " + lastWords + ")";
     }
 
     private static String reasons(List<PlayerReport> reports) {

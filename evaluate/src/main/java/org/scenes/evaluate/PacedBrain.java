@@ -35,7 +35,25 @@ public final class PacedBrain implements Brain {
         if (steps < 0) {
             throw new IllegalArgumentException("think steps must be 0 or more, not " + steps);
         }
-        return steps == 0 ? factory : (team, random) -> new PacedBrain(factory.create(team, random), steps);
+        if (steps == 0) {
+            return factory;
+        }
+        return new BrainFactory() {
+            @Override
+            public Brain create(String team, java.util.Random random) {
+                return new PacedBrain(factory.create(team, random), steps);
+            }
+
+            @Override
+            public boolean goalie(int unum) {
+                return factory.goalie(unum);
+            }
+        };
+    }
+
+    @Override
+    public boolean repeatsKickOffMove() {
+        return inner.repeatsKickOffMove();
     }
 
     @Override

@@ -39,6 +39,7 @@ final class ReportCharts {
     private static final double HALF_X = 52.5;
     private static final double HALF_Y = 34;
     private static final double HEAT_CELL = 3;
+    private static final double PLAYER_CELL = 5;
     /** Frames per point of a drawn path. */
     static final int PATH_STEP = 3;
     private static int charts;
@@ -144,6 +145,11 @@ final class ReportCharts {
      * point every {@link #PATH_STEP} frames (a player runs at most about 1 m a cycle).
      */
     static JFreeChart trajectories(String title, List<GameFrame> frames, int cycles) {
+        return trajectories(title, frames, cycles, Side.LEFT);
+    }
+
+    /** The paths of {@code side}'s players, as they are on the pitch. */
+    static JFreeChart trajectories(String title, List<GameFrame> frames, int cycles, Side side) {
         XYSeriesCollection data = new XYSeriesCollection();
         java.util.Map<Integer, XYSeries> byPlayer = new java.util.TreeMap<>();
         int count = 0;
@@ -155,7 +161,7 @@ final class ReportCharts {
                 continue;
             }
             for (PlayerState p : frame.players()) {
-                if (p.side() == Side.LEFT) {
+                if (p.side() == side) {
                     byPlayer.computeIfAbsent(p.unum(), u -> new XYSeries("player " + u, false, true)).add(p.x(), p.y());
                 }
             }
@@ -173,23 +179,66 @@ final class ReportCharts {
         return chart;
     }
 
-    /** Where the ball was during play on, over all games: the share of frames in each 3 m cell. */
+    /**
+     * Where the ball was during play on, over all games: the share of frames in each 3 m cell, in
+     * the frame of the games' team (attacking towards x+: a right team's games are turned round).
+     */
     static JFreeChart heatMap(String title, List<PlayedGame> games) {
-        int columns = (int) Math.ceil(2 * (HALF_X + 5) / HEAT_CELL);
-        int rows = (int) Math.ceil(2 * (HALF_Y + 5) / HEAT_CELL);
-        double[][] counts = new double[columns][rows];
-        long total = 0;
+        return heatMap(title, games, HEAT_CELL, true, (game, frame, cells) -> {
+            double sign = game.side() == Side.LEFT ? 1 : -1;
+            cells.add(sign * frame.ball().x(), sign * frame.ball().y());
+        });
+    }
+
+    /** Where the games' team's player {@code unum} was during play on, in its team's frame, per 5 m cell. */
+    static JFreeChart playerHeatMap(String title, List<PlayedGame> games, int unum) {
+        return heatMap(title, games, PLAYER_CELL, false, (game, frame, cells) -> {
+            double sign = game.side() == Side.LEFT ? 1 : -1;
+            for (PlayerState p : frame.players()) {
+                if (p.side() == game.side() && p.unum() == unum) {
+                    cells.add(sign * p.x(), sign * p.y());
+                }
+            }
+        });
+    }
+
+    /** Cells of a heat map. */
+    private static final class Cells {
+        final double cell;
+        final double[][] counts;
+        long total;
+
+        Cells(double cell) {
+            this.cell = cell;
+            counts = new double[(int) Math.ceil(2 * (HALF_X + 5) / cell)][(int) Math.ceil(2 * (HALF_Y + 5) / cell)];
+        }
+
+        void add(double x, double y) {
+            counts[clamp((int) ((x + HALF_X + 5) / cell), counts.length)]
+                    [clamp((int) ((y + HALF_Y + 5) / cell), counts[0].length)]++;
+            total++;
+        }
+    }
+
+    /** What a play-on frame of a game adds to a heat map. */
+    private interface Positions {
+        void add(PlayedGame game, GameFrame frame, Cells cells);
+    }
+
+    private static JFreeChart heatMap(String title, List<PlayedGame> games, double cell, boolean axes,
+                                      Positions positions) {
+        Cells cells = new Cells(cell);
         for (PlayedGame game : games) {
             for (GameFrame frame : game.frames()) {
-                if (!frame.playMode().equals("play_on")) {
-                    continue;
+                if (frame.playMode().equals("play_on")) {
+                    positions.add(game, frame, cells);
                 }
-                int c = clamp((int) ((frame.ball().x() + HALF_X + 5) / HEAT_CELL), columns);
-                int r = clamp((int) ((frame.ball().y() + HALF_Y + 5) / HEAT_CELL), rows);
-                counts[c][r]++;
-                total++;
             }
         }
+        double[][] counts = cells.counts;
+        long total = cells.total;
+        int columns = counts.length;
+        int rows = counts[0].length;
         // only the cells the ball visited: the empty ones are the plot's white background
         int visited = 0;
         for (double[] column : counts) {
@@ -207,8 +256,8 @@ final class ReportCharts {
                 if (counts[c][r] == 0) {
                     continue;
                 }
-                xs[i] = -HALF_X - 5 + (c + 0.5) * HEAT_CELL;
-                ys[i] = -HALF_Y - 5 + (r + 0.5) * HEAT_CELL;
+                xs[i] = -HALF_X - 5 + (c + 0.5) * cell;
+                ys[i] = -HALF_Y - 5 + (r + 0.5) * cell;
                 zs[i] = 100 * counts[c][r] / total;
                 max = Math.max(max, zs[i]);
                 i++;
@@ -217,8 +266,8 @@ final class ReportCharts {
         DefaultXYZDataset data = new DefaultXYZDataset();
         data.addSeries("ball", new double[][] {xs, ys, zs});
         XYBlockRenderer renderer = new XYBlockRenderer();
-        renderer.setBlockWidth(HEAT_CELL);
-        renderer.setBlockHeight(HEAT_CELL);
+        renderer.setBlockWidth(cell);
+        renderer.setBlockHeight(cell);
         LookupPaintScale scale = new LookupPaintScale(0, Math.max(max, 1e-9) * 1.0001, Color.WHITE);
         int steps = 8;
         for (int s = 0; s < steps; s++) {
@@ -229,7 +278,11 @@ final class ReportCharts {
         renderer.setPaintScale(scale);
         XYPlot plot = pitchPlot(data, renderer);
         plot.setBackgroundPaint(Color.WHITE);
-        JFreeChart chart = new JFreeChart(title, new Font(Font.SANS_SERIF, Font.BOLD, 13), plot, false);
+        if (!axes) {
+            plot.getDomainAxis().setVisible(false);
+            plot.getRangeAxis().setVisible(false);
+        }
+        JFreeChart chart = new JFreeChart(title, new Font(Font.SANS_SERIF, Font.BOLD, axes ? 13 : 11), plot, false);
         chart.setBackgroundPaint(Color.WHITE);
         return chart;
     }

@@ -1,6 +1,7 @@
 package org.scenes.evaluate;
 
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 
@@ -12,7 +13,14 @@ public final class Tables {
             Map.entry("agreement", "agreement"), Map.entry("typeAgreement", "type agreement"),
             Map.entry("kicksPer1000", "kicks"), Map.entry("goalsPer1000", "goals"),
             Map.entry("goalsAgainstPer1000", "goals against"), Map.entry("ballDistance", "to ball"),
-            Map.entry("firstTouch", "first touch"));
+            Map.entry("firstTouch", "first touch"), Map.entry("executedDash", "dash"),
+            Map.entry("executedTurn", "turn"), Map.entry("executedKick", "kick"), Map.entry("executedCatch", "catch"),
+            Map.entry("executedTackle", "tackle"), Map.entry("executedMove", "move"),
+            Map.entry("bodyPerStep", "per step"), Map.entry("repeatShare", "repeats"), Map.entry("runLength", "run"),
+            Map.entry("nearBall", "within 1 m"), Map.entry("onPitch", "on pitch"), Map.entry("stamina", "stamina"),
+            Map.entry("lowestEffort", "lowest effort"), Map.entry("kickAngle", "kick off goal"),
+            Map.entry("catchesPer1000", "catches"), Map.entry("kickOffs", "kick-offs"),
+            Map.entry("kickOffsTaken", "taken"), Map.entry("logStuckShare", "stuck (log)"));
 
     private Tables() {
     }
@@ -30,8 +38,16 @@ public final class Tables {
             out.append(String.format(Locale.ROOT, "%-34s %18s %18s%n", figure.label(), cell(figure, figure.teacher()),
                     cell(figure, figure.imitator())));
         }
-        out.append(String.format(Locale.ROOT, "%-34s %18s %18s%n", "action-mix divergence (JSD, bits)", "",
-                String.format(Locale.ROOT, "%.4f ± %.4f", comparison.divergence().mean(), comparison.divergence().sd())));
+        if (!Double.isNaN(comparison.divergence().mean())) {
+            out.append(String.format(Locale.ROOT, "%-34s %18s %18s%n", "action-mix divergence (JSD, bits)", "",
+                    String.format(Locale.ROOT, "%.4f ± %.4f", comparison.divergence().mean(),
+                            comparison.divergence().sd())));
+        }
+        if (!Double.isNaN(comparison.executedDivergence().mean())) {
+            out.append(String.format(Locale.ROOT, "%-34s %18s %18s%n", "executed-mix divergence (JSD)", "",
+                    String.format(Locale.ROOT, "%.4f ± %.4f", comparison.executedDivergence().mean(),
+                            comparison.executedDivergence().sd())));
+        }
         out.append(String.format(Locale.ROOT, "%-34s %18s %18s%n", "Turing accuracy (50% = same)", "",
                 String.format(Locale.ROOT, "%.1f%% ± %.1f", 100 * comparison.turing().accuracy(),
                         100 * comparison.turing().spread())));
@@ -50,8 +66,15 @@ public final class Tables {
                     .append(ReplayPage.escape(cell(figure, figure.teacher()))).append("</td><td>")
                     .append(ReplayPage.escape(cell(figure, figure.imitator()))).append("</td></tr>\n");
         }
-        out.append(String.format(Locale.ROOT, "<tr><td>action-mix divergence (Jensen-Shannon, bits)</td><td></td>"
-                + "<td>%.4f &plusmn; %.4f</td></tr>\n", comparison.divergence().mean(), comparison.divergence().sd()));
+        if (!Double.isNaN(comparison.divergence().mean())) {
+            out.append(String.format(Locale.ROOT, "<tr><td>action-mix divergence (Jensen-Shannon, bits)</td><td></td>"
+                    + "<td>%.4f &plusmn; %.4f</td></tr>\n", comparison.divergence().mean(), comparison.divergence().sd()));
+        }
+        if (!Double.isNaN(comparison.executedDivergence().mean())) {
+            out.append(String.format(Locale.ROOT, "<tr><td>executed action-mix divergence (Jensen-Shannon, bits)</td>"
+                    + "<td></td><td>%.4f &plusmn; %.4f</td></tr>\n", comparison.executedDivergence().mean(),
+                    comparison.executedDivergence().sd()));
+        }
         out.append(String.format(Locale.ROOT, "<tr><td>Turing accuracy (50%% = indistinguishable)</td><td></td>"
                 + "<td>%.1f%% &plusmn; %.1f</td></tr>\n", 100 * comparison.turing().accuracy(),
                 100 * comparison.turing().spread()));
@@ -77,9 +100,17 @@ public final class Tables {
         }
         root.put("figures", figures);
         root.put("actions", Comparison.ACTIONS);
-        root.put("teacherMix", comparison.teacherMix());
-        root.put("imitatorMix", comparison.imitatorMix());
+        root.put("teacherMix", nullable(comparison.teacherMix()));
+        root.put("imitatorMix", nullable(comparison.imitatorMix()));
         root.put("divergence", spread(comparison.divergence()));
+        root.put("executedActions", ExecutedCommands.TYPES.stream().map(t -> t.key()).toList());
+        root.put("teacherExecutedMix", nullable(comparison.teacherExecutedMix()));
+        root.put("imitatorExecutedMix", nullable(comparison.imitatorExecutedMix()));
+        root.put("executedDivergence", spread(comparison.executedDivergence()));
+        Map<String, Object> positions = new LinkedHashMap<>();
+        positions.put("teacher", positions(comparison.teacherPositions()));
+        positions.put("imitator", positions(comparison.imitatorPositions()));
+        root.put("positions", positions);
         TuringTest.Outcome turing = comparison.turing();
         Map<String, Object> t = new LinkedHashMap<>();
         t.put("accuracy", nullable(turing.accuracy()));
@@ -102,6 +133,25 @@ public final class Tables {
         map.put("min", nullable(s.min()));
         map.put("max", nullable(s.max()));
         return map;
+    }
+
+    /** Mean positions by uniform number ("1", "2", ...) as [x, y], the team attacking towards x+. */
+    private static Map<String, Object> positions(double[][] means) {
+        Map<String, Object> map = new LinkedHashMap<>();
+        for (int unum = 1; unum < means.length; unum++) {
+            if (!Double.isNaN(means[unum][0])) {
+                map.put(Integer.toString(unum), List.of(means[unum][0], means[unum][1]));
+            }
+        }
+        return map;
+    }
+
+    private static List<Object> nullable(double[] values) {
+        List<Object> list = new java.util.ArrayList<>();
+        for (double v : values) {
+            list.add(nullable(v));
+        }
+        return list;
     }
 
     private static Object nullable(double v) {

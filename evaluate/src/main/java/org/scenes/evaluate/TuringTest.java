@@ -34,6 +34,17 @@ public final class TuringTest {
     public static final List<String> TRAFFIC_FEATURES = FEATURES.subList(5, FEATURES.size());
 
     /**
+     * What it sees of games read from the server's logs alone (no traffic traced): the five
+     * motion features of {@link #FEATURES} and what the logs tell of the executed body commands,
+     * the ball and the pitch.
+     */
+    public static final List<String> LOG_FEATURES = List.of(
+            "mean speed", "speed spread", "mean distance to ball", "mean body turn per cycle",
+            "share of cycles closing on the ball", "executed dash share", "executed turn share",
+            "executed kick share", "body commands per step", "repeats previous body command",
+            "share within 1 m of the ball", "share inside the field lines", "mean stamina");
+
+    /**
      * The accuracy over held-out folds and its spread, how many windows each side gave, and the
      * features the classifier saw.
      */
@@ -49,17 +60,18 @@ public final class TuringTest {
 
     public static Outcome run(List<PlayedGame> teacher, List<PlayedGame> imitator) {
         boolean positions = Stream.concat(teacher.stream(), imitator.stream()).noneMatch(g -> g.frames().isEmpty());
+        boolean traced = Stream.concat(teacher.stream(), imitator.stream()).noneMatch(g -> g.traces().isEmpty());
         Map<Long, List<double[]>> teacherBySeed = new HashMap<>();
         Map<Long, List<double[]>> imitatorBySeed = new HashMap<>();
         int teacherCount = 0;
         int imitatorCount = 0;
         for (PlayedGame game : teacher) {
-            List<double[]> windows = windows(game, positions);
+            List<double[]> windows = traced ? windows(game, positions) : logWindows(game);
             teacherBySeed.computeIfAbsent(game.seed(), s -> new ArrayList<>()).addAll(windows);
             teacherCount += windows.size();
         }
         for (PlayedGame game : imitator) {
-            List<double[]> windows = windows(game, positions);
+            List<double[]> windows = traced ? windows(game, positions) : logWindows(game);
             imitatorBySeed.computeIfAbsent(game.seed(), s -> new ArrayList<>()).addAll(windows);
             imitatorCount += windows.size();
         }
@@ -96,7 +108,7 @@ public final class TuringTest {
         double mean = accuracies.stream().mapToDouble(Double::doubleValue).average().orElse(Double.NaN);
         double spread = Spread.of(accuracies.stream().mapToDouble(Double::doubleValue).toArray()).sd();
         return new Outcome(mean, spread, teacherCount, imitatorCount, accuracies.size(),
-                positions ? FEATURES : TRAFFIC_FEATURES);
+                !traced ? LOG_FEATURES : positions ? FEATURES : TRAFFIC_FEATURES);
     }
 
     private static void split(List<double[]> all, int fold, int folds, List<double[]> train, List<double[]> test) {
@@ -138,16 +150,7 @@ public final class TuringTest {
                     if (before == null) {
                         continue;
                     }
-                    double[] s = sums[player.unum() - 1][w];
-                    double speed = Math.hypot(player.x() - before.x(), player.y() - before.y());
-                    double distance = Math.hypot(player.x() - frame.ball().x(), player.y() - frame.ball().y());
-                    double distanceBefore = Math.hypot(before.x() - previous.ball().x(), before.y() - previous.ball().y());
-                    s[0]++;
-                    s[1] += speed;
-                    s[2] += speed * speed;
-                    s[3] += distance;
-                    s[4] += Math.abs(angle(player.body() - before.body()));
-                    s[5] += distance < distanceBefore ? 1 : 0;
+                    motion(sums[player.unum() - 1][w], player, before, frame, previous);
                 }
             }
             previous = frame;
@@ -197,6 +200,82 @@ public final class TuringTest {
                         s[4] / n, s[5] / n}, 0, all, 0, 5);
                 System.arraycopy(traffic, 0, all, 5, traffic.length);
                 windows.add(all);
+            }
+        }
+        return windows;
+    }
+
+    /** Adds a player's step from {@code previous} to {@code frame} to the motion sums {@code s[0..5]}. */
+    private static void motion(double[] s, PlayerState player, PlayerState before, GameFrame frame,
+                               GameFrame previous) {
+        double speed = Math.hypot(player.x() - before.x(), player.y() - before.y());
+        double distance = Math.hypot(player.x() - frame.ball().x(), player.y() - frame.ball().y());
+        double distanceBefore = Math.hypot(before.x() - previous.ball().x(), before.y() - previous.ball().y());
+        s[0]++;
+        s[1] += speed;
+        s[2] += speed * speed;
+        s[3] += distance;
+        s[4] += Math.abs(angle(player.body() - before.body()));
+        s[5] += distance < distanceBefore ? 1 : 0;
+    }
+
+    /**
+     * The {@link #LOG_FEATURES} of one game's windows, every player of the game's side, from its
+     * frames and executed commands alone.
+     */
+    static List<double[]> logWindows(PlayedGame game) {
+        List<GameFrame> frames = game.frames();
+        int players = ExecutedCommands.players(frames, game.side());
+        int cycles = frames.isEmpty() ? 0 : frames.get(frames.size() - 1).time();
+        int windowCount = cycles / WINDOW + 1;
+        // 0-5 motion, 6 steps, 7 commands, 8-10 dash/turn/kick, 11 repeats, 12 near, 13 inside, 14 stamina
+        double[][][] sums = new double[players + 1][windowCount][15];
+        CommandType[] previousCommand = new CommandType[players + 1];
+        for (int k = 1; k < frames.size(); k++) {
+            GameFrame previous = frames.get(k - 1);
+            GameFrame frame = frames.get(k);
+            if (!frame.playMode().equals("play_on") || previous.time() != frame.time() - 1) {
+                continue;
+            }
+            int w = Math.min(windowCount - 1, frame.time() / WINDOW);
+            PlayerState[] before = LogFigures.team(previous, game.side(), players);
+            for (PlayerState player : LogFigures.team(frame, game.side(), players)) {
+                if (player == null || before[player.unum()] == null) {
+                    continue;
+                }
+                double[] s = sums[player.unum()][w];
+                motion(s, player, before[player.unum()], frame, previous);
+                double distance = Math.hypot(player.x() - frame.ball().x(), player.y() - frame.ball().y());
+                s[12] += distance <= LogFigures.NEAR ? 1 : 0;
+                s[13] += Math.abs(player.x()) <= LogFigures.HALF_LENGTH
+                        && Math.abs(player.y()) <= LogFigures.HALF_WIDTH ? 1 : 0;
+                s[14] += player.stamina();
+                if (k + 1 < frames.size()) {
+                    s[6]++;
+                    CommandType command = game.executed().at(k, player.unum());
+                    if (command != null) {
+                        s[7]++;
+                        s[8] += command == CommandType.DASH ? 1 : 0;
+                        s[9] += command == CommandType.TURN ? 1 : 0;
+                        s[10] += command == CommandType.KICK ? 1 : 0;
+                        s[11] += command == previousCommand[player.unum()] ? 1 : 0;
+                        previousCommand[player.unum()] = command;
+                    }
+                }
+            }
+        }
+        List<double[]> windows = new ArrayList<>();
+        for (double[][] player : sums) {
+            for (double[] s : player) {
+                if (s[0] < WINDOW / 2.0 || s[6] < 1) {
+                    continue; // under half the window in play on
+                }
+                double n = s[0];
+                double mean = s[1] / n;
+                double commands = Math.max(1, s[7]);
+                windows.add(new double[] {mean, Math.sqrt(Math.max(0, s[2] / n - mean * mean)), s[3] / n, s[4] / n,
+                        s[5] / n, s[8] / commands, s[9] / commands, s[10] / commands, s[7] / s[6], s[11] / commands,
+                        s[12] / n, s[13] / n, s[14] / n});
             }
         }
         return windows;

@@ -30,6 +30,13 @@ class EvaluationTest {
         assertEquals(0.5, comparison.turing().accuracy(), 1e-9);
         assertEquals(comparison.figure("goalsPer1000").teacher(), comparison.figure("goalsPer1000").imitator());
         assertTrue(comparison.turing().teacherWindows() > 10);
+        // the figures of the game log too, from the simulator's frames: the same for both
+        assertEquals(0, comparison.executedDivergence().mean(), 1e-12);
+        for (String key : List.of("executedDash", "bodyPerStep", "nearBall", "onPitch", "kickOffsTaken", "logStuckShare")) {
+            assertEquals(comparison.figure(key).teacher(), comparison.figure(key).imitator(), key);
+        }
+        double dash = comparison.figure("executedDash").teacher().mean();
+        assertTrue(dash > 0.3 && dash < 1, "executed dash share " + dash);
     }
 
     @Test

@@ -31,6 +31,7 @@ final class Forwarder implements Runnable {
     private static final byte[] BYE = "(bye)".getBytes(StandardCharsets.US_ASCII);
     private static final byte[] INIT = "(init".getBytes(StandardCharsets.US_ASCII);
     private static final byte[] RECONNECT = "(reconnect".getBytes(StandardCharsets.US_ASCII);
+    private static final byte[] ERROR = "(error".getBytes(StandardCharsets.US_ASCII);
 
     private final Selector selector;
     private final List<Listener> listeners = new ArrayList<>();
@@ -52,6 +53,8 @@ final class Forwarder implements Runnable {
     final AtomicLong toClients = new AtomicLong();
     final AtomicLong notForwarded = new AtomicLong();
     final AtomicLong opened = new AtomicLong();
+    /** Times the last client went away after its game ended (time_over or bye): games played through. */
+    final AtomicLong gamesEnded = new AtomicLong();
 
     Forwarder(ProxyConfig config, LogRing ring, LongSupplier clock) throws IOException {
         this.ring = ring;
@@ -170,19 +173,24 @@ final class Forwarder implements Runnable {
             }
             long now = clock.getAsLong();
             buffer.flip();
+            int end = withoutPadding(buffer);
+            // A client only knows the proxy's port, so an init or reconnect it sends is meant for the
+            // server's init port: after a server restart its port for this client is gone.
+            boolean hello = matches(buffer, 0, end, INIT) || matches(buffer, 0, end, RECONNECT);
             Session session = listener.sessions.get(from);
             if (session == null) {
-                session = open(listener, (InetSocketAddress) from, now);
+                // every client starts with init or reconnect: other datagrams from a new address
+                // would hold a client slot until the idle timeout, and a few dozen lock clients out
+                session = hello ? open(listener, (InetSocketAddress) from, now) : null;
                 if (session == null) {
+                    if (!hello && notForwarded.getAndIncrement() % 1000 == 0) {
+                        events.accept("dropped a datagram from " + from + ": a new client must start with init or reconnect");
+                    }
                     continue;
                 }
             }
             session.lastFromClient = now;
             session.lastTraffic = now;
-            int end = withoutPadding(buffer);
-            // A client only knows the proxy's port, so an init or reconnect it sends is meant for the
-            // server's init port: after a server restart its port for this client is gone.
-            boolean hello = matches(buffer, 0, end, INIT) || matches(buffer, 0, end, RECONNECT);
             forward(session.outbox, hello ? listener.route.server() : session.serverTarget, toServer);
             ring.publish(RecordType.TO_SERVER, session.id, now - start, buffer, 0, end);
             if (matches(buffer, 0, end, BYE)) {
@@ -214,6 +222,16 @@ final class Forwarder implements Runnable {
             forward(session.listener.outbox, session.client, toClients);
             int end = withoutPadding(buffer);
             ring.publish(RecordType.TO_CLIENT, session.id, now - start, buffer, 0, end);
+            if (!session.admitted) {
+                if (matches(buffer, 0, end, ERROR)) {
+                    // the server refused the init (a full team, a bad version): the slot is free at once
+                    byte[] reply = new byte[Math.min(end, 200)];
+                    buffer.get(0, reply);
+                    close(session, "the server refused the client: " + new String(reply, StandardCharsets.US_ASCII).trim());
+                    return;
+                }
+                session.admitted = true;
+            }
             if (matches(buffer, 0, end, HEAR) && contains(buffer, end, TIME_OVER)) {
                 session.ending = true;
             }
@@ -282,6 +300,9 @@ final class Forwarder implements Runnable {
 
     private void close(Session session, String reason) {
         sessions.remove(session);
+        if (sessions.isEmpty() && session.ending) {
+            gamesEnded.incrementAndGet();
+        }
         session.listener.sessions.remove(session.client);
         int unsent = session.outbox.pendingCount();
         if (unsent > 0) {

@@ -53,6 +53,14 @@ public final class LogProxy implements AutoCloseable {
         return forwarder.boundPort(kind);
     }
 
+    /**
+     * How many times every client has gone after its game ended ({@code time_over} heard or
+     * {@code (bye)} sent): the games played through this proxy, one after another.
+     */
+    public long gamesEnded() {
+        return forwarder.gamesEnded.get();
+    }
+
     public ProxyStats stats() {
         return new ProxyStats(forwarder.toServer.get(), forwarder.toClients.get(), forwarder.notForwarded.get(),
                 writer.logged.get(), forwarder.opened.get(), writer.closed.get(), ring.highWater(), ring.waits(),

@@ -205,7 +205,15 @@ final class LogWriter implements Runnable {
         try {
             log.out.close();
             log.out = null;
-            Path target = moveWithoutOverwrite(log.temporary, stem(log));
+            Path target;
+            try {
+                target = moveWithoutOverwrite(log.temporary, stem(log));
+            } catch (IOException e) {
+                // a name the file system refuses: the log is kept under its session number, never left as .part
+                target = moveWithoutOverwrite(log.temporary, "session_" + log.session);
+                events.accept("client " + log.description + ": cannot name its log " + stem(log) + " ("
+                        + e.getMessage() + "); named " + target.getFileName());
+            }
             events.accept("client " + log.description + " ended (" + reason + "): " + log.messages
                     + " messages in " + target);
         } catch (IOException e) {

@@ -1,6 +1,8 @@
 package org.scenes.logproxy;
 
 import java.net.InetAddress;
+import java.net.NetworkInterface;
+import java.net.SocketException;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
@@ -47,8 +49,33 @@ public record ProxyConfig(InetAddress bindAddress, List<Route> routes, Path outD
         if (maxClients < 1) {
             throw new IllegalArgumentException("max clients must be positive: " + maxClients);
         }
+        for (Route route : routes) {
+            for (Route other : routes) {
+                if (route.listenPort() != 0 && other.server().getPort() == route.listenPort()
+                        && isLocal(other.server().getAddress(), bindAddress)) {
+                    throw new IllegalArgumentException("the server " + other.server().getHostString() + ":"
+                            + other.server().getPort() + " is the proxy's own port " + route.listenPort()
+                            + ": it would forward every datagram to itself");
+                }
+            }
+        }
         if (logBufferBytes < MIN_LOG_BUFFER_BYTES) {
             throw new IllegalArgumentException("log buffer must be at least " + MIN_LOG_BUFFER_BYTES + " bytes");
+        }
+    }
+
+    /** Whether {@code address} is this machine as seen from a proxy bound to {@code bind}. */
+    private static boolean isLocal(InetAddress address, InetAddress bind) {
+        boolean reachesListener = bind.isAnyLocalAddress() || bind.equals(address)
+                || (bind.isLoopbackAddress() && address.isLoopbackAddress());
+        if (!reachesListener) {
+            return false;
+        }
+        try {
+            return address.isLoopbackAddress() || address.isAnyLocalAddress()
+                    || NetworkInterface.getByInetAddress(address) != null;
+        } catch (SocketException e) {
+            return false;
         }
     }
 }

@@ -20,6 +20,8 @@ final class Session {
     SocketAddress serverTarget;
     long lastFromClient;
     long lastTraffic;
+    /** The server has answered the client's init with anything but an error. */
+    boolean admitted;
     /** The game is over ({@code time_over} heard) or the client said {@code (bye)}. */
     boolean ending;
 

@@ -69,6 +69,9 @@ final class SessionIdentity {
         return safe(team) + "_" + (coach ? "coach" : unum);
     }
 
+    /** Team names longer than this are cut in file names (a name of 300 characters failed the rename). */
+    static final int MAX_TEAM_IN_FILE_NAME = 64;
+
     /** The comment line describing the client, without the leading {@code "# "}. */
     String description() {
         if (trainer) {
@@ -79,7 +82,7 @@ final class SessionIdentity {
 
     private static String safe(String name) {
         StringBuilder out = new StringBuilder(name.length());
-        for (char c : name.toCharArray()) {
+        for (char c : name.substring(0, Math.min(name.length(), MAX_TEAM_IN_FILE_NAME)).toCharArray()) {
             out.append(Character.isLetterOrDigit(c) && c < 128 || c == '-' || c == '_' ? c : '_');
         }
         return out.toString();

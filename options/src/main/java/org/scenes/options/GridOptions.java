@@ -43,7 +43,7 @@ public final class GridOptions {
         try {
             return Grid.of(columns, distances);
         } catch (IllegalArgumentException e) {
-            throw new OptionException("bad grid " + grid + " with bounds " + Arrays.toString(distances) + ": " + e.getMessage());
+            throw new OptionException("--grid " + grid + " --bounds " + Arrays.toString(distances) + ": " + e.getMessage());
         }
     }
 }

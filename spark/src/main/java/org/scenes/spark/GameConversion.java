@@ -89,12 +89,15 @@ final class GameConversion {
             for (int i = 0; i < game.logs().size(); i++) {
                 String log = game.logs().get(i);
                 ArrayList<String> warnings = new ArrayList<>();
-                SceneConverter converter = new SceneConverter(grid, Pairing.fromKey(settings.pairing()), settings.strict(),
-                        line -> {
+                SceneConverter converter = SceneConverter.with(grid)
+                        .pairing(Pairing.fromKey(settings.pairing()))
+                        .strict(settings.strict())
+                        .warnings(line -> {
                             if (warnings.size() < WARNINGS_KEPT) {
                                 warnings.add(line.describe());
                             }
-                        });
+                        })
+                        .build();
                 Path local = hadoop.local(log, scratch);
                 String fileName = log.substring(log.lastIndexOf('/') + 1);
                 Path sceneFile = scratch.resolve(names.get(i) + ".json.gz");

@@ -67,6 +67,8 @@ public final class FakeSoccerServer implements AutoCloseable {
     }
 
     /** A server that replays the given server messages ({@code see}, {@code sense_body}...). */
+    private volatile java.util.function.Predicate<String> refusedTeams = team -> false;
+
     public static FakeSoccerServer start(List<String> recordedServerMessages) throws IOException {
         return new FakeSoccerServer(recordedServerMessages, 0);
     }
@@ -93,6 +95,11 @@ public final class FakeSoccerServer implements AutoCloseable {
     }
 
     /** Replies to every later (non-init) client datagram with what this returns; null = no reply. */
+    /** Inits of teams this accepts are refused with {@code (error no_more_team_or_player_or_goalie)}, as a full server does. */
+    public void refuseTeams(java.util.function.Predicate<String> refused) {
+        this.refusedTeams = refused;
+    }
+
     public void respondWith(BiFunction<Client, byte[], byte[]> responder) {
         this.responder = responder;
     }
@@ -169,6 +176,10 @@ public final class FakeSoccerServer implements AutoCloseable {
         }
         String[] words = text.substring(1, text.length() - 1).split("[ ()]+");
         String team = words.length > 1 && !words[1].equals("version") ? words[1] : null;
+        if (team != null && refusedTeams.test(team)) {
+            initPorts.get(port).send(ByteBuffer.wrap("(error no_more_team_or_player_or_goalie)\0".getBytes(StandardCharsets.UTF_8)), from);
+            return;
+        }
         String reply;
         int unum = 0;
         String side = team == null ? null : side(team);

@@ -444,6 +444,54 @@ class LiveTeamTest {
     }
 
     @Test
+    void aBrainWhoseTeacherNeverMovedAfterAGoalIsNotMovedByTheRuntime() throws Exception {
+        // an imitator of a teacher whose scenes hold no move; it asks to be the goalie (its counterpart was)
+        BrainFactory stays = new BrainFactory() {
+            @Override
+            public org.scenes.agent.Brain create(String team, java.util.Random random) {
+                return new org.scenes.agent.Brain() {
+                    @Override
+                    public void receive(String message, java.util.function.Consumer<String> send) {
+                        if (message.startsWith("(player_type")) {
+                            send.accept("(move -10 5)");
+                        } else if (message.startsWith("(see ")) {
+                            send.accept("(dash 50)");
+                        }
+                    }
+
+                    @Override
+                    public boolean repeatsKickOffMove() {
+                        return false;
+                    }
+                };
+            }
+
+            @Override
+            public boolean goalie(int unum) {
+                return unum == 1;
+            }
+        };
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            OnePlayer one = onePlayer(server, "Home", stays);
+            Future<List<PlayerReport>> reports = one.reports();
+            FakeSoccerServer.Client client = one.client();
+            send(client, "(player_type (id 0))");
+            send(client, "(sense_body 1 (view_mode high normal))");
+            send(client, "(see 1 ((b) 10 0))");
+            send(client, "(hear 1 referee goal_l_1)");
+            for (int cycle = 2; cycle <= 4; cycle++) {
+                send(client, "(sense_body " + cycle + " (view_mode high normal))");
+                send(client, "(see " + cycle + " ((b) 10 0))");
+            }
+            send(client, "(hear 5 referee time_over)");
+            assertEquals(Outcome.GAME_OVER, reports.get(10, TimeUnit.SECONDS).get(0).outcome());
+            awaitReceived(client, 7);
+            assertEquals(List.of("(init Home (version 9)(goalie))", "(move -10 5)", "(dash 50)", "(dash 50)",
+                    "(dash 50)", "(dash 50)", "(bye)"), received(client));
+        }
+    }
+
+    @Test
     void aReconnectTakesThePlayersPlaceWithItsNumber() throws Exception {
         try (DatagramChannel initPort = DatagramChannel.open(); DatagramChannel ownPort = DatagramChannel.open()) {
             initPort.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));

@@ -164,7 +164,7 @@ class RealServerReplayTest {
         List<Scene> converted = new ArrayList<>();
         // This knowledge base has one see age, so the brain answers each see (per-see play) even where
         // the server offers synchronous vision (v19's (ok synch_see)): the log converts alike per see.
-        new SceneConverter(Grid.DEFAULT, Pairing.SEE, true, line -> { }).convert(log, converted::add);
+        SceneConverter.with(Grid.DEFAULT).pairing(Pairing.SEE).strict(true).build().convert(log, converted::add);
 
         // identical repeated sees (play paused) are one scene in a converted log
         List<Scene> collapsed = new ArrayList<>();

@@ -104,7 +104,7 @@ class RecordedGameThroughProxyTest {
 
     private static List<Scene> convert(Path log) throws IOException {
         List<Scene> scenes = new ArrayList<>();
-        new SceneConverter(Grid.DEFAULT, true, null).convert(log, scenes::add);
+        SceneConverter.with(Grid.DEFAULT).strict(true).build().convert(log, scenes::add);
         return scenes;
     }
 

@@ -47,7 +47,7 @@ class ReadersFuzzTest {
         Path file = Files.createTempFile("fuzz", ".log");
         try {
             Files.write(file, data);
-            new SceneConverter(Grid.DEFAULT, false, null).convert(file, scene -> { });
+            SceneConverter.with(Grid.DEFAULT).build().convert(file, scene -> { });
         } catch (LogException documented) {
             // the log's error, naming it
         } finally {

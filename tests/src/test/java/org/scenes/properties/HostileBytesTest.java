@@ -79,7 +79,7 @@ class HostileBytesTest {
         Path file = Files.createTempFile("fuzz", ".lsf");
         try {
             Files.write(file, log);
-            new SceneConverter(Grid.DEFAULT, false, null).convert(file, scene -> { });
+            SceneConverter.with(Grid.DEFAULT).build().convert(file, scene -> { });
         } catch (LogException expected) {
             assertTrue(expected.getMessage().startsWith(file.toString()), expected.getMessage());
         } finally {

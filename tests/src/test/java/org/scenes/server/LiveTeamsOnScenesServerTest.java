@@ -72,7 +72,7 @@ class LiveTeamsOnScenesServerTest {
                 new GameSetup.Team("Amber", 2, Teachers.byName("krislet")), 600, 5, directory.resolve("teach")))
                 .run(t -> { });
         List<Scene> scenes = new ArrayList<>();
-        SceneConverter converter = new SceneConverter(Grid.DEFAULT, true, line -> { });
+        SceneConverter converter = SceneConverter.with(Grid.DEFAULT).strict(true).build();
         for (Path log : game.logs()) {
             converter.convert(log, scenes::add);
         }

@@ -127,7 +127,7 @@ class ServerThroughProxyTest {
         }
         List<Path> logged = files(proxyLogs).stream().filter(f -> f.toString().endsWith(".log")).toList();
         assertEquals(2 * PLAYERS, logged.size(), logged.toString());
-        SceneConverter converter = new SceneConverter(Grid.DEFAULT, true, line -> { });
+        SceneConverter converter = SceneConverter.with(Grid.DEFAULT).strict(true).build();
         for (Path log : logged) {
             List<String> fromServer = messages(log, Direction.SERVER_TO_CLIENT);
             Path client = byReply.get(fromServer.get(0));

@@ -112,7 +112,7 @@ class GameLogScenesTest {
         assertEquals(List.of(), result.warnings());
         List<Path> left = new ArrayList<>();
         List<Path> right = new ArrayList<>();
-        SceneConverter converter = new SceneConverter(Grid.DEFAULT, false, line -> { });
+        SceneConverter converter = SceneConverter.with(Grid.DEFAULT).build();
         for (GameLogConverter.PlayerResult player : result.players()) {
             Path log = logs.resolve(player.key() + ".lsf.gz");
             Path scenes = logged.resolve(player.key() + ".json");
@@ -179,7 +179,7 @@ class GameLogScenesTest {
         }
         assertTrue(changes > 100, changes + " changes of width");
         Map<String, Map<Integer, Integer>> logged = new TreeMap<>();
-        SceneConverter converter = new SceneConverter(Grid.DEFAULT, false, line -> { });
+        SceneConverter converter = SceneConverter.with(Grid.DEFAULT).build();
         for (Map.Entry<String, List<String>> player : traffic.entrySet()) {
             Path log = Files.write(dir.resolve(player.getKey() + ".lsf"), player.getValue());
             Map<Integer, Integer> ages = new TreeMap<>();

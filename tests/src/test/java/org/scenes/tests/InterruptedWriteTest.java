@@ -257,7 +257,7 @@ class InterruptedWriteTest {
                 File[] written = logs.toFile().listFiles();
                 for (File log : written == null ? new File[0] : written) {
                     // a log is there only when complete: it converts without error
-                    assertTrue(new org.scenes.internal.convert.SceneConverter(org.scenes.api.Grid.DEFAULT, false, null)
+                    assertTrue(org.scenes.internal.convert.SceneConverter.with(org.scenes.api.Grid.DEFAULT).build()
                             .convert(log.toPath(), scene -> { }).scenes() > 0, log.toString());
                 }
             }
@@ -278,5 +278,26 @@ class InterruptedWriteTest {
         assertTrue(child.waitFor(60, TimeUnit.SECONDS), "the proxy stops");
         assertEquals(0, child.exitValue(), Files.readString(output));
         assertTrue(Files.readString(output).contains("messages logged"), "the summary is printed: " + Files.readString(output));
+    }
+
+    /** Issue 31.6: the embedded server, stopped as documented, exits 0 like the proxy (it exited 143). */
+    @Test
+    void theServerStoppedBySigtermExitsZeroWithItsLogsComplete() throws Exception {
+        Path work = Files.createDirectories(dir.resolve("server"));
+        Process child = start(work, "server", "--port", "0", "--record", work.resolve("logs").toString());
+        Path output = work.resolve("child.out");
+        // bounded wait until it serves (its handlers are installed by then)
+        for (int i = 0; i < 1200 && !Files.readString(output).contains("Serving on UDP"); i++) {
+            Thread.sleep(100);
+        }
+        assertTrue(Files.readString(output).contains("Serving on UDP"), Files.readString(output));
+        child.destroy();
+        assertTrue(child.waitFor(60, TimeUnit.SECONDS), "the server stops");
+        assertEquals(0, child.exitValue(), Files.readString(output));
+        try (var logs = Files.list(work.resolve("logs"))) {
+            List<String> names = logs.map(f -> f.getFileName().toString()).sorted().toList();
+            assertTrue(names.stream().anyMatch(n -> n.endsWith(".rcg")) && names.stream().anyMatch(n -> n.endsWith(".rcl"))
+                    && names.stream().noneMatch(n -> n.endsWith(".tmp")), names.toString());
+        }
     }
 }

@@ -25,6 +25,7 @@ import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
 import org.scenes.api.Side;
+import org.scenes.api.World;
 import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileWriter;
@@ -48,7 +49,14 @@ class SceneSchemaTest {
                 new Scene(3, observer, List.of(player, SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, 0.6, 3, grid)),
                         List.of(Action.kick(100, -10), Action.turnNeck(30))),
                 new Scene(4, new Observer("University", Side.RIGHT, 1),
-                        List.of(SeenObject.simple(ObjectKind.GOAL, "g l", Relation.OWN, 20, 1, grid)), List.of(Action.move(-10, 3))));
+                        List.of(SeenObject.simple(ObjectKind.GOAL, "g l", Relation.OWN, 20, 1, grid)), List.of(Action.move(-10, 3))),
+                new Scene(5, observer, List.of(), List.of(Action.turn(20)), null, 1,
+                        new World(-10.5, 3.25, 45, -30, 0.1, 0, 7000, 0.95, 1, 2.5, -1, 0.8, 0.02, 0,
+                                List.of(new World.Player(Relation.OPPONENT, 7, 1, 2, 3),
+                                        new World.Player(Relation.UNKNOWN, 0, 5, 6, 0)), "play_on", 1, 0)),
+                new Scene(6, observer, List.of(), List.of(Action.turn(20)), null, 0,
+                        new World(Double.NaN, Double.NaN, Double.NaN, 0, Double.NaN, Double.NaN, Double.NaN,
+                                Double.NaN, -1, Double.NaN, Double.NaN, Double.NaN, Double.NaN, -1, List.of(), "", 0, 0)));
         Path file = dir.resolve("s.json");
         SceneFileWriter.write(file, new SceneFile(SceneFileHeader.of(grid, new SceneSource("x.lsf", observer)), scenes));
 
@@ -59,7 +67,7 @@ class SceneSchemaTest {
 
     @Test
     void theSchemaRejectsAFutureFormatAndAMissingCell() throws IOException {
-        JsonNode future = mapper.readTree("{\"format\":2,\"grid\":{\"columns\":5,\"bounds\":[1,5]},\"scenes\":[]}");
+        JsonNode future = mapper.readTree("{\"format\":3,\"grid\":{\"columns\":5,\"bounds\":[1,5]},\"scenes\":[]}");
         assertFalse(schema().validate(future).isEmpty());
         ObjectNode noCell = (ObjectNode) mapper.readTree("{\"format\":1,\"grid\":{\"columns\":5,\"bounds\":[1,5]},"
                 + "\"scenes\":[{\"cycle\":1,\"objects\":[{\"kind\":\"ball\",\"name\":\"b\"}],\"actions\":[]}]}");

@@ -48,7 +48,7 @@ class ScriptMetricTest {
 
     static List<Scene> scenes(Path log) throws IOException {
         List<Scene> scenes = new ArrayList<>();
-        new SceneConverter(Grid.DEFAULT, false, null).convert(log, scenes::add);
+        SceneConverter.with(Grid.DEFAULT).build().convert(log, scenes::add);
         assertTrue(scenes.size() > 1000, log + " gave only " + scenes.size() + " scenes");
         return scenes;
     }

@@ -56,7 +56,7 @@ class SimulatedDataTest {
     }
 
     private static ConversionReport convert(Path log, List<Scene> scenes) throws IOException {
-        return new SceneConverter(Grid.DEFAULT, true, null).convert(log, scenes == null ? s -> { } : scenes::add);
+        return SceneConverter.with(Grid.DEFAULT).strict(true).build().convert(log, scenes == null ? s -> { } : scenes::add);
     }
 
     @Test
@@ -122,7 +122,7 @@ class SimulatedDataTest {
         for (String team : TEAMS) {
             for (int unum = 1; unum <= 2; unum++) {
                 List<Scene> original = new ArrayList<>();
-                new SceneConverter(Grid.DEFAULT, false, null).convert(SimulatedGame.log(team, unum), original::add);
+                SceneConverter.with(Grid.DEFAULT).build().convert(SimulatedGame.log(team, unum), original::add);
                 KnowledgeBase knowledge = KnowledgeBase.of(Grid.DEFAULT, original);
                 assertEquals(original, knowledge.scenes(), team + " " + unum);
                 objects += original.stream().mapToInt(s -> s.objects().size()).sum();

@@ -26,13 +26,21 @@ import org.scenes.internal.protocol.See;
 import org.scenes.internal.protocol.SenseBody;
 import org.scenes.internal.protocol.ServerNotice;
 import org.scenes.internal.validate.Validator;
+import org.scenes.internal.world.WorldModel;
 
 /**
  * The imitating player: every {@code see} becomes a scene exactly as the converter makes one
  * from a log ({@link SceneConverter#seenObjects}, the knowledge base's grid, the same
  * transforms), the recognizer finds the nearest stored scenes and the selector picks the action,
- * which is sent as its command. Before kick-off it moves to a random spot of its own half: the
+ * which is sent as its command; a chosen scene without action (a see its teacher left
+ * unanswered) sends nothing. Before kick-off it moves to a random spot of its own half: the
  * recorded moves come before the first see, so no scene holds one.
+ *
+ * <p>Roles ({@link ImitationTeam}): once the server gives it its uniform number, the brain plays
+ * on its counterpart's knowledge (or the team's). Its first move, and every move the selector
+ * chooses from another player's scene, is its counterpart's recorded kick-off move, so the players
+ * do not all go to one spot; the runtime sends the kick-off move again after goals only when the
+ * counterpart's scenes hold moves (the teacher moved during the game).
  *
  * <p>Transforms such as {@code memory} remember earlier scenes with the action taken in them.
  * In validation that is the recorded action; here it is the action this brain chose, which is
@@ -56,12 +64,20 @@ public final class ImitationBrain implements Brain {
     static final int HISTORY = 8;
 
     private final String team;
-    private final Recognizer recognizer;
+    private final ImitationTeam roles;
+    /** The team's knowledge until the init answer, then the player's own (its counterpart's or the team's). */
+    private Recognizer recognizer;
+    /** The counterpart's recorded kick-off moves: empty without a counterpart or moves. */
+    private List<Action> counterpartMoves = List.of();
+    /** Whether the brain was made with roles; without them it places itself and moves as it always did. */
+    private final boolean withRoles;
     private final ActionSelector selector;
     private final Supplier<List<SceneTransform>> transforms;
     private final java.util.ArrayDeque<Scene> history = new java.util.ArrayDeque<>(HISTORY);
     private final Random random;
     private final MessageParser parser = new MessageParser();
+    /** What the player believes of the game, built as scene conversion builds it; each query carries it. */
+    private final WorldModel world;
     private Observer observer = Observer.UNKNOWN;
     private boolean placed;
     private final Guards guards;
@@ -70,7 +86,7 @@ public final class ImitationBrain implements Brain {
      * Per-cycle play, for knowledge bases of players that act every cycle (several see ages): in
      * synchronous mode the decision is made at each {@code (think)} from the latest see and its age.
      */
-    private final boolean perCycle;
+    private boolean perCycle;
     private boolean synchronous;
     private See latestSee;
     /** Cycles (sense_body messages) since the latest see arrived. */
@@ -117,9 +133,24 @@ public final class ImitationBrain implements Brain {
 
     public ImitationBrain(String team, Recognizer recognizer, ActionSelector selector,
                           Supplier<List<SceneTransform>> transforms, Random random, Guards guards) {
+        this(team, ImitationTeam.of(Objects.requireNonNull(recognizer, "recognizer")), selector, transforms, random,
+                guards, false);
+    }
+
+    /** A player of an imitation team: its knowledge and kick-off moves are its counterpart's. */
+    public ImitationBrain(String team, ImitationTeam roles, ActionSelector selector,
+                          Supplier<List<SceneTransform>> transforms, Random random, Guards guards) {
+        this(team, roles, selector, transforms, random, guards, true);
+    }
+
+    private ImitationBrain(String team, ImitationTeam roles, ActionSelector selector,
+                           Supplier<List<SceneTransform>> transforms, Random random, Guards guards, boolean withRoles) {
         this.guards = Objects.requireNonNull(guards, "guards");
         this.team = Objects.requireNonNull(team, "team");
-        this.recognizer = Objects.requireNonNull(recognizer, "recognizer");
+        this.world = new WorldModel(team);
+        this.roles = Objects.requireNonNull(roles, "roles");
+        this.withRoles = withRoles;
+        this.recognizer = roles.team();
         this.selector = Objects.requireNonNull(selector, "selector");
         this.transforms = Objects.requireNonNull(transforms, "transforms");
         this.random = Objects.requireNonNull(random, "random");
@@ -141,11 +172,17 @@ public final class ImitationBrain implements Brain {
     @Override
     public void receive(String text, Consumer<String> send) {
         Message message = parser.parse(text);
+        world.accept(message);
         if (message instanceof InitReply reply && reply.side() != null) {
             observer = new Observer(team, reply.side(), reply.uniformNumber());
+            if (withRoles) {
+                takeRole(reply.uniformNumber());
+            }
         } else if (!placed && message instanceof Parameters types && types.head().equals("player_type")) {
             placed = true;
-            send.accept(Action.move(-random.nextDouble() * 52.5, 34 - random.nextDouble() * 68).command());
+            // always draw, so the random stream does not depend on the counterpart
+            Action spot = Action.move(-random.nextDouble() * 52.5, 34 - random.nextDouble() * 68);
+            send.accept((counterpartMoves.isEmpty() ? spot : counterpartMoves.get(0)).command());
         } else if (message instanceof Parameters parameters && parameters.head().equals("server_param")) {
             double reach = parameters.number("player_size") + parameters.number("ball_size")
                     + parameters.number("kickable_margin");
@@ -170,6 +207,23 @@ public final class ImitationBrain implements Brain {
         }
     }
 
+    /** Plays as the recorded player with this number: its knowledge (when asked) and its moves. */
+    private void takeRole(int unum) {
+        recognizer = roles.recognizer(unum);
+        perCycle = recognizer.splitsBySeeAge();
+        ImitationTeam.Counterpart counterpart = roles.counterpart(unum);
+        counterpartMoves = counterpart == null ? List.of() : counterpart.moves();
+    }
+
+    /**
+     * With roles, the runtime repeats the kick-off move after goals only when the counterpart's
+     * scenes hold moves: a teacher that never moved during the game is not made to.
+     */
+    @Override
+    public boolean repeatsKickOffMove() {
+        return !withRoles || !counterpartMoves.isEmpty();
+    }
+
     /** The command for one see, or null when no neighbour holds a usable action. */
     String decide(See see) {
         List<Action> actions = decide(see, 0);
@@ -183,7 +237,8 @@ public final class ImitationBrain implements Brain {
      */
     List<Action> decide(See see, int age) {
         Scene seen = new Scene(see.time() + age, observer,
-                SceneConverter.seenObjects(see, observer, recognizer.knowledge().grid()), List.of(), null, age);
+                SceneConverter.seenObjects(see, observer, recognizer.knowledge().grid()), List.of(), null, age,
+                world.snapshot(see.time() + age));
         Scene query = seen;
         List<SceneTransform> chain = transforms.get();
         if (!chain.isEmpty()) {
@@ -198,11 +253,17 @@ public final class ImitationBrain implements Brain {
         if (guards.enabled() && action != null) {
             action = guard(action, seen.objects(), nearest);
         }
+        if (action != null && action.type() == ActionType.MOVE && !counterpartMoves.isEmpty()
+                && !counterpartMoves.contains(action)) {
+            // another player's kick-off spot: take the counterpart's own
+            action = counterpartMoves.get(0);
+        }
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
         List<Action> actions = Validator.withNeck(action, nearest);
-        Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age);
+        Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age, seen.world());
+        actions.forEach(world::sent);
         history.addLast(made);
         decided.accept(made);
         if (action == null) {

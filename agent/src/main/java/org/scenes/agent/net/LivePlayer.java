@@ -66,6 +66,8 @@ import org.scenes.internal.protocol.ServerNotice;
 public final class LivePlayer implements Runnable {
     /** How long one wait on the socket lasts before the stop flag is looked at again. */
     private static final long POLL_MILLIS = 100;
+    /** The init is sent again this often until the server answers or the connect timeout ends. */
+    static final long HELLO_AGAIN_MILLIS = 1000;
     /** Own-half spots by uniform number, for brains that do not move themselves. */
     private static final double[][] FORMATION = {
         {-50, 0}, {-40, -20}, {-40, -7}, {-40, 7}, {-40, 20}, {-25, -20},
@@ -174,11 +176,17 @@ public final class LivePlayer implements Runnable {
 
     private PlayerReport session() throws IOException {
         String hello = options.hello(goalie);
-        link.sendHello(hello);
         Datagram reply = null;
         long deadline = System.nanoTime() + options.connectTimeout().toNanos();
+        long nextHello = System.nanoTime();
         while (reply == null && !stopRequested && System.nanoTime() < deadline) {
-            reply = link.awaitReply(Math.min(POLL_MILLIS * 1_000_000, deadline - System.nanoTime()));
+            if (System.nanoTime() - nextHello >= 0) {
+                // a server (or proxy) started a moment after the team never saw the first init: say it again
+                link.sendHello(hello);
+                nextHello = System.nanoTime() + HELLO_AGAIN_MILLIS * 1_000_000;
+            }
+            long until = Math.min(deadline, nextHello) - System.nanoTime();
+            reply = link.awaitReply(Math.max(1, Math.min(POLL_MILLIS * 1_000_000, until)));
         }
         if (reply == null) {
             return stopRequested ? report(Outcome.STOPPED, "stopped before the server answered")
@@ -222,7 +230,7 @@ public final class LivePlayer implements Runnable {
             if (next == null) {
                 if (System.nanoTime() - lastHeard > silence) {
                     return fail(Outcome.SERVER_LOST, "no message from the server for "
-                            + seconds(options.silenceTimeout().toMillis()) + " s: the server is gone");
+                            + seconds(options.silenceTimeout().toMillis()) + " s: the server is gone (or a proxy between dropped this player)");
                 }
                 continue;
             }
@@ -319,7 +327,7 @@ public final class LivePlayer implements Runnable {
             double[] spot = FORMATION[(Math.max(1, unum) - 1) % FORMATION.length];
             kickOffMove = "(move " + format(spot[0]) + " " + format(spot[1]) + ")";
             send(kickOffMove);
-        } else if (kickOffMove != null && movesOwed > 0) {
+        } else if (kickOffMove != null && movesOwed > 0 && brain.repeatsKickOffMove()) {
             movesOwed--;
             send(kickOffMove);
         }

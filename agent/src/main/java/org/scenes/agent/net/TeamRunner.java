@@ -12,7 +12,8 @@ import org.scenes.agent.BrainFactory;
  * A team on a soccer server: N players in this JVM, a thread each, every brain made by one
  * factory (an imitation factory shares its recognizer read-only, with a selector and transforms
  * per player). Players connect one after another, so the server numbers them in order and the
- * first is the goalie when asked; a player that cannot connect stops the others from being
+ * first is the goalie when asked ({@code --goalie}), else the one whose brain asks for it (an
+ * imitator of a recorded goalie, {@link BrainFactory#goalie}); a player that cannot connect stops the others from being
  * started. A player that fails is reported at once and in the end; the others play on.
  */
 public final class TeamRunner {
@@ -58,7 +59,7 @@ public final class TeamRunner {
     public List<PlayerReport> play() throws InterruptedException {
         for (int i = 0; i < players && !stopping; i++) {
             LivePlayer player = new LivePlayer(options, brains.create(options.team(), new Random(seed + i)),
-                    options.goalie() && i == 0, notices);
+                    options.goalie() ? i == 0 : brains.goalie(i + 1), notices);
             Thread thread = new Thread(player, options.team() + "-player-" + (i + 1));
             synchronized (started) {
                 started.add(player);

@@ -37,7 +37,7 @@ final class Client {
 
     void deliver(String message) {
         record(message);
-        if (message.startsWith("(sense_body") && movesOwed > 0 && kickOffMove != null) {
+        if (message.startsWith("(sense_body") && movesOwed > 0 && kickOffMove != null && brain.repeatsKickOffMove()) {
             movesOwed--;
             send(kickOffMove);
         } else if (message.startsWith("(hear ") && (message.contains(" referee goal_")

@@ -108,11 +108,12 @@ public final class Simulator {
                     : new PlayerLog(setup.logDirectory().resolve(team.name() + "_" + unum + ".lsf.gz"));
             Client client = new Client(brain, log, engine);
             clients.add(client);
-            String init = "(init " + team.name() + " (version 9))";
+            boolean goalie = team.brains().goalie(unum);
+            String init = "(init " + team.name() + " (version 9)" + (goalie ? " (goalie)" : "") + ")";
             client.sentByClient(init);
             Seat seat;
             try {
-                seat = engine.join(team.name(), 9, false, init, client::deliver);
+                seat = engine.join(team.name(), 9, goalie, init, client::deliver);
             } catch (Engine.Refused e) {
                 throw new IllegalStateException("the engine refused " + team.name() + " " + unum + ": " + e.answer());
             }

@@ -57,7 +57,7 @@ class ImitationBrainTest {
         GameResult teacherGame = new Simulator(new GameSetup(new GameSetup.Team("Teal", 2, Teachers.byName("krislet")),
                 new GameSetup.Team("Amber", 2, Teachers.byName("krislet")), 600, 3, directory.resolve("teach"))).run(t -> { });
         List<Scene> scenes = new ArrayList<>();
-        SceneConverter converter = new SceneConverter(Grid.DEFAULT, true, line -> { });
+        SceneConverter converter = SceneConverter.with(Grid.DEFAULT).strict(true).build();
         for (Path log : teacherGame.logs()) {
             converter.convert(log, scenes::add);
         }
@@ -121,7 +121,7 @@ class ImitationBrainTest {
                 new GameSetup.Team("Imitator", 2, ImitationBrain.factory(recognizer, () -> FIRST, List::of)),
                 new GameSetup.Team("Amber", 2, Teachers.byName("krislet")), 300, 4, directory.resolve("play")))
                 .run(t -> { });
-        SceneConverter converter = new SceneConverter(Grid.DEFAULT, true, line -> { });
+        SceneConverter converter = SceneConverter.with(Grid.DEFAULT).strict(true).build();
         long[] scenes = new long[1];
         var report = converter.convert(game.logs().get(0), scene -> scenes[0]++);
         assertEquals(0, report.malformed());

@@ -29,7 +29,7 @@ class ConvertSimulatedGameTest {
     void simulatedLogsConvertWithoutMalformedLines() throws IOException {
         int cycles = 2000;
         GameResult game = new Simulator(SimulatorTest.krisletGame(5, cycles, 11, directory)).run(t -> { });
-        SceneConverter converter = new SceneConverter(Grid.DEFAULT, true, line -> { });
+        SceneConverter converter = SceneConverter.with(Grid.DEFAULT).strict(true).build();
         Map<ActionType, Integer> actions = new EnumMap<>(ActionType.class);
         List<Scene> scenes = new ArrayList<>();
         ConversionReport total = new ConversionReport();
@@ -77,7 +77,7 @@ class ConvertSimulatedGameTest {
                 new GameSetup.Team("Teal", 3, org.scenes.agent.teacher.Teachers.byName("statebased")),
                 new GameSetup.Team("Amber", 3, org.scenes.agent.teacher.Teachers.byName("krislet")), 1500, 2, directory))
                 .run(t -> { });
-        SceneConverter converter = new SceneConverter(Grid.DEFAULT, true, line -> { });
+        SceneConverter converter = SceneConverter.with(Grid.DEFAULT).strict(true).build();
         Map<ActionType, Integer> actions = new EnumMap<>(ActionType.class);
         ConversionReport report = converter.convert(game.logs().get(0), scene -> {
             for (Action action : scene.actions()) {

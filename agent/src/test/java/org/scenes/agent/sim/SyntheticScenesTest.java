@@ -138,7 +138,7 @@ class SyntheticScenesTest {
     private static List<Scene> recordedGame1() throws IOException {
         Path game = SharedData.resolve("krislet/classic-game1");
         List<Scene> scenes = new ArrayList<>();
-        SceneConverter converter = new SceneConverter(Grid.DEFAULT, true, line -> { });
+        SceneConverter converter = SceneConverter.with(Grid.DEFAULT).strict(true).build();
         for (String player : new String[] {"Carleton_1", "University_1"}) {
             converter.convert(game.resolve(player + ".lsf.gz"), scenes::add);
         }

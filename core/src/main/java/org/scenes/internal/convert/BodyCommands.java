@@ -14,7 +14,7 @@ import org.scenes.internal.protocol.ProtocolException;
  * rcssserver executes at most once a cycle), read with the protocol's one parser: a quoted
  * {@code say} that spells a command is no command, and an ill-formed one is not executed.
  */
-final class BodyCommands {
+public final class BodyCommands {
     private BodyCommands() {
     }
 
@@ -22,7 +22,7 @@ final class BodyCommands {
      * The type of the first well-formed body command of the line, or null for none. As the server
      * does, the commands before a malformed one count and the rest do not.
      */
-    static CommandType first(MessageParser parser, String line) {
+    public static CommandType first(MessageParser parser, String line) {
         List<Message> messages = new ArrayList<>(4);
         byte[] bytes = line.getBytes(StandardCharsets.UTF_8);
         try {

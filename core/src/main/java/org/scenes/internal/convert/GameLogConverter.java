@@ -80,6 +80,11 @@ public final class GameLogConverter {
     @FunctionalInterface
     public interface Output {
         SceneConverter.SceneSink open(Observer observer) throws IOException;
+
+        /** The same for a player the game log marks as its team's goalie or not. */
+        default SceneConverter.SceneSink open(Observer observer, boolean goalie) throws IOException {
+            return open(observer);
+        }
     }
 
     /** One player's conversion. */
@@ -104,6 +109,8 @@ public final class GameLogConverter {
     private final int threads;
     private boolean commandsBeforeSee;
     private SeePhase seePhase = SeePhase.INFER;
+    private boolean keepUnanswered;
+    private boolean world;
 
     /**
      * @param grid and {@code pairing} make the scenes, as for player logs
@@ -130,6 +137,21 @@ public final class GameLogConverter {
      */
     public GameLogConverter commandsBeforeSee(boolean before) {
         this.commandsBeforeSee = before;
+        return this;
+    }
+
+    /** Unanswered sees become scenes without action, as {@link SceneConverter.Builder#keepUnanswered}. */
+    public GameLogConverter keepUnanswered(boolean keep) {
+        this.keepUnanswered = keep;
+        return this;
+    }
+
+    /**
+     * Whether each scene carries the player's world model, built from the rebuilt percepts (then
+     * each {@code sense_body} carries the player's state and the referee's calls are heard); default false.
+     */
+    public GameLogConverter world(boolean world) {
+        this.world = world;
         return this;
     }
 
@@ -186,10 +208,10 @@ public final class GameLogConverter {
 
     /** One show and what was sent around it, handed to every worker. */
     private record Step(GameFrame frame, long index, List<Sent> before, List<Sent> at, boolean seesDue,
-                        List<Player> players, Set<Player> synchSees) {
+                        List<Player> players, Set<Player> synchSees, boolean commandsCover) {
     }
 
-    private static final Step END = new Step(null, 0, List.of(), List.of(), false, List.of(), Set.of());
+    private static final Step END = new Step(null, 0, List.of(), List.of(), false, List.of(), Set.of(), false);
 
     /** A rebuilt player: its log being converted and how it sees; touched by its worker only once started. */
     private static final class Player {
@@ -199,8 +221,12 @@ public final class GameLogConverter {
         final Worker worker;
         final int version;
         final Fading fading;
+        /** Whether the game log marks the player as its team's goalie (at its first show). */
+        boolean goalie;
         /** Set by the reading thread when the player's first show is handed out. */
         boolean started;
+        /** The play mode the player was last told (world models only). */
+        String heardMode;
         SceneConverter.Feed feed;
         SeeWriter writer;
         boolean synchSee;
@@ -235,7 +261,8 @@ public final class GameLogConverter {
     /** Rebuilds and converts its players, step by step, on a thread of its own (or the caller's). */
     private final class Worker implements Runnable {
         final Run run;
-        final SceneConverter converter = new SceneConverter(grid, pairing, false, line -> { });
+        final SceneConverter converter = SceneConverter.with(grid).pairing(pairing).world(world)
+                .keepUnanswered(keepUnanswered).build();
         final BlockingQueue<Step> queue;
         final StringBuilder text = new StringBuilder(4096);
         /** This worker's own: a parser serves one thread. */
@@ -322,8 +349,16 @@ public final class GameLogConverter {
                 if (player == null || player.worker != this) {
                     continue;
                 }
-                checkAgreement(player, state);
-                line(player, "(sense_body " + time + ")");
+                if (step.commandsCover()) {
+                    checkAgreement(player, state);
+                }
+                if (converter.world()) {
+                    // the world model reads the player's own state and the referee's calls
+                    senseBody(player, state, time);
+                    referee(player, frame);
+                } else {
+                    line(player, "(sense_body " + time + ")");
+                }
                 // this show's sees and commands belong to the next step
                 long next = step.index() + 1;
                 List<String> sent = sentBy(player, step);
@@ -381,8 +416,10 @@ public final class GameLogConverter {
         void start(Player player, GameFrame frame) throws IOException {
             player.feed = converter.feed(Path.of(run.gameLog + "#" + player.key), player.sink);
             Observer o = player.observer;
-            line(player, "(init " + o.team() + " (version " + Math.max(player.version, 3) + "))");
+            line(player, "(init " + o.team() + " (version " + Math.max(player.version, 3) + ")"
+                    + (player.goalie ? " (goalie)" : "") + ")");
             line(player, "(init " + o.side().letter() + ' ' + o.uniformNumber() + ' ' + frame.playMode() + ")");
+            player.heardMode = frame.playMode();
             if (player.synchSee) {
                 line(player, "(ok synch_see)");
             }
@@ -459,6 +496,46 @@ public final class GameLogConverter {
             writer.lines();
             writer.end();
             line(player, text);
+        }
+
+        /**
+         * The player's {@code sense_body} as the server writes it (version 7's fields, which the
+         * world model reads): stamina, speed relative to the head, neck angle, command counts.
+         */
+        void senseBody(Player player, PlayerState self, int time) throws IOException {
+            double speed = Math.hypot(self.vx(), self.vy());
+            double head = self.body() + self.neck();
+            double direction = speed < 1e-9 ? 0
+                    : Math.rint(VisionNumbers.normalize(Math.toDegrees(Math.atan2(self.vy(), self.vx())) - head));
+            PlayerState.Counts c = self.counts();
+            text.setLength(0);
+            text.append("(sense_body ").append(time).append(" (view_mode ")
+                    .append(self.viewQuality() == 'h' ? "high " : "low ")
+                    .append(self.viewWidth() <= 60 ? "narrow" : self.viewWidth() >= 180 ? "wide" : "normal")
+                    .append(") (stamina ");
+            VisionNumbers.append(text, Math.rint(self.stamina()), 0).append(' ');
+            VisionNumbers.append(text, self.effort(), 6).append(' ');
+            VisionNumbers.append(text, self.capacity(), 0).append(") (speed ");
+            VisionNumbers.append(text, VisionNumbers.quantize(speed, 0.01), 2).append(' ');
+            VisionNumbers.append(text, direction, 0).append(") (head_angle ");
+            VisionNumbers.append(text, Math.rint(self.neck()), 0).append(") (kick ").append(c.kick())
+                    .append(") (dash ").append(c.dash()).append(") (turn ").append(c.turn())
+                    .append(") (say ").append(c.say()).append(") (turn_neck ").append(c.turnNeck())
+                    .append(") (catch ").append(c.catches()).append(") (move ").append(c.move())
+                    .append(") (change_view ").append(c.changeView()).append("))");
+            line(player, text);
+        }
+
+        /** The referee's call when the play mode changed since the player last heard ({@code goal_l_2} for goals). */
+        void referee(Player player, GameFrame frame) throws IOException {
+            String mode = frame.playMode();
+            if (mode.equals(player.heardMode)) {
+                return;
+            }
+            player.heardMode = mode;
+            String word = mode.equals("goal_l") ? "goal_l_" + frame.scoreLeft()
+                    : mode.equals("goal_r") ? "goal_r_" + frame.scoreRight() : mode;
+            line(player, "(hear " + frame.time() + " referee " + word + ")");
         }
 
         void line(Player player, CharSequence message) throws IOException {
@@ -629,7 +706,9 @@ public final class GameLogConverter {
             Set<Player> synchSees = synchSees(frame);
             List<Sent> at = new ArrayList<>();
             collect(at, time, stoppage, false);
-            hand(new Step(frame, step, before, at, !mode.equals("time_over"), starting, synchSees));
+            // past the end of a cut command log nothing was sent as far as it tells: not evidence of another game
+            boolean covered = !commandsEnded || time <= lastCommandTime;
+            hand(new Step(frame, step, before, at, !mode.equals("time_over"), starting, synchSees, covered));
             lastTime = time;
             lastStoppage = stoppage;
             lastStep = step;
@@ -1036,8 +1115,10 @@ public final class GameLogConverter {
                         // cones only synchronous vision has (60 and 120 degrees): a log without the init
                         || Math.abs(factor - 2.0 / 3) < 1e-6 || Math.abs(factor - 4.0 / 3) < 1e-6;
                 Phase phase = synch ? Phase.FIRST_STEP : seeOffset(key, frame.time(), state);
-                player = new Player(observer, key, output.open(observer), workers.get(nextWorker++ % threads),
+                boolean goalie = (state.state() & PlayerState.GOALIE) != 0;
+                player = new Player(observer, key, output.open(observer, goalie), workers.get(nextWorker++ % threads),
                         version, synch, phase.offset(), fading.forObserver(key));
+                player.goalie = goalie;
                 if (!phase.told()) {
                     undecided.add(new Undecided(player, frame.time(), phase.candidates()));
                 }
@@ -1086,7 +1167,7 @@ public final class GameLogConverter {
                 throw new LogException(gameLog, 0, "no show in the game log: nothing to rebuild", null);
             }
             decide(Integer.MAX_VALUE);
-            submit(new Step(null, 0, after, List.of(), false, List.of(), Set.of()));
+            submit(new Step(null, 0, after, List.of(), false, List.of(), Set.of(), false));
             stopWorkers();
             if (firstBeyond != null) {
                 warnings.add(commands.file() + ":" + firstBeyond.line() + ": the command log goes on to cycle "

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Function;
 import org.scenes.api.Grid;
+import org.scenes.api.Observer;
 import org.scenes.internal.gamelog.GameLogs;
 import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileWriter;
@@ -43,13 +44,22 @@ public final class GameSceneFiles {
             throws IOException {
         Map<Path, SceneFileWriter> writers = new LinkedHashMap<>();
         try {
-            GameLogConverter.Result result = converter.convert(logs.gameLog(), logs.commandLog(), observer -> {
-                Path file = target.apply(observer.team() + "_" + observer.uniformNumber());
-                SceneFileWriter writer = SceneFileWriter.create(file, SceneFileHeader.of(grid,
-                        new SceneSource(logs.source(), observer)));
-                writers.put(file, writer);
-                return writer::write;
-            });
+            GameLogConverter.Result result = converter.convert(logs.gameLog(), logs.commandLog(),
+                    new GameLogConverter.Output() {
+                        @Override
+                        public SceneConverter.SceneSink open(Observer observer) throws IOException {
+                            return open(observer, false);
+                        }
+
+                        @Override
+                        public SceneConverter.SceneSink open(Observer observer, boolean goalie) throws IOException {
+                            Path file = target.apply(observer.team() + "_" + observer.uniformNumber());
+                            SceneFileWriter writer = SceneFileWriter.create(file, SceneFileHeader.of(grid,
+                                    new SceneSource(logs.source(), observer, goalie)));
+                            writers.put(file, writer);
+                            return writer::write;
+                        }
+                    });
             Written written = new Written(result, List.of());
             if (written.scenes() == 0) {
                 return written;

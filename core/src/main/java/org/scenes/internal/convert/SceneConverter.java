@@ -17,6 +17,7 @@ import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
 import org.scenes.api.Side;
+import org.scenes.api.World;
 import org.scenes.internal.protocol.InitReply;
 import org.scenes.internal.protocol.InitRequest;
 import org.scenes.internal.protocol.Message;
@@ -28,12 +29,13 @@ import org.scenes.internal.protocol.SenseBody;
 import org.scenes.internal.protocol.ServerNotice;
 import org.scenes.internal.protocol.Unknown;
 import org.scenes.internal.protocol.VisualObject;
+import org.scenes.internal.world.WorldModel;
 
 /**
  * Turns player logs into scenes (the thesis' LogToScenes, rules in docs/conversion.md): a scene is
  * a {@code see} with the actions the player sent after it and before the next different
  * {@code see}; identical repeated {@code see}s (play paused) collapse into one; scenes without
- * action and actions without {@code see} are dropped and counted. For a player that acts every
+ * action (unless {@link Builder#keepUnanswered kept}) and actions without {@code see} are dropped and counted. For a player that acts every
  * cycle on synchronous vision ({@link Pairing}), a scene is a cycle (from one {@code sense_body} to
  * the next) with the latest {@code see} and its age. A log line may hold several messages. The
  * live agent uses {@link #seenObjects} for the same see-to-objects step.
@@ -46,6 +48,25 @@ public final class SceneConverter {
     @FunctionalInterface
     public interface SceneSink {
         void accept(Scene scene) throws IOException;
+
+        /** Told, before the player's first scene, that its init asked to play as goalie. */
+        default void goalie() {
+        }
+
+        /** A sink writing scenes to {@code scenes} and telling {@code goalie} of the goalie's init. */
+        static SceneSink of(SceneSink scenes, Runnable goalie) {
+            return new SceneSink() {
+                @Override
+                public void accept(Scene scene) throws IOException {
+                    scenes.accept(scene);
+                }
+
+                @Override
+                public void goalie() {
+                    goalie.run();
+                }
+            };
+        }
     }
 
     /** How often (in lines) progress is reported. */
@@ -55,30 +76,94 @@ public final class SceneConverter {
     private final Pairing pairing;
     private final boolean strict;
     private final Consumer<MalformedLine> warnings;
+    private final boolean world;
+    /** Whether sees the player left unanswered become scenes without action (else they are dropped). */
+    private final boolean keepUnanswered;
     private final MessageParser parser = new MessageParser();
 
-    /**
-     * @param grid the grid every object's cell is computed with
-     * @param strict whether the first malformed line stops the conversion ({@link LogException})
-     * @param warnings told of each malformed line when not strict
-     */
-    public SceneConverter(Grid grid, boolean strict, Consumer<MalformedLine> warnings) {
-        this(grid, Pairing.AUTO, strict, warnings);
+    private SceneConverter(Builder builder) {
+        this.grid = builder.grid;
+        this.pairing = builder.pairing;
+        this.strict = builder.strict;
+        this.warnings = builder.warnings;
+        this.world = builder.world;
+        this.keepUnanswered = builder.keepUnanswered;
     }
 
     /**
-     * @param pairing how sees and actions become scenes ({@link Pairing#AUTO}: per cycle once the
-     *                server confirms synchronous vision, per see otherwise)
+     * A converter computing cells in {@code grid}, with the defaults: {@link Pairing#AUTO}, not
+     * strict, malformed lines counted but told to no one. Change them on the builder, then
+     * {@link Builder#build}.
      */
-    public SceneConverter(Grid grid, Pairing pairing, boolean strict, Consumer<MalformedLine> warnings) {
-        this.grid = Objects.requireNonNull(grid, "grid");
-        this.pairing = Objects.requireNonNull(pairing, "pairing");
-        this.strict = strict;
-        this.warnings = warnings == null ? line -> { } : warnings;
+    public static Builder with(Grid grid) {
+        return new Builder(grid);
+    }
+
+    /** The settings of a {@link SceneConverter}, each named: see {@link #with}. */
+    public static final class Builder {
+        private final Grid grid;
+        private Pairing pairing = Pairing.AUTO;
+        private boolean strict;
+        private Consumer<MalformedLine> warnings = line -> { };
+        private boolean world;
+        private boolean keepUnanswered;
+
+        private Builder(Grid grid) {
+            this.grid = Objects.requireNonNull(grid, "grid");
+        }
+
+        /**
+         * How sees and actions become scenes ({@link Pairing#AUTO}, the default: per cycle once the
+         * server confirms synchronous vision, per see otherwise).
+         */
+        public Builder pairing(Pairing pairing) {
+            this.pairing = Objects.requireNonNull(pairing, "pairing");
+            return this;
+        }
+
+        /** Whether the first malformed line stops the conversion ({@link LogException}); default false. */
+        public Builder strict(boolean strict) {
+            this.strict = strict;
+            return this;
+        }
+
+        /** Told of each malformed line when not strict ({@code null}: no one). */
+        public Builder warnings(Consumer<MalformedLine> warnings) {
+            this.warnings = warnings == null ? line -> { } : warnings;
+            return this;
+        }
+
+        /**
+         * Whether each scene carries the player's world model ({@link World}, built by
+         * {@link WorldModel} from every message of the log); default false.
+         */
+        public Builder world(boolean world) {
+            this.world = world;
+            return this;
+        }
+
+        /**
+         * Whether a see the player left unanswered (no action before the next different see; per
+         * cycle, a cycle without action) becomes a scene without action, a learnable "no action",
+         * rather than being dropped and counted ({@link DropReason#NO_ACTION}); default false.
+         */
+        public Builder keepUnanswered(boolean keep) {
+            this.keepUnanswered = keep;
+            return this;
+        }
+
+        public SceneConverter build() {
+            return new SceneConverter(this);
+        }
     }
 
     public Grid grid() {
         return grid;
+    }
+
+    /** Whether the scenes carry the player's world model. */
+    public boolean world() {
+        return world;
     }
 
     /** Converts one log file (any {@link LogFormat}, plain or gzip). */
@@ -213,6 +298,9 @@ public final class SceneConverter {
         Action primary;
         Action secondary;
         boolean orphanActions;
+        /** The player's world model, when scenes carry it; per see, its state at the pending see. */
+        final WorldModel worldModel = world ? new WorldModel() : null;
+        World pendingWorld;
 
         Run(Path file, SceneSink sink) {
             this.file = file;
@@ -267,6 +355,20 @@ public final class SceneConverter {
 
         void handle(Message message) throws IOException {
             report.message();
+            // The world model takes each message: per see before the see opens its scene (the scene
+            // holds the model at its see), per cycle after (a scene closes on the next cycle's first
+            // message and holds the model of its whole cycle).
+            boolean worldFirst = worldModel != null && !perCycle;
+            if (worldFirst) {
+                worldModel.accept(message);
+            }
+            pairing(message);
+            if (worldModel != null && !worldFirst) {
+                worldModel.accept(message);
+            }
+        }
+
+        void pairing(Message message) throws IOException {
             if (message instanceof See see) {
                 if (perCycle) {
                     cycleSee(see);
@@ -282,6 +384,9 @@ public final class SceneConverter {
             } else if (message instanceof InitRequest init) {
                 team = init.team();
                 observer = new Observer(team, side, uniformNumber);
+                if (init.goalie()) {
+                    sink.goalie();
+                }
             } else if (message instanceof InitReply reply) {
                 if (reply.head().equals("reconnect")) {
                     finish();
@@ -359,6 +464,7 @@ public final class SceneConverter {
         void remember(See see) {
             pending = see;
             pendingObserver = observer;
+            pendingWorld = worldModel != null && !perCycle ? worldModel.snapshot(see.time()) : null;
             // the whole line: a server sends one message per datagram, and repeats are whole lines
             int length = lineLength;
             if (pendingBytes.length < length) {
@@ -404,13 +510,14 @@ public final class SceneConverter {
                 return;
             }
             int cycle = perCycle ? openCycle : pending.time();
-            if (primary == null && secondary == null) {
+            if (primary == null && secondary == null && !keepUnanswered) {
                 report.drop(DropReason.NO_ACTION);
             } else {
-                List<Action> actions = primary == null ? List.of(secondary)
+                List<Action> actions = primary == null ? secondary == null ? List.of() : List.of(secondary)
                         : secondary == null ? List.of(primary) : List.of(primary, secondary);
+                World seenWorld = worldModel == null ? null : perCycle ? worldModel.snapshot(cycle) : pendingWorld;
                 Scene scene = new Scene(cycle, pendingObserver, seenObjects(pending, pendingObserver, grid), actions,
-                        null, perCycle ? openAge : 0);
+                        null, perCycle ? openAge : 0, seenWorld);
                 sink.accept(scene);
                 report.scene(scene.actionType());
                 report.seeAge(scene.seeAge());

@@ -17,6 +17,8 @@ public final class Inputs {
     /** The name that stands for standard input. */
     public static final String STANDARD_INPUT = "-";
     private static final int GZIP_MAGIC = 0x8b1f;
+    /** For a message when memory runs out: which input was being read, most likely. */
+    private static volatile Path lastOpened;
 
     private Inputs() {
     }
@@ -26,7 +28,13 @@ public final class Inputs {
         return file.toString().equals(STANDARD_INPUT);
     }
 
+    /** The input opened last in this process, or null: what an out-of-memory message can name. */
+    public static Path lastOpened() {
+        return lastOpened;
+    }
+
     public static InputStream open(Path file) throws IOException {
+        lastOpened = file;
         InputStream raw;
         if (isStandardInput(file)) {
             raw = new FilterInputStream(System.in) {

@@ -284,7 +284,7 @@ public final class GameLogReader {
             }
         } catch (JsonParseException e) {
             throw new GameLogException(file, e.getLocation() == null ? 0 : e.getLocation().getLineNr(),
-                    e.getOriginalMessage());
+                    org.scenes.internal.files.JsonErrors.plain(e.getOriginalMessage()));
         }
     }
 

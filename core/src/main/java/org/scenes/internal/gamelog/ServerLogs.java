@@ -42,8 +42,8 @@ public final class ServerLogs {
         if (start == length) {
             return null;
         }
-        if (length - start >= 4 && head[start] == 'U' && head[start + 1] == 'L' && head[start + 2] == 'G'
-                && head[start + 3] >= '4' && head[start + 3] <= '6') {
+        if (length - start >= 3 && head[start] == 'U' && head[start + 1] == 'L' && head[start + 2] == 'G') {
+            // any version: a game log of one this build does not read is refused by its reader, naming it
             return Kind.GAME;
         }
         if (head[start] == '[') {

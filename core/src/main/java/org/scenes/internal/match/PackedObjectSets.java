@@ -128,7 +128,8 @@ final class PackedObjectSets implements PackedMetric.PackedScenes {
             qn[g] = q[g].length / stride;
         }
         Assignment.Workspace scratch = new Assignment.Workspace();
-        if (metric.greedy()) {
+        // with every object weight 0 there is no group to lead: the general path sums what is left
+        if (metric.greedy() && groups.length > 0) {
             int lead = 0;
             for (int g = 1; g < groups.length; g++) {
                 if (qn[g] > qn[lead]) {

@@ -9,6 +9,7 @@ import java.util.function.UnaryOperator;
 import org.scenes.api.EncodedMetric;
 import org.scenes.api.Neighbour;
 import org.scenes.api.PackedMetric;
+import org.scenes.api.PluginException;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneMetric;
 import org.scenes.api.SceneTransform;
@@ -190,11 +191,11 @@ public final class Recognizer {
             EncodedMetric<Object> fast = (EncodedMetric<Object>) metric;
             Object q = fast.encode(query);
             for (int i = 0; i < encoded.length; i++) {
-                top.offer(fast.distance(q, encoded[i], top.bound()), i);
+                top.offer(checked(metric, fast.distance(q, encoded[i], top.bound()), query, i), i);
             }
         } else {
             for (int i = 0; i < decoded.size(); i++) {
-                top.offer(metric.distance(query, decoded.get(i)), i);
+                top.offer(checked(metric, metric.distance(query, decoded.get(i)), query, i), i);
             }
         }
         // placeholders hold the bound's slots until scenes below it arrive: they are no neighbours
@@ -202,6 +203,20 @@ public final class Recognizer {
                 : decoded != null ? decoded.get(i) : knowledge.scene(i));
         result.removeIf(found -> found.index() == PLACEHOLDER);
         return result;
+    }
+
+    /** A distance of a plugin or script: NaN or below 0 would rank scenes by nonsense, so it fails, naming the metric. */
+    private double checked(SceneMetric metric, double distance, Scene query, int stored) {
+        if (distance >= 0) {
+            return distance;
+        }
+        String name = metric.toString();
+        if (name.startsWith(metric.getClass().getName() + "@")) {
+            name = metric.getClass().getSimpleName();
+        }
+        throw new PluginException("metric " + name + " returned " + distance + " comparing the query scene of cycle "
+                + query.cycle() + " with the stored scene of cycle " + knowledge.scene(stored).cycle()
+                + ": a distance is 0 or more");
     }
 
     /** Searches the partition of the query's see age, or of the nearest age stored (the lower on a tie). */

@@ -218,6 +218,8 @@ public final class MessageParser {
                     leftovers = new ArrayList<>(2);
                 }
                 leftovers.add(text(elementStart, pos));
+            } else if (objects.size() == MAX_SEEN_OBJECTS) {
+                throw error("a see of more than " + MAX_SEEN_OBJECTS + " objects (the server lists fewer than 100)");
             } else {
                 objects.add(object);
             }
@@ -314,6 +316,11 @@ public final class MessageParser {
                 mark = (char) buf[pos];
             } else {
                 double value = number(pos, tokenEnd);
+                if (Double.isNaN(value) && looksLikeNumber(pos, tokenEnd)) {
+                    // 1e999, inf, nan: a known object with a broken value is a broken message, not
+                    // an unknown element to pass over (that would drop the ball without a word)
+                    throw error("(" + name + "): '" + text(pos, tokenEnd) + "' is not a finite number");
+                }
                 if (Double.isNaN(value) || count == numbers.length || mark != ' ') {
                     return null;
                 }
@@ -371,9 +378,19 @@ public final class MessageParser {
                 return null;
             }
         }
+        if (dist < 0 || dist > MAX_DISTANCE || Math.abs(dir) > 180 || Math.abs(body) > 180 || Math.abs(head) > 180
+                || Math.abs(point) > 180) {
+            throw error("(" + name + "): a distance below 0 or above " + (int) MAX_DISTANCE
+                    + " m, or a direction beyond 180 degrees: " + Arrays.toString(Arrays.copyOf(numbers, count)));
+        }
         return new VisualObject(kind, name, team, unum, goalie, dist, dir, distChange, dirChange,
                 body, head, point, mark);
     }
+
+    /** The most objects a see may list: matching costs grow with the square of the count. */
+    private static final int MAX_SEEN_OBJECTS = 256;
+    /** Metres: no object on or around the pitch is seen farther (its diagonal is about 130 m). */
+    private static final double MAX_DISTANCE = 1000;
 
     private boolean isPlayerWord(int s, int e) {
         int length = e - s;
@@ -1103,12 +1120,24 @@ public final class MessageParser {
         return negative ? -value : value;
     }
 
+    /** NaN also for what overflows to infinity (1e999): the protocol has no infinite values. */
     private double slowNumber(int s, int e) {
         try {
-            return Double.parseDouble(text(s, e));
+            double value = Double.parseDouble(text(s, e));
+            return Double.isFinite(value) ? value : Double.NaN;
         } catch (NumberFormatException ex) {
             return Double.NaN;
         }
+    }
+
+    /** A token meant as a number: a digit, sign or dot first, or a spelling of infinity or NaN. */
+    private boolean looksLikeNumber(int s, int e) {
+        byte first = buf[s];
+        if ((first >= '0' && first <= '9') || first == '-' || first == '+' || first == '.') {
+            return true;
+        }
+        String word = text(s, e).toLowerCase(java.util.Locale.ROOT);
+        return word.equals("nan") || word.startsWith("inf");
     }
 
     private boolean equals(int s, int e, String literal) {

@@ -16,12 +16,23 @@ public final class LazySceneFileWriter implements AutoCloseable {
     private final Grid grid;
     private final String source;
     private SceneFileWriter writer;
+    private boolean goalie;
 
     /** @param source the name of the log the scenes come from, for the header */
     public LazySceneFileWriter(Path target, Grid grid, String source) {
         this.target = target;
         this.grid = grid;
         this.source = source;
+    }
+
+    /**
+     * Marks the player as its team's goalie in the header. After the first scene the header
+     * (which describes the file's first player) is written: a later player's role is not its own.
+     */
+    public void goalie() {
+        if (writer == null) {
+            goalie = true;
+        }
     }
 
     public void write(Scene scene) throws IOException {
@@ -32,7 +43,7 @@ public final class LazySceneFileWriter implements AutoCloseable {
     }
 
     private void open(Observer observer) throws IOException {
-        writer = SceneFileWriter.create(target, SceneFileHeader.of(grid, new SceneSource(source, observer)));
+        writer = SceneFileWriter.create(target, SceneFileHeader.of(grid, new SceneSource(source, observer, goalie)));
     }
 
     /** Completes the file (an empty one with an unknown observer when no scene came). */

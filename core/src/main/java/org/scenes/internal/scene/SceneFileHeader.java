@@ -10,8 +10,11 @@ import org.scenes.api.Grid;
  * @param source the log and player the scenes came from
  */
 public record SceneFileHeader(int format, Grid grid, SceneSource source) {
-    /** The format version this build writes; it reads this and every older one. */
-    public static final int CURRENT_FORMAT = 1;
+    /**
+     * The format version this build writes; it reads this and every older one. Version 2 added the
+     * optional per-scene {@code world} block; version 1 files read as scenes without it.
+     */
+    public static final int CURRENT_FORMAT = 2;
 
     public static SceneFileHeader of(Grid grid, SceneSource source) {
         return new SceneFileHeader(CURRENT_FORMAT, grid, source);

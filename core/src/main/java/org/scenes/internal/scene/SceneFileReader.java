@@ -23,6 +23,7 @@ import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
 import org.scenes.api.Side;
+import org.scenes.api.World;
 import org.scenes.internal.files.Inputs;
 
 /**
@@ -184,16 +185,19 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         expect(start, JsonToken.START_OBJECT, "a source object");
         String log = "";
         Observer observer = Observer.UNKNOWN;
+        boolean goalie = false;
         while (json.nextToken() == JsonToken.FIELD_NAME) {
             String field = json.currentName();
             JsonToken value = json.nextToken();
             if ("log".equals(field)) {
                 log = text(value);
+            } else if ("goalie".equals(field)) {
+                goalie = bool(value);
             } else {
                 observer = readObserverField(observer, field, value);
             }
         }
-        return new SceneSource(log, observer);
+        return new SceneSource(log, observer, goalie);
     }
 
     private Observer readObserverField(Observer observer, String field, JsonToken value) throws IOException {
@@ -227,6 +231,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         Observer observer = header.source().observer();
         List<SeenObject> objects = null;
         List<Action> actions = null;
+        World world = null;
         while (json.nextToken() == JsonToken.FIELD_NAME) {
             String field = json.currentName();
             JsonToken value = json.nextToken();
@@ -242,6 +247,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
                 }
                 case "objects" -> objects = readObjects(value);
                 case "actions" -> actions = readActions(value);
+                case "world" -> world = readWorld(value);
                 default -> json.skipChildren();
             }
         }
@@ -250,7 +256,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
                     "a scene needs 'cycle', 'objects' and 'actions'", null);
         }
         try {
-            return new Scene(cycle, observer, objects, actions, null, seeAge);
+            return new Scene(cycle, observer, objects, actions, null, seeAge, world);
         } catch (IllegalArgumentException e) {
             throw new SceneFileException(file, start.getLineNr(), start.getColumnNr(), e.getMessage(), e);
         }
@@ -272,6 +278,10 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         expect(start, JsonToken.START_ARRAY, "an array of objects");
         List<SeenObject> objects = new ArrayList<>();
         while (json.nextToken() != JsonToken.END_ARRAY) {
+            if (objects.size() == SceneValues.MAX_OBJECTS) {
+                throw error("a scene holds at most " + SceneValues.MAX_OBJECTS + " objects (a see of the soccer server"
+                        + " lists fewer than 100); is this a scene file?");
+            }
             objects.add(readObject(json.currentToken()));
         }
         return objects;
@@ -304,13 +314,13 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
                 case "unum" -> unum = intValue(value);
                 case "goalie" -> goalie = bool(value);
                 case "relation" -> relation = parseEnum(value, Relation::fromKey);
-                case "dist" -> distance = number(value);
-                case "dir" -> direction = number(value);
-                case "distChange" -> distanceChange = number(value);
-                case "dirChange" -> directionChange = number(value);
-                case "bodyFacing" -> bodyFacing = number(value);
-                case "headFacing" -> headFacing = number(value);
-                case "pointDir" -> pointing = number(value);
+                case "dist" -> distance = inRange(field, number(value), 0, SceneValues.MAX_DISTANCE);
+                case "dir" -> direction = inRange(field, number(value), -SceneValues.MAX_DIRECTION, SceneValues.MAX_DIRECTION);
+                case "distChange" -> distanceChange = inRange(field, number(value), -SceneValues.MAX_CHANGE, SceneValues.MAX_CHANGE);
+                case "dirChange" -> directionChange = inRange(field, number(value), -SceneValues.MAX_CHANGE, SceneValues.MAX_CHANGE);
+                case "bodyFacing" -> bodyFacing = inRange(field, number(value), -SceneValues.MAX_DIRECTION, SceneValues.MAX_DIRECTION);
+                case "headFacing" -> headFacing = inRange(field, number(value), -SceneValues.MAX_DIRECTION, SceneValues.MAX_DIRECTION);
+                case "pointDir" -> pointing = inRange(field, number(value), -SceneValues.MAX_DIRECTION, SceneValues.MAX_DIRECTION);
                 case "mark" -> {
                     String text = text(value);
                     if (!text.equals("t") && !text.equals("k")) {
@@ -327,6 +337,87 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         }
         return new SeenObject(kind, name, team, unum, goalie, relation, distance, direction,
                 distanceChange, directionChange, bodyFacing, headFacing, pointing, mark, cell);
+    }
+
+    /** A scene's world model (format 2); values left out are unknown (NaN, age -1). */
+    private World readWorld(JsonToken start) throws IOException {
+        expect(start, JsonToken.START_OBJECT, "a world object");
+        double[] self = {Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN};
+        double[] ball = {Double.NaN, Double.NaN, Double.NaN, Double.NaN};
+        int age = -1;
+        int ballAge = -1;
+        List<World.Player> players = new ArrayList<>();
+        String playMode = "";
+        int own = 0;
+        int opponent = 0;
+        while (json.nextToken() == JsonToken.FIELD_NAME) {
+            String field = json.currentName();
+            JsonToken value = json.nextToken();
+            int index = WORLD_NUMBERS.indexOf(field);
+            if (index >= 0) {
+                self[index] = number(value);
+                continue;
+            }
+            switch (field) {
+                case "age" -> age = intValue(value);
+                case "ball" -> {
+                    expect(value, JsonToken.START_OBJECT, "a ball object");
+                    while (json.nextToken() == JsonToken.FIELD_NAME) {
+                        String ballField = json.currentName();
+                        JsonToken ballValue = json.nextToken();
+                        switch (ballField) {
+                            case "x" -> ball[0] = number(ballValue);
+                            case "y" -> ball[1] = number(ballValue);
+                            case "vx" -> ball[2] = number(ballValue);
+                            case "vy" -> ball[3] = number(ballValue);
+                            case "age" -> ballAge = intValue(ballValue);
+                            default -> json.skipChildren();
+                        }
+                    }
+                }
+                case "players" -> {
+                    expect(value, JsonToken.START_ARRAY, "an array of players");
+                    while (json.nextToken() != JsonToken.END_ARRAY) {
+                        players.add(readWorldPlayer(json.currentToken()));
+                    }
+                }
+                case "playMode" -> playMode = text(value);
+                case "score" -> {
+                    expect(value, JsonToken.START_ARRAY, "a score [own, opponent]");
+                    own = intValue(json.nextToken());
+                    opponent = intValue(json.nextToken());
+                    expect(json.nextToken(), JsonToken.END_ARRAY, "the end of the score [own, opponent]");
+                }
+                default -> json.skipChildren();
+            }
+        }
+        return new World(self[0], self[1], self[2], self[3], self[4], self[5], self[6], self[7], age,
+                ball[0], ball[1], ball[2], ball[3], ballAge, players, playMode, own, opponent);
+    }
+
+    /** The world block's own numbers, in {@link World}'s order. */
+    private static final List<String> WORLD_NUMBERS = List.of("x", "y", "body", "neck", "vx", "vy", "stamina", "effort");
+
+    private World.Player readWorldPlayer(JsonToken start) throws IOException {
+        expect(start, JsonToken.START_OBJECT, "a player object");
+        Relation relation = Relation.UNKNOWN;
+        int unum = 0;
+        double x = Double.NaN;
+        double y = Double.NaN;
+        int age = 0;
+        while (json.nextToken() == JsonToken.FIELD_NAME) {
+            String field = json.currentName();
+            JsonToken value = json.nextToken();
+            switch (field) {
+                case "relation" -> relation = parseEnum(value, Relation::fromKey);
+                case "unum" -> unum = intValue(value);
+                case "x" -> x = number(value);
+                case "y" -> y = number(value);
+                case "age" -> age = intValue(value);
+                default -> json.skipChildren();
+            }
+        }
+        return new World.Player(relation, unum, x, y, age);
     }
 
     private Cell readCell(JsonToken start) throws IOException {
@@ -350,6 +441,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
             double[] parameters = {Double.NaN, Double.NaN};
             List<String> fields = new ArrayList<>();
             List<Double> values = new ArrayList<>();
+            List<String> notNumbers = new ArrayList<>();
             while (json.nextToken() == JsonToken.FIELD_NAME) {
                 String field = json.currentName();
                 JsonToken value = json.nextToken();
@@ -359,13 +451,23 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
                     bool(value);
                 } else if (value.isNumeric()) {
                     fields.add(field);
-                    values.add(json.getDoubleValue());
+                    values.add(inRange(field, json.getDoubleValue(), -SceneValues.MAX_PARAMETER, SceneValues.MAX_PARAMETER));
                 } else {
+                    notNumbers.add(field + "' is " + describe(value));
                     json.skipChildren();
                 }
             }
             if (type == null) {
                 throw error("an action needs a 'type'");
+            }
+            for (String notNumber : notNumbers) {
+                String field = notNumber.substring(0, notNumber.indexOf('\''));
+                for (int i = 0; i < type.parameterCount(); i++) {
+                    if (type.parameter(i).equals(field)) {
+                        // a parameter of another type would be dropped silently: a wrong file, not a missing value
+                        throw error("action '" + type.key() + "': '" + notNumber + ", not a number");
+                    }
+                }
             }
             for (int i = 0; i < fields.size(); i++) {
                 int index = parameterIndex(type, fields.get(i));
@@ -417,6 +519,15 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         return json.getDoubleValue();
     }
 
+    /** A scene's number: finite and within what the soccer server can send. */
+    private double inRange(String field, double value, double lowest, double highest) {
+        if (!(value >= lowest && value <= highest)) {
+            throw error("'" + field + "' must be a finite number from " + SceneValues.format(lowest) + " to "
+                    + SceneValues.format(highest) + ", not " + value);
+        }
+        return value;
+    }
+
     private boolean bool(JsonToken value) {
         if (value != JsonToken.VALUE_TRUE && value != JsonToken.VALUE_FALSE) {
             throw error("expected true or false but found " + describe(value));
@@ -459,7 +570,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         if (e instanceof JsonProcessingException jsonError) {
             JsonLocation location = jsonError.getLocation();
             return new SceneFileException(file, location == null ? 0 : location.getLineNr(),
-                    location == null ? 0 : location.getColumnNr(), "malformed JSON: " + jsonError.getOriginalMessage(), e);
+                    location == null ? 0 : location.getColumnNr(), "malformed JSON: " + org.scenes.internal.files.JsonErrors.plain(jsonError.getOriginalMessage()), e);
         }
         if (e instanceof java.io.EOFException) {
             return new SceneFileException(file, 0, 0, "the compressed file ends early (is it truncated?)", e);

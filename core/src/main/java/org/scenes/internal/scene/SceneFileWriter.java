@@ -17,6 +17,7 @@ import org.scenes.api.Observer;
 import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
+import org.scenes.api.World;
 import org.scenes.internal.files.AtomicOutput;
 
 /**
@@ -89,6 +90,9 @@ public final class SceneFileWriter implements AutoCloseable {
         json.writeObjectFieldStart("source");
         json.writeStringField("log", header.source().log());
         writeObserverFields(header.source().observer());
+        if (header.source().goalie()) {
+            json.writeBooleanField("goalie", true);
+        }
         json.writeEndObject();
         json.writeRaw('\n');
         json.writeArrayFieldStart("scenes");
@@ -127,6 +131,9 @@ public final class SceneFileWriter implements AutoCloseable {
             writeAction(actions.get(i), i == 0);
         }
         json.writeEndArray();
+        if (scene.world() != null) {
+            writeWorld(scene.world());
+        }
         json.writeEndObject();
         written++;
     }
@@ -176,6 +183,52 @@ public final class SceneFileWriter implements AutoCloseable {
         json.writeEndObject();
     }
 
+    /** The scene's world model (format 2): values not known are left out. */
+    private void writeWorld(World world) throws IOException {
+        json.writeObjectFieldStart("world");
+        writeOptional("x", world.x());
+        writeOptional("y", world.y());
+        writeOptional("body", world.body());
+        writeOptional("neck", world.neck());
+        writeOptional("vx", world.vx());
+        writeOptional("vy", world.vy());
+        writeOptional("stamina", world.stamina());
+        writeOptional("effort", world.effort());
+        if (world.age() >= 0) {
+            json.writeNumberField("age", world.age());
+        }
+        if (world.ballAge() >= 0) {
+            json.writeObjectFieldStart("ball");
+            writeOptional("x", world.ballX());
+            writeOptional("y", world.ballY());
+            writeOptional("vx", world.ballVx());
+            writeOptional("vy", world.ballVy());
+            json.writeNumberField("age", world.ballAge());
+            json.writeEndObject();
+        }
+        json.writeArrayFieldStart("players");
+        for (World.Player player : world.players()) {
+            json.writeStartObject();
+            json.writeStringField("relation", player.relation().key());
+            if (player.unum() > 0) {
+                json.writeNumberField("unum", player.unum());
+            }
+            writeOptional("x", player.x());
+            writeOptional("y", player.y());
+            json.writeNumberField("age", player.age());
+            json.writeEndObject();
+        }
+        json.writeEndArray();
+        if (!world.playMode().isEmpty()) {
+            json.writeStringField("playMode", world.playMode());
+        }
+        json.writeArrayFieldStart("score");
+        json.writeNumber(world.ownScore());
+        json.writeNumber(world.opponentScore());
+        json.writeEndArray();
+        json.writeEndObject();
+    }
+
     private void writeAction(Action action, boolean primary) throws IOException {
         json.writeStartObject();
         json.writeStringField("type", action.type().key());
@@ -191,6 +244,10 @@ public final class SceneFileWriter implements AutoCloseable {
     private void writeOptional(String field, double value) throws IOException {
         if (Double.isNaN(value)) {
             return;
+        }
+        if (Double.isInfinite(value)) {
+            // JSON has no infinity: written as a string, the file would be one its reader refuses
+            throw new IllegalArgumentException("cannot write '" + field + "' = " + value + ": scene values are finite");
         }
         // whole numbers without ".0"; -0 keeps its sign, which the server's "-0" carries, as "-0.0"
         json.writeFieldName(fields.computeIfAbsent(field, SerializedString::new));

@@ -87,7 +87,7 @@ class LargeLogMemoryTest {
         try (LogReader reader = LogReader.read(Path.of("generated.lsf"), repeated);
              SceneFileWriter writer = SceneFileWriter.create(target, SceneFileHeader.of(Grid.DEFAULT,
                      new SceneSource("generated.lsf", null)))) {
-            ConversionReport report = new SceneConverter(Grid.DEFAULT, true, null).convert(reader, writer::write, b -> { });
+            ConversionReport report = SceneConverter.with(Grid.DEFAULT).strict(true).build().convert(reader, writer::write, b -> { });
             writer.commit();
             System.out.println("converted " + report.bytes() + " bytes into " + report.scenes() + " scenes");
         }

@@ -72,7 +72,7 @@ class ModernLogTest {
     }
 
     private ConversionReport convert(Path file, Pairing pairing) throws IOException {
-        return new SceneConverter(Grid.DEFAULT, pairing, false, warnings::add).convert(file, scenes::add);
+        return SceneConverter.with(Grid.DEFAULT).pairing(pairing).warnings(warnings::add).build().convert(file, scenes::add);
     }
 
     @Test

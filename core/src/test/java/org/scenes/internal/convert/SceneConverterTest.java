@@ -43,7 +43,7 @@ class SceneConverterTest {
     }
 
     private ConversionReport convert(Path file) throws IOException {
-        return new SceneConverter(Grid.DEFAULT, false, warnings::add).convert(file, scenes::add);
+        return SceneConverter.with(Grid.DEFAULT).warnings(warnings::add).build().convert(file, scenes::add);
     }
 
     private static final String INIT = "(init Carleton (version 9))";
@@ -66,6 +66,42 @@ class SceneConverterTest {
         assertEquals(3, report.sees());
         assertEquals(1, report.commands(CommandType.DASH));
         assertEquals(1L, report.actions().get(ActionType.DASH));
+    }
+
+    @Test
+    void unansweredSeesAreKeptAsScenesWithoutActionWhenAsked() throws IOException {
+        Path file = log("wait.lsf", INIT, REPLY,
+                "(see 1 ((b) 10 0))", "(dash 80)",
+                "(see 2 ((b) 9 0))", "(sense_body 2 (view_mode high normal))",
+                "(see 3 ((b) 8 0))", "(turn_neck 10)",
+                "(see 4 ((b) 7 0))");
+        ConversionReport kept = SceneConverter.with(Grid.DEFAULT).warnings(warnings::add).keepUnanswered(true).build()
+                .convert(file, scenes::add);
+        assertEquals(List.of(1, 2, 3, 4), scenes.stream().map(Scene::cycle).toList());
+        assertEquals(List.of(), scenes.get(1).actions(), "the teacher left see 2 unanswered");
+        assertEquals(ActionType.NONE, scenes.get(3).actionType());
+        assertEquals(List.of(Action.turnNeck(10)), scenes.get(2).actions());
+        assertEquals(4, kept.scenes());
+        assertEquals(0, kept.dropped(DropReason.NO_ACTION));
+        assertEquals(2L, kept.actions().get(ActionType.NONE));
+
+        scenes.clear();
+        ConversionReport dropped = convert(file);
+        assertEquals(List.of(1, 3), scenes.stream().map(Scene::cycle).toList(), "the default drops them as before");
+        assertEquals(2, dropped.dropped(DropReason.NO_ACTION));
+    }
+
+    @Test
+    void theGoaliesInitIsToldToTheSinkBeforeItsFirstScene() throws IOException {
+        List<String> told = new ArrayList<>();
+        SceneConverter.SceneSink sink = SceneConverter.SceneSink.of(scene -> told.add("scene"), () -> told.add("goalie"));
+        SceneConverter.with(Grid.DEFAULT).warnings(warnings::add).build().convert(log("g.lsf", "(init Carleton (version 9) (goalie))",
+                "(init l 1 before_kick_off)", "(see 1 ((b) 10 0))", "(catch 0)", "(see 2 ((b) 9 0))"), sink);
+        assertEquals(List.of("goalie", "scene"), told);
+        told.clear();
+        SceneConverter.with(Grid.DEFAULT).warnings(warnings::add).build().convert(log("f.lsf", INIT, REPLY,
+                "(see 1 ((b) 10 0))", "(dash 10)", "(see 2 ((b) 9 0))"), sink);
+        assertEquals(List.of("scene"), told);
     }
 
     @Test
@@ -118,7 +154,7 @@ class SceneConverterTest {
         assertEquals(1, scenes.size());
         assertEquals(1L, report.unknown().get("gibberish"));
         LogException strict = assertThrows(LogException.class,
-                () -> new SceneConverter(Grid.DEFAULT, true, null).convert(file, s -> { }));
+                () -> SceneConverter.with(Grid.DEFAULT).strict(true).build().convert(file, s -> { }));
         assertEquals(3, strict.line());
         assertTrue(strict.getMessage().startsWith(file + ":3: "), strict.getMessage());
     }
@@ -254,14 +290,17 @@ class SceneConverterTest {
 
     @Test
     void longLinesAndCrLfAreRead() throws IOException {
+        // a line of about 45 KB: 250 objects (a see holds at most 256) with long-written numbers
         StringBuilder see = new StringBuilder("(see 4");
-        for (int i = 0; i < 3000; i++) {
-            see.append(" ((f c) 10 ").append(i % 90).append(')');
+        for (int i = 0; i < 250; i++) {
+            see.append(" ((f c) 10.").append("0".repeat(170)).append(' ').append(i % 90).append(')');
         }
         see.append(')');
+        assertTrue(see.length() > 45_000);
         Path file = dir.resolve("long.lsf");
         Files.writeString(file, INIT + "\r\n" + see + "\r\n(dash 1)\r\n");
         convert(file);
-        assertEquals(3000, scenes.get(0).objects().size());
+        assertEquals(250, scenes.get(0).objects().size());
+        assertEquals(10, scenes.get(0).objects().get(0).distance(), 0);
     }
 }

@@ -43,7 +43,7 @@ class SharedLogsTest {
     private static final Path DATA = SharedData.data();
 
     private static ConversionReport convert(Path log, List<Scene> scenes) throws IOException {
-        return new SceneConverter(Grid.DEFAULT, true, null).convert(log, scenes == null ? s -> { } : scenes::add);
+        return SceneConverter.with(Grid.DEFAULT).strict(true).build().convert(log, scenes == null ? s -> { } : scenes::add);
     }
 
     @Test

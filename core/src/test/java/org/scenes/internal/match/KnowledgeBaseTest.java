@@ -49,7 +49,7 @@ class KnowledgeBaseTest {
         int scenes = 0;
         for (Path log : logs) {
             List<Scene> original = new ArrayList<>();
-            new SceneConverter(Grid.DEFAULT, false, null).convert(log, original::add);
+            SceneConverter.with(Grid.DEFAULT).build().convert(log, original::add);
             KnowledgeBase knowledge = KnowledgeBase.of(Grid.DEFAULT, original);
             assertEquals(original, knowledge.scenes(), log.toString());
             scenes += original.size();

@@ -47,7 +47,7 @@ class PackedScanTest {
 
     private static List<Scene> scenes(Path log) throws IOException {
         List<Scene> scenes = new ArrayList<>();
-        new SceneConverter(Grid.DEFAULT, false, null).convert(log, scenes::add);
+        SceneConverter.with(Grid.DEFAULT).build().convert(log, scenes::add);
         return scenes;
     }
 

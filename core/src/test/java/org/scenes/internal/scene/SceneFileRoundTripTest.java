@@ -2,6 +2,7 @@ package org.scenes.internal.scene;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -20,6 +21,7 @@ import org.scenes.api.ObjectKind;
 import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
+import org.scenes.api.World;
 
 class SceneFileRoundTripTest {
     @TempDir
@@ -44,6 +46,24 @@ class SceneFileRoundTripTest {
     }
 
     @Test
+    void theGoalieFlagAndScenesWithoutActionSurviveAndOldFilesReadAsNotTheGoalie() throws IOException {
+        SceneFileHeader goalie = SceneFileHeader.of(grid, new SceneSource("Carleton_1.lsf.gz", SceneFixtures.OBSERVER, true));
+        Scene unanswered = new Scene(8, SceneFixtures.OBSERVER, List.of(), List.of());
+        Path file = dir.resolve("goalie.json");
+        SceneFileWriter.write(file, new SceneFile(goalie, List.of(unanswered)));
+        assertTrue(Files.readString(file).contains("\"goalie\":true"));
+        SceneFile read = SceneFileReader.read(file);
+        assertTrue(read.header().source().goalie());
+        assertEquals(List.of(unanswered), read.scenes());
+        assertEquals(ActionType.NONE, read.scenes().get(0).actionType());
+
+        Path old = dir.resolve("old.json");
+        SceneFileWriter.write(old, new SceneFile(header, List.of(unanswered)));
+        assertFalse(Files.readString(old).contains("goalie"), "not written when false, as before it existed");
+        assertFalse(SceneFileReader.read(old).header().source().goalie());
+    }
+
+    @Test
     void seeAgeAndTheTackleFoulFlagSurviveAndOldFilesReadAsAgeZero() throws IOException {
         Scene aged = new Scene(8, SceneFixtures.OBSERVER, List.of(), List.of(Action.tackle(30, true)), null, 1);
         Scene fresh = new Scene(9, SceneFixtures.OBSERVER, List.of(), List.of(Action.tackle(-20, false)));
@@ -58,30 +78,117 @@ class SceneFileRoundTripTest {
     }
 
     @Test
+    void theWorldBlockSurvivesARoundTripAndIsWrittenOnlyWhenAScenesHasOne() throws IOException {
+        World world = new World(-12.34, 5.6, 45.5, -20, 0.12, -0.03, 7312, 0.9, 0, 3.2, -1.05, 1.5, -0.25, 2,
+                List.of(new World.Player(Relation.TEAMMATE, 7, 1, 2, 0), new World.Player(Relation.UNKNOWN, 0, -3, 4.5, 0),
+                        new World.Player(Relation.OPPONENT, 11, 30, -20, 12)),
+                "kick_off_l", 1, 2);
+        World unknown = new World(Double.NaN, Double.NaN, Double.NaN, 0, Double.NaN, Double.NaN, Double.NaN,
+                Double.NaN, -1, Double.NaN, Double.NaN, Double.NaN, Double.NaN, -1, List.of(), "", 0, 0);
+        Scene with = new Scene(8, SceneFixtures.OBSERVER, List.of(), List.of(Action.turn(30)), null, 1, world);
+        Scene lost = new Scene(9, SceneFixtures.OBSERVER, List.of(), List.of(Action.turn(30)), null, 0, unknown);
+        Scene without = new Scene(10, SceneFixtures.OBSERVER, List.of(), List.of(Action.dash(50)));
+        Path file = dir.resolve("world.json");
+        SceneFileWriter.write(file, new SceneFile(header, List.of(with, lost, without)));
+        String text = Files.readString(file);
+        assertTrue(text.startsWith("{\"format\":2"), text);
+        assertEquals(2, text.split("\"world\"", -1).length - 1, text);
+
+        SceneFile read = SceneFileReader.read(file);
+
+        assertEquals(List.of(with, lost, without), read.scenes());
+        assertEquals(2, read.header().format());
+    }
+
+    @Test
+    void aFormatOneFileReadsAsScenesWithoutWorld() throws IOException {
+        Path file = dir.resolve("old.json");
+        Files.writeString(file, "{\"format\": 1, \"grid\": {\"columns\": 5, \"bounds\": [1, 5]}, \"scenes\": [\n"
+                + "{\"cycle\": 1, \"objects\": [], \"actions\": [{\"type\": \"turn\", \"moment\": 10}]}\n]}\n");
+
+        SceneFile read = SceneFileReader.read(file);
+
+        assertEquals(1, read.header().format());
+        assertNull(read.scenes().get(0).world());
+    }
+
+    @Test
+    void formatThreeIsRefusedNamingIt() throws IOException {
+        Path file = dir.resolve("future.json");
+        Files.writeString(file, "{\"format\":3,\"grid\":{\"columns\":5,\"bounds\":[1,5]},\"scenes\":[]}\n");
+
+        SceneFileException error = assertThrows(SceneFileException.class, () -> SceneFileReader.read(file));
+
+        assertTrue(error.getMessage().contains("scene format 3 is newer than this version of scenes reads (up to 2)"),
+                error.getMessage());
+    }
+
+    @Test
     void numbersAreWrittenAsJavaWritesThemAndReadBackEqual() throws IOException {
         // tenths take a shortcut of their own: the text must be Double.toString's all the same
+        // (within what a scene may hold: distances 0 to 1000 m, changes up to 10,000 either way)
         java.util.Random random = new java.util.Random(7);
-        List<Double> values = new java.util.ArrayList<>(List.of(0.1, -0.1, 0.5, -0.5, 99.9, 123456.7, -999999.9,
-                1234567.8, 0.30000000000000004, 1e-5, 2.05, -12.34, 0.001));
+        List<Double> values = new java.util.ArrayList<>(List.of(0.1, -0.1, 0.5, -0.5, 99.9, 9999.9, -9999.9,
+                1234.5, 0.30000000000000004, 1e-5, 2.05, -12.34, 0.001));
         for (int i = 0; i < 2000; i++) {
             values.add(Math.rint(random.nextGaussian() * 1e4) / 10);
             values.add(random.nextGaussian() * 100);
         }
         List<SeenObject> objects = new java.util.ArrayList<>();
         for (double value : values) {
-            objects.add(new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, value, 1, value, Double.NaN,
-                    Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(3, 1)));
+            objects.add(new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, distance(value), 1, value,
+                    Double.NaN, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(3, 1)));
         }
-        Scene scene = new Scene(1, SceneFixtures.OBSERVER, objects, List.of(Action.turn(1)));
+        List<Scene> scenes = new java.util.ArrayList<>();
+        for (int from = 0; from < objects.size(); from += 200) { // a scene holds at most 256 objects
+            scenes.add(new Scene(from, SceneFixtures.OBSERVER, objects.subList(from, Math.min(from + 200, objects.size())),
+                    List.of(Action.turn(1))));
+        }
         Path file = dir.resolve("numbers.json");
-        SceneFileWriter.write(file, new SceneFile(header, List.of(scene)));
+        SceneFileWriter.write(file, new SceneFile(header, scenes));
         String text = Files.readString(file);
         for (double value : values) {
-            String written = value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
-            assertTrue(text.contains("\"dist\":" + written + ",\"dir\":1,\"distChange\":" + written + ","),
-                    value + " written as " + written);
+            assertTrue(text.contains("\"dist\":" + written(distance(value)) + ",\"dir\":1,\"distChange\":" + written(value) + ","),
+                    value + " written as " + written(value));
         }
-        assertEquals(List.of(scene), SceneFileReader.read(file).scenes());
+        assertEquals(scenes, SceneFileReader.read(file).scenes());
+    }
+
+    private static double distance(double value) {
+        return Math.abs(value) % 1000;
+    }
+
+    private static String written(double value) {
+        return value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
+    }
+
+    @Test
+    void anInfiniteValueIsNeverWrittenAsAString() {
+        SeenObject ball = new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, 3, 0,
+                Double.POSITIVE_INFINITY, 0, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(3, 0));
+        Scene scene = new Scene(1, SceneFixtures.OBSERVER, List.of(ball), List.of(Action.turn(1)));
+        Path file = dir.resolve("infinite.json");
+        IllegalArgumentException error = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> SceneFileWriter.write(file, new SceneFile(header, List.of(scene))));
+        assertTrue(error.getMessage().contains("'distChange' = Infinity"), error.getMessage());
+        assertTrue(Files.notExists(file), "nothing written");
+    }
+
+    @Test
+    void aSceneOfMoreObjectsThanASeeCanHoldIsRefusedByTheReader() throws IOException {
+        List<SeenObject> objects = new java.util.ArrayList<>();
+        for (int i = 0; i < 257; i++) {
+            objects.add(new SeenObject(ObjectKind.FLAG, "f c", "", 0, false, Relation.NONE, 10, 0,
+                    Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(10, 0)));
+        }
+        Path file = dir.resolve("crowded.json");
+        SceneFileWriter.write(file, new SceneFile(header, List.of(
+                new Scene(1, SceneFixtures.OBSERVER, objects.subList(0, 256), List.of(Action.turn(1))),
+                new Scene(2, SceneFixtures.OBSERVER, objects, List.of(Action.turn(1))))));
+        SceneFileException error = org.junit.jupiter.api.Assertions.assertThrows(SceneFileException.class,
+                () -> SceneFileReader.read(file));
+        assertTrue(error.getMessage().contains("crowded.json:6") && error.getMessage().contains("at most 256 objects"),
+                error.getMessage());
     }
 
     @Test

@@ -54,6 +54,26 @@ class ValidatorTest {
     }
 
     @Test
+    void scenesWithoutActionAreAClassOfTheirOwn() {
+        // unanswered sees kept by convert: every fourth scene holds no action
+        List<Scene> scenes = new ArrayList<>();
+        for (Scene scene : krislet(4, 400)) {
+            scenes.add(scene.cycle() % 4 == 3 ? new Scene(scene.cycle(), scene.observer(), scene.objects(), List.of())
+                    : scene);
+        }
+        Recognizer recognizer = new Recognizer(KnowledgeBase.of(Grid.DEFAULT, scenes), POLAR, 1);
+        ValidationReport report = Validator.run(recognizer, FIRST, scenes, 1, true, null);
+        assertEquals(100, report.support(ActionType.NONE));
+        // the nearest scene is itself, unless an earlier twin (the same view) holds an action
+        assertTrue(report.truePositives(ActionType.NONE) >= 95, report.truePositives(ActionType.NONE) + " of 100");
+        assertTrue(report.accuracy() >= 0.98, "accuracy " + report.accuracy());
+        ValidationReport answering = Validator.run(recognizer, () -> (nearest, random) -> org.scenes.api.Action.dash(1),
+                scenes, 1, true, null);
+        assertEquals(0, answering.truePositives(ActionType.NONE));
+        assertEquals(0.0, answering.recall(ActionType.NONE));
+    }
+
+    @Test
     void parallelRunsGiveExactlyTheSequentialResults() {
         List<Scene> train = krislet(2, 500);
         List<Scene> test = krislet(3, 300);

@@ -4,6 +4,7 @@ import groovy.lang.GroovyClassLoader;
 import groovy.lang.GroovyCodeSource;
 import groovy.lang.Script;
 import groovy.transform.CompileStatic;
+import groovy.transform.ThreadInterrupt;
 import java.io.IOException;
 import java.nio.charset.MalformedInputException;
 import java.nio.file.Files;
@@ -120,6 +121,8 @@ final class ScriptCompiler {
                 new PrimitiveFieldsCustomizer(),
                 new ScriptShape.Check(ScriptShape.of(base)),
                 new ASTTransformationCustomizer(CompileStatic.class),
+                // loops and methods check the interrupt flag, so ScriptWatch can end a call that never returns
+                new ASTTransformationCustomizer(ThreadInterrupt.class),
                 new ForbiddenCallsCustomizer(),
                 new FastEqualityCustomizer());
         return configuration;

@@ -9,6 +9,7 @@ class ScriptedMetric implements SceneMetric {
     final MetricScript script;
     final String path;
     final String fileName;
+    final ScriptWatch watch = new ScriptWatch();
 
     ScriptedMetric(MetricScript script, String path, String fileName) {
         this.script = script;
@@ -23,12 +24,20 @@ class ScriptedMetric implements SceneMetric {
 
     @Override
     public double distance(Scene query, Scene stored) {
+        watch.enter();
         try {
             return script.distance(query, stored);
         } catch (RuntimeException | StackOverflowError | AssertionError e) {
-            throw ScriptFailure.of(path, fileName, "comparing the query scene of cycle " + query.cycle()
-                    + " with the stored scene of cycle " + stored.cycle(), e);
+            throw ScriptFailure.of(path, fileName, comparing(query, stored), e);
+        } catch (Exception e) { // checked, thrown through Groovy: the watchdog's interruption among them
+            throw watch.failure(e, path, fileName, comparing(query, stored));
+        } finally {
+            watch.exit();
         }
+    }
+
+    private static String comparing(Scene query, Scene stored) {
+        return "comparing the query scene of cycle " + query.cycle() + " with the stored scene of cycle " + stored.cycle();
     }
 
     @Override
@@ -49,19 +58,29 @@ class ScriptedMetric implements SceneMetric {
 
         @Override
         public double[] encode(Scene scene) {
+            watch.enter();
             try {
                 return script.encode(scene);
             } catch (RuntimeException | StackOverflowError | AssertionError e) {
                 throw ScriptFailure.of(path, fileName, "encoding the scene of cycle " + scene.cycle(), e);
+            } catch (Exception e) {
+                throw watch.failure(e, path, fileName, "encoding the scene of cycle " + scene.cycle());
+            } finally {
+                watch.exit();
             }
         }
 
         @Override
         public double distance(double[] query, double[] stored, double bound) {
+            watch.enter();
             try {
                 return script.distance(query, stored, bound);
             } catch (RuntimeException | StackOverflowError | AssertionError e) {
                 throw ScriptFailure.of(path, fileName, "comparing two encoded scenes", e);
+            } catch (Exception e) {
+                throw watch.failure(e, path, fileName, "comparing two encoded scenes");
+            } finally {
+                watch.exit();
             }
         }
 

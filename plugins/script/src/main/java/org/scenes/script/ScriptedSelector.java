@@ -11,6 +11,7 @@ final class ScriptedSelector implements ActionSelector {
     private final SelectorScript script;
     private final String path;
     private final String fileName;
+    private final ScriptWatch watch = new ScriptWatch();
 
     ScriptedSelector(SelectorScript script, String path, String fileName) {
         this.script = script;
@@ -20,12 +21,21 @@ final class ScriptedSelector implements ActionSelector {
 
     @Override
     public Action select(List<Neighbour> nearest, RandomGenerator random) {
+        watch.enter();
         try {
             return script.select(nearest, random);
         } catch (RuntimeException | StackOverflowError | AssertionError e) {
-            throw ScriptFailure.of(path, fileName, "selecting among " + nearest.size() + " neighbours, the nearest "
-                    + "being the stored scene of cycle " + nearest.get(0).scene().cycle(), e);
+            throw ScriptFailure.of(path, fileName, selecting(nearest), e);
+        } catch (Exception e) { // checked, thrown through Groovy: the watchdog's interruption among them
+            throw watch.failure(e, path, fileName, selecting(nearest));
+        } finally {
+            watch.exit();
         }
+    }
+
+    private static String selecting(List<Neighbour> nearest) {
+        return "selecting among " + nearest.size() + " neighbours, the nearest being the stored scene of cycle "
+                + nearest.get(0).scene().cycle();
     }
 
     @Override

@@ -52,6 +52,56 @@ class ScriptRuntimeTest {
     }
 
     @Test
+    void aCallThatNeverReturnsIsEndedAtTheTimeLimitNamingItsLine() throws IOException {
+        String metricPath = write("forever.groovy", """
+                double distance(Scene query, Scene stored) {
+                    double sum = 0
+                    while (true) {
+                        sum += 1
+                    }
+                    return sum
+                }
+                """);
+        String selectorPath = write("stuck.groovy", """
+                Action select(List<Neighbour> nearest, RandomGenerator random) {
+                    for (int i = 0; i >= 0; i = 0) { }
+                    return null
+                }
+                """);
+        java.time.Duration before = ScriptWatch.limit();
+        ScriptWatch.limit(java.time.Duration.ofMillis(300));
+        try {
+            SceneMetric metric = REGISTRY.metric("script:" + metricPath, PluginConfig.DEFAULT);
+            ScriptFailure failure = assertThrows(ScriptFailure.class,
+                    () -> metric.distance(Fixtures.scene(1, null), Fixtures.scene(2, null)));
+            org.junit.jupiter.api.Assertions.assertTrue(failure.getMessage().startsWith(metricPath + ":")
+                    && failure.getMessage().contains("ran longer than 300 ms"), failure.getMessage());
+            org.junit.jupiter.api.Assertions.assertTrue(failure.line() >= 3 && failure.line() <= 5, failure.getMessage());
+            org.junit.jupiter.api.Assertions.assertFalse(Thread.currentThread().isInterrupted(), "the caller goes on");
+            ActionSelector selector = REGISTRY.selector("script:" + selectorPath, PluginConfig.DEFAULT);
+            Neighbour neighbour = new Neighbour(Fixtures.scene(3, Action.dash(50)), 0, 0);
+            ScriptFailure stuck = assertThrows(ScriptFailure.class,
+                    () -> selector.select(List.of(neighbour), new SplittableRandom(1)));
+            org.junit.jupiter.api.Assertions.assertTrue(stuck.getMessage().contains("ran longer than 300 ms"), stuck.getMessage());
+            // a script that returns at once is never stopped, however many calls it makes
+            String quickPath = write("quick.groovy", """
+                    double distance(Scene query, Scene stored) {
+                        double sum = 0
+                        for (int i = 0; i < 100; i++) { sum += i }
+                        return sum
+                    }
+                    """);
+            SceneMetric quick = REGISTRY.metric("script:" + quickPath, PluginConfig.DEFAULT);
+            long deadline = System.nanoTime() + 1_000_000_000L;
+            while (System.nanoTime() < deadline) {
+                assertEquals(4950, quick.distance(Fixtures.scene(1, null), Fixtures.scene(2, null)), 0);
+            }
+        } finally {
+            ScriptWatch.limit(before);
+        }
+    }
+
+    @Test
     void exceptionInAHelperMethodReportsTheHelpersLine() throws IOException {
         String path = write("helper.groovy", """
                 double distance(Scene query, Scene stored) {

@@ -83,7 +83,7 @@ public class ConvertBench {
         try (SceneFileWriter writer = SceneFileWriter.create(sceneFile,
                 SceneFileHeader.of(Grid.DEFAULT, new SceneSource("27 shared logs", null)))) {
             for (Path log : logs) {
-                scenes += new SceneConverter(Grid.DEFAULT, false, null).convert(log, writer::write).scenes();
+                scenes += SceneConverter.with(Grid.DEFAULT).build().convert(log, writer::write).scenes();
             }
             writer.commit();
         }
@@ -94,7 +94,7 @@ public class ConvertBench {
     public long gzipLogs(Blackhole sink) throws IOException {
         long scenes = 0;
         for (Path log : logs) {
-            scenes += new SceneConverter(Grid.DEFAULT, false, null).convert(log, sink::consume).scenes();
+            scenes += SceneConverter.with(Grid.DEFAULT).build().convert(log, sink::consume).scenes();
         }
         return scenes;
     }
@@ -104,7 +104,7 @@ public class ConvertBench {
         long scenes = 0;
         for (int i = 0; i < texts.size(); i++) {
             try (LogReader reader = LogReader.read(logs.get(i), new ByteArrayInputStream(texts.get(i)))) {
-                scenes += new SceneConverter(Grid.DEFAULT, false, null).convert(reader, sink::consume, b -> { }).scenes();
+                scenes += SceneConverter.with(Grid.DEFAULT).build().convert(reader, sink::consume, b -> { }).scenes();
             }
         }
         return scenes;

@@ -109,7 +109,7 @@ public class BallGoalIndexBench {
 
     private static List<Scene> convert(Path log) throws IOException {
         List<Scene> converted = new ArrayList<>();
-        new SceneConverter(Grid.DEFAULT, false, null).convert(log, converted::add);
+        SceneConverter.with(Grid.DEFAULT).build().convert(log, converted::add);
         return converted;
     }
 

@@ -113,7 +113,7 @@ final class BenchSets {
         Path log = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "krislet", "classic-game1",
                 player + ".lsf.gz");
         try {
-            new SceneConverter(Grid.DEFAULT, false, null).convert(log, sink);
+            SceneConverter.with(Grid.DEFAULT).build().convert(log, sink);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }

@@ -69,7 +69,7 @@ public class CondensedBench {
             logs.forEach(sorted::add);
             sorted.sort(null);
             for (Path log : sorted) {
-                new SceneConverter(Grid.DEFAULT, false, null).convert(log, scenes::add);
+                SceneConverter.with(Grid.DEFAULT).build().convert(log, scenes::add);
             }
         } catch (IOException e) {
             throw new UncheckedIOException(e);

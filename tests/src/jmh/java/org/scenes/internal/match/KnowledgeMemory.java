@@ -97,7 +97,7 @@ public final class KnowledgeMemory {
         }
         KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
         for (Path log : logs) {
-            new SceneConverter(Grid.DEFAULT, false, null).convert(log, builder::add);
+            SceneConverter.with(Grid.DEFAULT).build().convert(log, builder::add);
         }
         return builder.build();
     }

@@ -88,7 +88,7 @@ public class SceneFileBench {
         data = new ArrayList<>();
         if (source.startsWith("krislet")) {
             Path game = Path.of(System.getProperty("scenes.shared", "../../shared"), "data", "krislet", "classic-game1");
-            SceneConverter converter = new SceneConverter(Grid.DEFAULT, false, null);
+            SceneConverter converter = SceneConverter.with(Grid.DEFAULT).build();
             String prefix = source.equals("krislet-player") ? "Carleton_1." : "";
             try (Stream<Path> logs = Files.list(game)) {
                 for (Path log : logs.filter(p -> p.getFileName().toString().startsWith(prefix)

@@ -47,7 +47,9 @@ public final class BodyVoteSelectorProvider implements SelectorProvider {
             Map<String, Action> first = new HashMap<>();
             for (Neighbour neighbour : nearest) {
                 Action body = ActionLabel.bodyAction(neighbour.scene().actions());
-                double weight = body == null ? 0 : weights.weight(body.type());
+                // a scene without any action (an unanswered see, kept by convert) votes for sending nothing
+                double weight = body != null ? weights.weight(body.type())
+                        : neighbour.scene().actions().isEmpty() ? weights.weight(org.scenes.api.ActionType.NONE) : 0;
                 if (weight <= 0) {
                     continue;
                 }

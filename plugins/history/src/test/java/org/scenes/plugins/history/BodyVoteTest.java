@@ -39,4 +39,16 @@ class BodyVoteTest {
         assertEquals(Action.turn(30), noDash.select(nearest, new SplittableRandom(1)));
         assertNull(noDash.select(List.of(neighbour(0, Action.dash(80))), new SplittableRandom(1)));
     }
+
+    @Test
+    void scenesWithoutActionVoteForSendingNothing() {
+        ActionSelector vote = new BodyVoteSelectorProvider().create(PluginConfig.DEFAULT);
+        Neighbour unanswered1 = new Neighbour(new org.scenes.api.Scene(7, null, List.of(), List.of()), 7, 7);
+        Neighbour unanswered2 = new Neighbour(new org.scenes.api.Scene(8, null, List.of(), List.of()), 8, 8);
+        List<Neighbour> nearest = List.of(neighbour(0, Action.dash(80)), unanswered1, unanswered2);
+        assertNull(vote.select(nearest, new SplittableRandom(1)), "two unanswered sees outvote one dash");
+        ActionSelector noNone = new BodyVoteSelectorProvider().create(PluginConfig.DEFAULT
+                .withActionWeights(ActionWeights.parse("none=0")));
+        assertEquals(Action.dash(80), noNone.select(nearest, new SplittableRandom(1)));
+    }
 }

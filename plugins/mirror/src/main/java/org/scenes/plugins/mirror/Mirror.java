@@ -10,6 +10,7 @@ import org.scenes.api.Grid;
 import org.scenes.api.ObjectKind;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
+import org.scenes.api.World;
 
 /**
  * The mirror image of a scene: the same situation with left and right exchanged, as if the
@@ -19,7 +20,8 @@ import org.scenes.api.SeenObject;
  * and {@code f g r b}), which is what lies to the player's left and right after the reflection;
  * goals, the ball and players keep their names. Commands are mirrored too: turn moments,
  * neck angles, kick, dash and catch directions are negated, a move's y is negated. Cells are
- * those of the mirrored directions in the default grid (other grids are refused).
+ * those of the mirrored directions in the default grid (other grids are refused). A world model
+ * is reflected across the pitch's long axis.
  */
 public final class Mirror {
     /** Mirrored flag and line names, made once each: mirror:match mirrors every query and what it finds. */
@@ -35,7 +37,17 @@ public final class Mirror {
         }
         List<Action> actions = scene.actions().stream().map(Mirror::mirror).toList();
         return new Scene(scene.cycle(), scene.observer(), objects, actions,
-                scene.previous() == null ? null : of(scene.previous()), scene.seeAge());
+                scene.previous() == null ? null : of(scene.previous()), scene.seeAge(),
+                scene.world() == null ? null : mirror(scene.world()));
+    }
+
+    /** The world model reflected across the pitch's long axis: y, velocities across and directions negated. */
+    static World mirror(World w) {
+        List<World.Player> players = w.players().stream()
+                .map(p -> new World.Player(p.relation(), p.unum(), p.x(), -p.y(), p.age())).toList();
+        return new World(w.x(), -w.y(), -w.body(), -w.neck(), w.vx(), -w.vy(), w.stamina(), w.effort(), w.age(),
+                w.ballX(), -w.ballY(), w.ballVx(), -w.ballVy(), w.ballAge(), players, w.playMode(), w.ownScore(),
+                w.opponentScore());
     }
 
     static SeenObject mirror(SeenObject object) {

@@ -24,7 +24,7 @@ class RecallRealDataTest {
     @RequiresSharedData
     void aRealGameRemembersOutOfViewObjectsOnceEachAndKeepsWhatWasSeen() throws IOException {
         List<Scene> scenes = new ArrayList<>();
-        new SceneConverter(Grid.DEFAULT, false, null)
+        SceneConverter.with(Grid.DEFAULT).build()
                 .convert(SharedData.resolve("krislet/classic-game2/Carleton_4.lsf.gz"), scenes::add);
         SceneTransform recall = PluginRegistry.load().transform("recall:10", PluginConfig.DEFAULT);
         long rememberedBalls = 0;

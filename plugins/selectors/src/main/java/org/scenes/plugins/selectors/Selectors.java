@@ -17,7 +17,9 @@ import org.scenes.api.SelectorProvider;
 
 /**
  * The built-in selectors. A neighbour is usable when it holds a primary action whose type has
- * a positive action weight. Parameters come from the chosen neighbour ({@code params=copy}) or
+ * a positive action weight, or holds no action (a see its player left unanswered, kept by
+ * {@code convert --unanswered keep}) while {@code none} has a positive weight: choosing it is
+ * choosing to send nothing, returned as null. Parameters come from the chosen neighbour ({@code params=copy}) or
  * are averaged over the usable neighbours of the chosen type ({@code params=average}).
  */
 public final class Selectors {
@@ -45,8 +47,7 @@ public final class Selectors {
     }
 
     static boolean usable(Neighbour neighbour, ActionWeights weights) {
-        Action action = neighbour.scene().primaryAction();
-        return action != null && weights.weight(action.type()) > 0;
+        return weights.weight(neighbour.scene().actionType()) > 0;
     }
 
     static List<Neighbour> usable(List<Neighbour> nearest, ActionWeights weights) {
@@ -62,14 +63,14 @@ public final class Selectors {
     /** The action of {@code chosen}, its parameters averaged over same-type neighbours when asked. */
     static Action withParameters(Neighbour chosen, List<Neighbour> usable, Params params) {
         Action action = chosen.scene().primaryAction();
-        if (params == Params.COPY) {
+        if (params == Params.COPY || action == null) {
             return action;
         }
         double[] sum = new double[2];
         int[] count = new int[2];
         for (Neighbour neighbour : usable) {
             Action other = neighbour.scene().primaryAction();
-            if (other.type() != action.type()) {
+            if (other == null || other.type() != action.type()) {
                 continue;
             }
             for (int p = 0; p < 2; p++) {
@@ -90,13 +91,13 @@ public final class Selectors {
         }
         double[] score = new double[ActionType.values().length];
         for (Neighbour neighbour : usable) {
-            ActionType type = neighbour.scene().primaryAction().type();
+            ActionType type = neighbour.scene().actionType();
             score[type.ordinal()] += weights.weight(type);
         }
         Neighbour best = null;
         for (Neighbour neighbour : usable) { // nearest first, so the first of a tied type wins
-            ActionType type = neighbour.scene().primaryAction().type();
-            if (best == null || score[type.ordinal()] > score[best.scene().primaryAction().type().ordinal()]) {
+            ActionType type = neighbour.scene().actionType();
+            if (best == null || score[type.ordinal()] > score[best.scene().actionType().ordinal()]) {
                 best = neighbour;
             }
         }

@@ -40,8 +40,25 @@ class SelectorsTest {
     }
 
     @Test
+    void aNeighbourWithoutActionIsChosenAsNoActionUnlessNoneWeighsNothing() {
+        // an unanswered see kept by convert --unanswered keep: the teacher waited there
+        List<Neighbour> nearest = neighbours(null, Action.dash(30), null, Action.turn(5));
+        assertNull(selector("first-valid", Map.of(), ActionWeights.DEFAULT).select(nearest, new SplittableRandom(1)));
+        assertNull(selector("vote", Map.of(), ActionWeights.DEFAULT).select(nearest, new SplittableRandom(1)),
+                "none has two votes against one each");
+        assertNull(selector("vote", Map.of("params", "average"), ActionWeights.DEFAULT)
+                .select(nearest, new SplittableRandom(1)));
+        assertEquals(Action.dash(30), selector("vote", Map.of(), ActionWeights.parse("none=0"))
+                .select(nearest, new SplittableRandom(1)));
+        assertEquals(Action.dash(30), selector("vote", Map.of("params", "average"), ActionWeights.parse("none=0.4"))
+                .select(neighbours(null, Action.dash(30), Action.dash(30)), new SplittableRandom(1)));
+        assertEquals(Action.dash(30), selector("first-valid", Map.of(), ActionWeights.parse("none=0"))
+                .select(nearest, new SplittableRandom(1)));
+    }
+
+    @Test
     void firstValidSkipsMissingAndZeroWeightActions() {
-        ActionSelector first = selector("first-valid", Map.of(), ActionWeights.parse("turn_neck=0"));
+        ActionSelector first = selector("first-valid", Map.of(), ActionWeights.parse("none=0,turn_neck=0"));
         assertEquals(Action.dash(30), first.select(neighbours(null, Action.turnNeck(10), Action.dash(30), Action.turn(5)),
                 new SplittableRandom(1)));
         assertNull(first.select(neighbours(null, Action.turnNeck(10)), new SplittableRandom(1)));

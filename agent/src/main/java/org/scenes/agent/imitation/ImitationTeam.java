@@ -1,0 +1,179 @@
+package org.scenes.agent.imitation;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Objects;
+import java.util.TreeMap;
+import java.util.function.Function;
+import java.util.function.Supplier;
+import org.scenes.agent.BrainFactory;
+import org.scenes.api.Action;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionType;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneTransform;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
+import org.scenes.internal.scene.SceneFileReader;
+import org.scenes.internal.scene.SceneSource;
+
+/**
+ * What an imitation team knows, by role: the whole team's scenes, and for each recorded player
+ * (its uniform number, from the scene files' {@code source}) its own: its <em>counterpart</em>'s
+ * scenes, its goalie flag and the kick-off moves it sent. The imitating player with uniform
+ * number N plays on the knowledge of the recorded player N ({@link Knowledge#COUNTERPART}), or on
+ * the team's when there is none or when asked ({@link Knowledge#TEAM}); either way it takes its
+ * kick-off moves from its counterpart and inits as goalie when its counterpart was the goalie.
+ */
+public final class ImitationTeam {
+    /** Whose scenes each imitating player matches against. */
+    public enum Knowledge {
+        /** Every player: the scenes of the whole team. */
+        TEAM,
+        /** Each player: the scenes of the recorded player with its uniform number, else the team's. */
+        COUNTERPART;
+
+        public String key() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+
+        /** The knowledge with this key ({@code team}, {@code counterpart}), or null. */
+        public static Knowledge fromKey(String key) {
+            for (Knowledge knowledge : values()) {
+                if (knowledge.key().equals(key)) {
+                    return knowledge;
+                }
+            }
+            return null;
+        }
+    }
+
+    /**
+     * One recorded player's role.
+     *
+     * @param recognizer the nearest scenes among its own, or null when the team's are used
+     * @param moves the first {@code move} of each run of moves in its scenes, in order: where it
+     *              placed itself before kick-offs (empty when its scenes hold none)
+     */
+    record Counterpart(int unum, boolean goalie, Recognizer recognizer, List<Action> moves) {
+        Counterpart {
+            moves = List.copyOf(moves);
+        }
+    }
+
+    private final Recognizer team;
+    private final Map<Integer, Counterpart> counterparts;
+    private final Knowledge knowledge;
+
+    private ImitationTeam(Recognizer team, Map<Integer, Counterpart> counterparts, Knowledge knowledge) {
+        this.team = Objects.requireNonNull(team, "team");
+        this.counterparts = Collections.unmodifiableMap(new TreeMap<>(counterparts));
+        this.knowledge = Objects.requireNonNull(knowledge, "knowledge");
+    }
+
+    /** A team without roles: every player matches {@code recognizer}'s scenes, as one pool. */
+    public static ImitationTeam of(Recognizer recognizer) {
+        return new ImitationTeam(recognizer, Map.of(), Knowledge.TEAM);
+    }
+
+    /**
+     * Reads the scene files: the team's knowledge base of all of them and, by the uniform number
+     * in each file's {@code source}, one per recorded player (counterpart knowledge only); files
+     * with no uniform number (merged ones) count for the team only.
+     *
+     * @param recognizers makes the recognizer (metric, k) of a knowledge base
+     */
+    public static ImitationTeam load(List<Path> files, Supplier<List<SceneTransform>> transforms,
+                                     Function<KnowledgeBase, Recognizer> recognizers, Knowledge knowledge) {
+        Map<Integer, List<Path>> byUnum = new TreeMap<>();
+        Map<Integer, Boolean> goalies = new TreeMap<>();
+        Map<Integer, List<Action>> moves = new TreeMap<>();
+        for (Path file : files) {
+            try (SceneFileReader reader = SceneFileReader.open(file)) {
+                SceneSource source = reader.header().source();
+                int unum = source.observer().uniformNumber();
+                if (unum > 0) {
+                    byUnum.computeIfAbsent(unum, u -> new ArrayList<>()).add(file);
+                    goalies.merge(unum, source.goalie(), Boolean::logicalOr);
+                    // the recorded moves, before any transform (a mirror would add moves never sent)
+                    moves.computeIfAbsent(unum, u -> new ArrayList<>()).addAll(kickOffMoves(() -> reader));
+                }
+            }
+        }
+        Recognizer team = recognizers.apply(KnowledgeBase.load(files, transforms));
+        Map<Integer, Counterpart> counterparts = new TreeMap<>();
+        for (Map.Entry<Integer, List<Path>> entry : byUnum.entrySet()) {
+            int unum = entry.getKey();
+            Recognizer recognizer = knowledge == Knowledge.COUNTERPART
+                    ? recognizers.apply(KnowledgeBase.load(entry.getValue(), transforms)) : null;
+            counterparts.put(unum, new Counterpart(unum, goalies.get(unum), recognizer, moves.get(unum)));
+        }
+        return new ImitationTeam(team, counterparts, knowledge);
+    }
+
+    /** The first move of each run of scenes whose primary action is a move. */
+    static List<Action> kickOffMoves(Iterable<Scene> scenes) {
+        List<Action> moves = new ArrayList<>();
+        boolean inRun = false;
+        for (Scene scene : scenes) {
+            boolean move = scene.actionType() == ActionType.MOVE;
+            if (move && !inRun) {
+                moves.add(scene.primaryAction());
+            }
+            inRun = move;
+        }
+        return moves;
+    }
+
+    /** Brains for the players, each finding its counterpart by the uniform number the server gives it. */
+    public BrainFactory brains(Supplier<ActionSelector> selectors, Supplier<List<SceneTransform>> transforms,
+                               ImitationBrain.Guards guards) {
+        return new BrainFactory() {
+            @Override
+            public org.scenes.agent.Brain create(String teamName, java.util.Random random) {
+                return new ImitationBrain(teamName, ImitationTeam.this, selectors.get(), transforms, random, guards);
+            }
+
+            @Override
+            public boolean goalie(int unum) {
+                Counterpart counterpart = counterparts.get(unum);
+                return counterpart != null && counterpart.goalie();
+            }
+        };
+    }
+
+    /** The team's recognizer, for players before their number is known and those without a counterpart. */
+    Recognizer team() {
+        return team;
+    }
+
+    /** The recorded player with this uniform number, or null. */
+    Counterpart counterpart(int unum) {
+        return counterparts.get(unum);
+    }
+
+    /** What player {@code unum} matches against: its counterpart's scenes when asked and recorded, else the team's. */
+    Recognizer recognizer(int unum) {
+        Counterpart counterpart = counterparts.get(unum);
+        return counterpart != null && counterpart.recognizer() != null ? counterpart.recognizer() : team;
+    }
+
+    /** Scenes in the team's knowledge base. */
+    public int scenes() {
+        return team.knowledge().size();
+    }
+
+    /** E.g. "counterpart knowledge for 11 players (goalie 1)", for the user. */
+    public String describe() {
+        if (counterparts.isEmpty()) {
+            return "team knowledge (no uniform numbers in the files)";
+        }
+        List<Integer> goalies = counterparts.values().stream().filter(Counterpart::goalie).map(Counterpart::unum).toList();
+        return knowledge.key() + " knowledge, " + counterparts.size() + " recorded players"
+                + (goalies.isEmpty() ? "" : " (goalie " + goalies.get(0) + ")");
+    }
+}

@@ -1,0 +1,126 @@
+package org.scenes.agent.imitation;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scenes.agent.Brain;
+import org.scenes.agent.BrainFactory;
+import org.scenes.api.Action;
+import org.scenes.api.ActionSelector;
+import org.scenes.api.Grid;
+import org.scenes.api.Observer;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
+import org.scenes.api.Side;
+import org.scenes.internal.match.Recognizer;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.See;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileHeader;
+import org.scenes.internal.scene.SceneFileWriter;
+import org.scenes.internal.scene.SceneSource;
+
+/** Roles: each imitating player plays on its counterpart's scenes and takes its kick-off moves. */
+class ImitationTeamTest {
+    @TempDir
+    Path directory;
+
+    private static final ActionSelector FIRST = (nearest, random) -> nearest.get(0).scene().primaryAction();
+
+    private static List<SeenObject> ballAt(double distance) {
+        See see = (See) new MessageParser().parse("(see 1 ((b) " + distance + " 0))");
+        return org.scenes.internal.convert.SceneConverter.seenObjects(see, Observer.UNKNOWN, Grid.DEFAULT);
+    }
+
+    /** A recorded player's file: a kick-off move, then its answer to a ball 10 m ahead. */
+    private Path recorded(int unum, boolean goalie, Action move, Action answer) throws IOException {
+        Observer player = new Observer("Teal", Side.LEFT, unum);
+        Path file = directory.resolve("Teal_" + unum + ".json");
+        SceneFileWriter.write(file, new SceneFile(SceneFileHeader.of(Grid.DEFAULT,
+                new SceneSource("Teal_" + unum + ".lsf", player, goalie)), List.of(
+                new Scene(0, player, ballAt(30), List.of(move)),
+                new Scene(1, player, ballAt(30), List.of(move)),
+                new Scene(5, player, ballAt(10), List.of(answer)))));
+        return file;
+    }
+
+    private ImitationTeam team(ImitationTeam.Knowledge knowledge) throws IOException {
+        List<Path> files = List.of(recorded(1, true, Action.move(-50, 0), Action.kick(100, 0)),
+                recorded(2, false, Action.move(-20, 10), Action.turn(30)));
+        return ImitationTeam.load(files, List::of,
+                knowledge1 -> new Recognizer(knowledge1, () -> ImitationBrainTest.BALL, 1), knowledge);
+    }
+
+    /** What the player with this number sends: at its player_type, then to a ball 10 m ahead, then to one 30 m ahead. */
+    private static List<String> play(BrainFactory brains, int unum) {
+        Brain brain = brains.create("Teal", new Random(1));
+        List<String> sent = new ArrayList<>();
+        brain.receive("(init l " + unum + " before_kick_off)", sent::add);
+        brain.receive("(player_type (id 0))", sent::add);
+        brain.receive("(see 50 ((b) 10 0))", sent::add);
+        brain.receive("(see 51 ((b) 30 0))", sent::add);
+        return sent;
+    }
+
+    @Test
+    void eachPlayerPlaysOnItsCounterpartsScenesAndMovesToItsSpot() throws IOException {
+        BrainFactory brains = team(ImitationTeam.Knowledge.COUNTERPART).brains(() -> FIRST, List::of,
+                ImitationBrain.Guards.OFF);
+        assertEquals(List.of("(move -50 0)", "(kick 100 0)", "(move -50 0)"), play(brains, 1));
+        assertEquals(List.of("(move -20 10)", "(turn 30)", "(move -20 10)"), play(brains, 2));
+        assertTrue(brains.goalie(1), "the recorded goalie's imitator inits as goalie");
+        assertFalse(brains.goalie(2));
+        List<String> stranger = play(brains, 7);
+        assertTrue(stranger.get(0).startsWith("(move -"), "no counterpart: a random spot, as before");
+        assertEquals("(kick 100 0)", stranger.get(1), "no counterpart: the team's scenes, nearest first");
+    }
+
+    @Test
+    void withTheTeamsKnowledgeAMoveFromAnotherPlayersSceneBecomesTheCounterpartsOwn() throws IOException {
+        BrainFactory brains = team(ImitationTeam.Knowledge.TEAM).brains(() -> FIRST, List::of,
+                ImitationBrain.Guards.OFF);
+        // the nearest scene to a far ball is player 1's move: player 2 goes to its own spot instead
+        assertEquals(List.of("(move -20 10)", "(kick 100 0)", "(move -20 10)"), play(brains, 2));
+        assertEquals(List.of("(move -50 0)", "(kick 100 0)", "(move -50 0)"), play(brains, 1));
+    }
+
+    @Test
+    void theKickOffMoveIsRepeatedAfterGoalsOnlyWhenTheCounterpartMovedDuringTheGame() throws IOException {
+        Observer player = new Observer("Teal", Side.LEFT, 3);
+        Path still = directory.resolve("Teal_3.json");
+        SceneFileWriter.write(still, new SceneFile(SceneFileHeader.of(Grid.DEFAULT, new SceneSource("l", player)),
+                List.of(new Scene(5, player, ballAt(10), List.of(Action.dash(50))))));
+        ImitationTeam team = ImitationTeam.load(List.of(recorded(2, false, Action.move(-20, 10), Action.turn(30)), still),
+                List::of, knowledge -> new Recognizer(knowledge, () -> ImitationBrainTest.BALL, 1),
+                ImitationTeam.Knowledge.COUNTERPART);
+        BrainFactory brains = team.brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF);
+        Brain moved = brains.create("Teal", new Random(1));
+        moved.receive("(init l 2 before_kick_off)", s -> { });
+        Brain neverMoved = brains.create("Teal", new Random(1));
+        neverMoved.receive("(init l 3 before_kick_off)", s -> { });
+        assertTrue(moved.repeatsKickOffMove());
+        assertFalse(neverMoved.repeatsKickOffMove(), "its teacher never moved after a goal: neither does it");
+        Brain withoutRoles = new ImitationBrain("Teal", team.recognizer(3), FIRST, List::of, new Random(1));
+        assertTrue(withoutRoles.repeatsKickOffMove(), "a brain without roles keeps the runtime's repeat");
+    }
+
+    @Test
+    void kickOffMovesAreTheFirstOfEachRunOfMoves() {
+        Observer player = new Observer("Teal", Side.LEFT, 3);
+        List<Scene> scenes = new ArrayList<>();
+        for (Action action : List.of(Action.move(-1, 1), Action.move(-2, 2), Action.dash(10), Action.move(-3, 3),
+                Action.turn(5), Action.move(-1, 1))) {
+            scenes.add(new Scene(scenes.size(), player, List.of(), List.of(action)));
+        }
+        assertEquals(List.of(Action.move(-1, 1), Action.move(-3, 3), Action.move(-1, 1)),
+                ImitationTeam.kickOffMoves(scenes));
+    }
+}

@@ -1,0 +1,189 @@
+package org.scenes.evaluate;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scenes.agent.BrainFactory;
+import org.scenes.agent.sim.GameResult;
+import org.scenes.agent.sim.GameSetup;
+import org.scenes.agent.sim.Simulator;
+import org.scenes.agent.teacher.Teachers;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.protocol.CommandType;
+
+/** The figures of the server's logs, checked against the simulator's own games. */
+class LogFiguresTest {
+    private static final Pattern RECEIVED = Pattern.compile("^(\\d+),(\\d+)\tRecv Teal_(\\d+): (.*)$");
+    private static final Pattern BODY = Pattern.compile("\\((dash|turn|kick|catch|tackle|move)[ )]");
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void commandCountsFromTheCommandLogAreThoseTheServerLogged() throws IOException {
+        GameSetup setup = new GameSetup(new GameSetup.Team("Teal", 3, Teachers.byName("krislet")),
+                new GameSetup.Team("Amber", 3, Teachers.byName("krislet")), 600, 5, null);
+        Simulator simulator = new Simulator(setup).recordTo(dir);
+        List<GameFrame> steps = new ArrayList<>();
+        simulator.run(time -> { }, steps::add);
+        Path gameLog = simulator.recorded().get(0);
+        Path commandLog = simulator.recorded().get(1);
+
+        // the truth, from the .rcl's text and the simulator's frame of every step: a player's first
+        // body command of the step that left each time (its last stoppage), the game not yet over
+        Map<Integer, Integer> lastStoppage = new HashMap<>();
+        steps.forEach(frame -> lastStoppage.merge(frame.time(), 0, (a, b) -> a + 1));
+        int last = steps.get(steps.size() - 1).time();
+        Map<String, String> executed = new HashMap<>();
+        for (String line : Files.readAllLines(commandLog)) {
+            Matcher m = RECEIVED.matcher(line);
+            Matcher body = m.matches() ? BODY.matcher(m.group(4)) : null;
+            int time = m.matches() ? Integer.parseInt(m.group(1)) : -1;
+            if (body != null && body.find() && time < last
+                    && Integer.parseInt(m.group(2)) == lastStoppage.get(time)) {
+                executed.putIfAbsent(m.group(3) + "@" + time, body.group(1));
+            }
+        }
+        long[] expected = new long[ExecutedCommands.TYPES.size()];
+        executed.values().forEach(type -> expected[ExecutedCommands.TYPES.indexOf(CommandType.fromKey(type))]++);
+        assertTrue(expected[0] > 500 && expected[1] > 100, "a game of dashes and turns: " + List.of(expected[0], expected[1]));
+
+        // with a frame a step, the command log's commands are exactly those
+        PlayedGame stepByStep = new PlayedGame(PlayedGame.Role.TEACHER, Side.LEFT, 1,
+                new GameResult(0, 0, 0, 0, last, steps.size(), List.of()), steps, List.of(),
+                ExecutedCommands.fromCommandLog(steps, Side.LEFT, "Teal", commandLog));
+        LogFigures figures = LogFigures.of(stepByStep);
+        for (int i = 0; i < expected.length; i++) {
+            assertEquals(expected[i], figures.executed()[i], ExecutedCommands.TYPES.get(i) + " executed");
+        }
+        // and the frames' counters tell the same dashes and turns (they count every executed one)
+        LogFigures fromCounters = LogFigures.of(new PlayedGame(PlayedGame.Role.TEACHER, Side.LEFT, 1,
+                stepByStep.result(), steps, List.of()));
+        assertEquals(figures.executed()[0], fromCounters.executed()[0], "dashes");
+        assertEquals(figures.executed()[1], fromCounters.executed()[1], "turns");
+        assertTrue(fromCounters.executed()[2] <= figures.executed()[2], "kicks that reached the ball are among those sent");
+
+        // the recorded game log keeps a frame a time: the same counts but at the ends of pauses
+        ServerLogGames.Game game = ServerLogGames.read(gameLog);
+        assertEquals(commandLog, game.commandLog(), "the .rcl beside the .rcg is found");
+        PlayedGame played = ServerLogGames.played(PlayedGame.Role.TEACHER, List.of(game), "Teal").get(0);
+        assertEquals(ExecutedCommands.Source.COMMAND_LOG, played.executed().source());
+        LogFigures fromLogs = LogFigures.of(played);
+        for (int i = 0; i < expected.length; i++) {
+            assertEquals(expected[i], fromLogs.executed()[i], 3 + expected[i] / 100.0, ExecutedCommands.TYPES.get(i)
+                    + " executed, from the .rcg and .rcl");
+        }
+        assertEquals(fromLogs.kicks(), played.result().kicksLeft(), "the result's kicks are the counters'");
+        assertEquals(fromCounters.kicks(), fromLogs.kicks());
+    }
+
+    @Test
+    void aTeamThatStandsStillHasFiguresOneCanWorkOut() throws IOException {
+        // the right team never kicks off: the second half is one long kick_off_r, no play on
+        GameSetup setup = new GameSetup(new GameSetup.Team("Teal", 3, STATUES), new GameSetup.Team("Amber", 3, MUTE),
+                400, 3, null);
+        Simulator simulator = new Simulator(setup).recordTo(dir);
+        simulator.run(time -> { });
+        PlayedGame game = ServerLogGames.played(PlayedGame.Role.TEACHER,
+                List.of(ServerLogGames.read(simulator.recorded().get(0))), "Teal").get(0);
+        LogFigures figures = LogFigures.of(game);
+        GameFigures frameFigures = GameFigures.of(game);
+        // the ball never leaves the centre spot: player 1 half a metre from it, 2 and 3 at (-10, -+20)
+        for (GameFrame frame : game.frames()) {
+            assertEquals(0, Math.hypot(frame.ball().x(), frame.ball().y()), 1e-9, "the ball at " + frame.time());
+        }
+        assertEquals(1.0 / 3, figures.nearBall(), 1e-12);
+        assertEquals(1.0, figures.onPitch(), 1e-12);
+        assertEquals((0.5 + 2 * Math.hypot(10, 20)) / 3, frameFigures.ballDistance(), 1e-9);
+        // every play-on step of every player lies in a long run of commands that change nothing
+        assertEquals(1.0, figures.stuckShare(), 1e-12);
+        // the left team kicked off once and took it; the right team never took its one
+        assertEquals(1, figures.kickOffs());
+        assertEquals(1, figures.kickOffsTaken());
+        PlayedGame right = ServerLogGames.played(PlayedGame.Role.TEACHER,
+                List.of(ServerLogGames.read(simulator.recorded().get(0))), "Amber").get(0);
+        assertEquals(Side.RIGHT, right.side());
+        LogFigures rightFigures = LogFigures.of(right);
+        assertEquals(1, rightFigures.kickOffs());
+        assertEquals(0, rightFigures.kickOffsTaken());
+        assertEquals(0, rightFigures.executed()[0] + rightFigures.executed()[1] + rightFigures.executed()[2]);
+        // one kick an answered see by player 1, turns by the others; all repeats after the first
+        long commands = figures.executed()[0] + figures.executed()[1] + figures.executed()[2];
+        assertEquals(0, figures.executed()[0], "no dash");
+        assertTrue(figures.executed()[2] > 0 && figures.executed()[1] > figures.executed()[2]);
+        assertEquals(3.0 / commands, 1 - figures.repeatShare(), 1e-12, "a run per player");
+        assertEquals(commands / 3.0, figures.runLength(), 1e-12);
+        assertTrue(Double.isNaN(figures.kickAngle()), "kicks of no power send the ball nowhere");
+        assertEquals(figures.kicks(), game.result().kicksLeft());
+        assertNotNull(figures.positions()[1]);
+        assertEquals(-0.5, figures.positions()[1][0], 1e-9);
+        assertEquals(-10, figures.positions()[3][0], 1e-9);
+        assertEquals(20, Math.abs(figures.positions()[3][1]), 1e-9);
+    }
+
+    @Test
+    void kickDirectionsAreMeasuredTowardsTheGoalTheTeamAttacks() {
+        // a kick from (10, 5): the left team aims at (52.5, 0), the right team at (-52.5, 0)
+        assertEquals(0, kickAngle(Side.LEFT, 42.5, -5), 1e-9);
+        assertEquals(0, kickAngle(Side.RIGHT, -62.5, -5), 1e-9);
+        assertEquals(180, kickAngle(Side.RIGHT, 62.5, 5), 1e-9);
+        assertEquals(90, kickAngle(Side.LEFT, 5, 42.5), 1e-9);
+    }
+
+    /** The kick angle of one kick from (10, 5) that sends the ball along (vx, vy), by a player of {@code side}. */
+    private static double kickAngle(Side side, double vx, double vy) {
+        List<GameFrame> frames = List.of(kickFrame(side, 1, 0, 0, 0), kickFrame(side, 2, 0, vx / 100, vy / 100));
+        PlayedGame game = new PlayedGame(PlayedGame.Role.TEACHER, side, 1, new GameResult(0, 0, 0, 0, 2, 2, List.of()),
+                frames, List.of());
+        LogFigures figures = LogFigures.of(game);
+        assertEquals(1, figures.kicks());
+        return figures.kickAngle();
+    }
+
+    private static GameFrame kickFrame(Side side, int time, int kicks, double vx, double vy) {
+        org.scenes.internal.gamelog.PlayerState player = new org.scenes.internal.gamelog.PlayerState(side, 1, 0, 1,
+                10.5, 5, 0, 0, 0, 0, 'h', 90, 8000, 1, 1, Double.NaN,
+                new org.scenes.internal.gamelog.PlayerState.Counts(kicks + time - 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0));
+        return new GameFrame(time, "play_on", "Teal", "Amber", 0, 0, new GameFrame.BallState(10, 5, vx, vy),
+                List.of(player));
+    }
+
+    /** Players that move to the same spots and then do nothing. */
+    private static final BrainFactory MUTE = (team, random) -> (message, send) -> {
+        if (message.startsWith("(init ")) {
+            int unum = Integer.parseInt(message.split(" ")[2]);
+            send.accept(unum == 1 ? "(move -12 0)" : "(move -10 " + (unum == 2 ? -20 : 20) + ")");
+        }
+    };
+
+    /**
+     * Players that move to a spot once, then answer every see: number 1 (beside the centre spot)
+     * with a kick of no power, the others with a turn of nothing.
+     */
+    private static final BrainFactory STATUES = (team, random) -> new org.scenes.agent.Brain() {
+        private int unum;
+
+        @Override
+        public void receive(String message, java.util.function.Consumer<String> send) {
+            if (message.startsWith("(init ")) {
+                unum = Integer.parseInt(message.split(" ")[2]);
+                send.accept(unum == 1 ? "(move -0.5 0)" : "(move -10 " + (unum == 2 ? -20 : 20) + ")");
+            } else if (message.startsWith("(see ")) {
+                send.accept(unum == 1 ? "(kick 0 0)" : "(turn 0)");
+            }
+        }
+    };
+}

@@ -1,0 +1,71 @@
+package org.scenes.tests;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.EnumMap;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scenes.agent.sim.GameSetup;
+import org.scenes.agent.sim.Simulator;
+import org.scenes.agent.teacher.Teachers;
+import org.scenes.api.Grid;
+import org.scenes.api.Side;
+import org.scenes.internal.convert.GameLogConverter;
+import org.scenes.internal.convert.Pairing;
+import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.vision.Fading;
+import org.scenes.internal.world.WorldAccuracy;
+
+/**
+ * The world model of scenes against the true positions of the game log, on a seeded simulated
+ * 4 v 4 game, for each field side, by both code paths: the players' own logs and the percepts
+ * rebuilt from the game log. The bounds are about twice the errors measured (docs/conversion.md).
+ */
+class WorldModelAccuracyTest {
+    private static final int CYCLES = 1000;
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void scenesPlaceThePlayerAndTheBallWithinTheServersNoise() throws IOException {
+        Path logs = dir.resolve("logs");
+        Simulator simulator = new Simulator(new GameSetup(new GameSetup.Team("Red", 4, Teachers.byName("krislet")),
+                new GameSetup.Team("Blue", 4, Teachers.byName("krislet")), CYCLES, 3, logs)).recordTo(dir);
+        simulator.run(t -> { });
+        Path rcg = simulator.recorded().get(0);
+        Path rcl = simulator.recorded().get(1);
+
+        Map<Side, WorldAccuracy> fromLogs = new EnumMap<>(Side.class);
+        Map<Side, WorldAccuracy> fromGameLog = new EnumMap<>(Side.class);
+        for (Side side : Side.values()) {
+            fromLogs.put(side, new WorldAccuracy(rcg));
+            fromGameLog.put(side, new WorldAccuracy(rcg));
+        }
+        SceneConverter converter = SceneConverter.with(Grid.DEFAULT).strict(true).world(true).build();
+        for (String team : new String[] {"Red", "Blue"}) {
+            for (int unum = 1; unum <= 4; unum++) {
+                converter.convert(logs.resolve(team + "_" + unum + ".lsf.gz"),
+                        scene -> fromLogs.get(scene.observer().side()).add(scene));
+            }
+        }
+        new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.HALFWAY, GameLogConverter.everyone(), 1).world(true)
+                .convert(rcg, rcl, observer -> scene -> fromGameLog.get(observer.side()).add(scene));
+
+        for (Map<Side, WorldAccuracy> path : java.util.List.of(fromLogs, fromGameLog)) {
+            for (Side side : Side.values()) {
+                WorldAccuracy.Report r = path.get(side).report();
+                String figures = side + " " + r;
+                assertTrue(r.scenes() > 4 * CYCLES * 0.4, figures);
+                assertTrue(r.unlocated() == 0, figures);
+                assertTrue(r.position().median() < 0.25 && r.position().p90() < 0.7, figures);
+                assertTrue(r.body().median() < 1 && r.body().p90() < 1.5, figures);
+                assertTrue(r.ballSeen().median() < 0.7 && r.ballSeen().p90() < 1.8, figures);
+                assertTrue(r.ballVelocity().median() < 0.15, figures);
+            }
+        }
+    }
+}
