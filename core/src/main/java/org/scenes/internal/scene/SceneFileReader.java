@@ -570,7 +570,8 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         if (e instanceof JsonProcessingException jsonError) {
             JsonLocation location = jsonError.getLocation();
             return new SceneFileException(file, location == null ? 0 : location.getLineNr(),
-                    location == null ? 0 : location.getColumnNr(), "malformed JSON: " + org.scenes.internal.files.JsonErrors.plain(jsonError.getOriginalMessage()), e);
+                    location == null ? 0 : location.getColumnNr(),
+                    "malformed JSON: " + org.scenes.internal.files.JsonErrors.plain(jsonError.getOriginalMessage()), e);
         }
         if (e instanceof java.io.EOFException) {
             return new SceneFileException(file, 0, 0, "the compressed file ends early (is it truncated?)", e);
