@@ -16,6 +16,7 @@ import org.scenes.api.Observer;
 import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
+import org.scenes.api.World;
 
 /**
  * Scenes held as one byte stream instead of objects: a knowledge base of a million scenes as
@@ -29,6 +30,7 @@ import org.scenes.api.SeenObject;
  */
 final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
     private static final ActionType[] ACTION_TYPES = ActionType.values();
+    private static final Relation[] RELATIONS = Relation.values();
     private static final double[] SCALES = {1, 10, 100};
     private static final int RAW = 3;
     /** The tagged value of the plain NaN ("not sent"): the raw tag with payload 1. */
@@ -152,11 +154,38 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
         for (SeenObject object : scene.objects()) {
             writeObject(object);
         }
+        writeWorld(scene.world());
         if (scene.previous() == null) {
             writeVarint(0);
         } else {
             writeVarint(1);
             writeScene(scene.previous());
+        }
+    }
+
+    /** A world model (0 for none, else 1 and its values; positions to the centimetre pack in a few bytes). */
+    private void writeWorld(World world) {
+        if (world == null) {
+            writeVarint(0);
+            return;
+        }
+        writeVarint(1);
+        for (double value : new double[] {world.x(), world.y(), world.body(), world.neck(), world.vx(), world.vy(),
+            world.stamina(), world.effort(), world.ballX(), world.ballY(), world.ballVx(), world.ballVy()}) {
+            writeValue(value);
+        }
+        writeVarint(zigzag(world.age()));
+        writeVarint(zigzag(world.ballAge()));
+        writeVarint(intern(world.playMode()));
+        writeVarint(world.ownScore());
+        writeVarint(world.opponentScore());
+        writeVarint(world.players().size());
+        for (World.Player player : world.players()) {
+            writeVarint(player.relation().ordinal());
+            writeVarint(player.unum());
+            writeValue(player.x());
+            writeValue(player.y());
+            writeVarint(player.age());
         }
     }
 
@@ -284,8 +313,32 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
             for (int i = 0; i < objectCount; i++) {
                 objects.add(object());
             }
+            World world = varint() == 1 ? world() : null;
             Scene previous = varint() == 1 ? scene() : null;
-            return new Scene(cycle, observer, objects, actions, previous, seeAge);
+            return new Scene(cycle, observer, objects, actions, previous, seeAge, world);
+        }
+
+        private World world() {
+            double[] v = new double[12];
+            for (int i = 0; i < v.length; i++) {
+                v[i] = value();
+            }
+            int age = (int) unzigzag(varint());
+            int ballAge = (int) unzigzag(varint());
+            String playMode = strings.get((int) varint());
+            int own = (int) varint();
+            int opponent = (int) varint();
+            int count = (int) varint();
+            List<World.Player> players = new ArrayList<>(count);
+            for (int i = 0; i < count; i++) {
+                Relation relation = RELATIONS[(int) varint()];
+                int unum = (int) varint();
+                double x = value();
+                double y = value();
+                players.add(new World.Player(relation, unum, x, y, (int) varint()));
+            }
+            return new World(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], age, v[8], v[9], v[10], v[11], ballAge,
+                    players, playMode, own, opponent);
         }
 
         private SeenObject object() {

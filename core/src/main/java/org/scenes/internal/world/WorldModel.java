@@ -43,6 +43,9 @@ public final class WorldModel {
     static final double PLAYER_DECAY = 0.4;
     static final double BALL_DECAY = 0.94;
     static final double INERTIA_MOMENT = 5;
+    /** How far from the centre the server lets a player go: half the pitch plus the 5 m margin. */
+    static final double MAX_X = 57.5;
+    static final double MAX_Y = 39;
     /** Cycles a player seen with its team and number is remembered. */
     static final int PLAYER_MEMORY = 30;
 
@@ -156,9 +159,10 @@ public final class WorldModel {
         }
         if (elapsed > 0) {
             if (!Double.isNaN(x) && !Double.isNaN(vx)) {
-                // the reported velocity is the step's movement after decay
-                x += vx / PLAYER_DECAY;
-                y += vy / PLAYER_DECAY;
+                // the reported velocity is the step's movement after decay; the server keeps
+                // players within the pitch's margin (5 m beyond its lines)
+                x = Math.max(-MAX_X, Math.min(MAX_X, x + vx / PLAYER_DECAY));
+                y = Math.max(-MAX_Y, Math.min(MAX_Y, y + vy / PLAYER_DECAY));
             }
             for (int i = 0; i < elapsed && !Double.isNaN(ballVx); i++) {
                 ballX += ballVx;

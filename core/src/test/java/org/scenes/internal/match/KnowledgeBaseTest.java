@@ -23,6 +23,7 @@ import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
 import org.scenes.api.Side;
+import org.scenes.api.World;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.scene.SceneFileHeader;
@@ -61,6 +62,22 @@ class KnowledgeBaseTest {
                 scenes, (double) objects / scenes, bytesPerObject);
         // 8 doubles alone take 64 bytes per object as records; the store must stay an order below
         assertTrue(bytesPerObject < 9, "bytes per object " + bytesPerObject);
+    }
+
+    @Test
+    void worldModelsComeBackEqualWithTheirScenesAndMemory() {
+        Observer observer = new Observer("Us", Side.RIGHT, 4);
+        World world = new World(-12.34, 5.6, 45.5, -20, 0.12, -0.03, 7312, 0.9, 0, 3.2, -1.05, 1.5, -0.25, 2,
+                List.of(new World.Player(Relation.TEAMMATE, 7, 1, 2, 0), new World.Player(Relation.UNKNOWN, 0, -3, 4.5, 0)),
+                "kick_off_l", 1, 2);
+        World unknown = new World(Double.NaN, Double.NaN, Double.NaN, 0, Double.NaN, Double.NaN, Double.NaN,
+                Double.NaN, -1, Double.NaN, Double.NaN, Double.NaN, Double.NaN, -1, List.of(), "", 0, 0);
+        Scene first = new Scene(1, observer, List.of(), List.of(Action.turn(10)), null, 0, unknown);
+        Scene second = new Scene(2, observer, List.of(), List.of(Action.dash(80)), first, 1, world);
+        Scene without = new Scene(3, observer, List.of(), List.of(Action.kick(50, 10)));
+        List<Scene> original = List.of(first, second, without);
+
+        assertEquals(original, KnowledgeBase.of(Grid.DEFAULT, original).scenes());
     }
 
     @Test

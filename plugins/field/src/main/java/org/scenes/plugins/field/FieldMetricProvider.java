@@ -1,0 +1,185 @@
+package org.scenes.plugins.field;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.scenes.api.EncodedMetric;
+import org.scenes.api.MetricProvider;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.Scene;
+import org.scenes.api.SceneMetric;
+import org.scenes.api.Side;
+import org.scenes.api.World;
+
+/**
+ * {@code field}: scenes compared by their world models ({@link World}, scenes converted with
+ * {@code --world}), in field coordinates of the player's own frame rather than by what the view
+ * showed: a weighted Euclidean distance over the player's position, the ball's offset from the
+ * player, the ball's velocity, the body's direction (as a unit vector), stamina, plus a penalty
+ * when the play modes differ (modes compared from the player's side: {@code kick_off_l} of a left
+ * player equals {@code kick_off_r} of a right one). With {@code ball-frame=body} the ball's offset
+ * and velocity are turned into the body's frame (ahead, to the right) instead. A scene without a located world model is
+ * {@code missing} away from every other; an unknown ball costs {@code missing} / 10.
+ */
+public final class FieldMetricProvider implements MetricProvider {
+    /** The feature order of an encoding. */
+    static final int X = 0;
+    static final int Y = 1;
+    static final int BALL_DX = 2;
+    static final int BALL_DY = 3;
+    static final int BALL_VX = 4;
+    static final int BALL_VY = 5;
+    static final int BODY_COS = 6;
+    static final int BODY_SIN = 7;
+    static final int STAMINA = 8;
+    static final int FEATURES = 9;
+    /** The default server's full stamina: stamina is compared as a share of it. */
+    static final double STAMINA_MAX = 8000;
+
+    @Override
+    public String name() {
+        return "field";
+    }
+
+    @Override
+    public String description() {
+        return "world-model features in field coordinates: own position, ball offset and velocity, body,"
+                + " stamina, play mode (scenes converted with --world)";
+    }
+
+    @Override
+    public Map<String, String> options() {
+        Map<String, String> options = new LinkedHashMap<>();
+        options.put("position-weight", "weight of the player's position, per metre (default 0.1)");
+        options.put("ball-weight", "weight of the ball's offset from the player, per metre (default 1)");
+        options.put("ball-velocity-weight", "weight of the ball's velocity, per metre per cycle (default 2)");
+        options.put("body-weight", "weight of the body direction's unit vector (default 3)");
+        options.put("stamina-weight", "weight of stamina as a share of 8000 (default 2)");
+        options.put("play-mode-penalty", "added when the play modes differ (default 10)");
+        options.put("ball-frame", "field: the ball's offset along the pitch's axes (default); body: turned into the"
+                + " body's frame (ahead, to the right)");
+        options.put("missing", "distance of a scene without a located world model (default 1000)");
+        return options;
+    }
+
+    @Override
+    public SceneMetric create(PluginConfig config) {
+        double position = weight(config, "position-weight", 0.1);
+        double ball = weight(config, "ball-weight", 1);
+        double velocity = weight(config, "ball-velocity-weight", 2);
+        double body = weight(config, "body-weight", 3);
+        double stamina = weight(config, "stamina-weight", 2);
+        double[] weights = new double[FEATURES];
+        weights[X] = position;
+        weights[Y] = position;
+        weights[BALL_DX] = ball;
+        weights[BALL_DY] = ball;
+        weights[BALL_VX] = velocity;
+        weights[BALL_VY] = velocity;
+        weights[BODY_COS] = body;
+        weights[BODY_SIN] = body;
+        weights[STAMINA] = stamina;
+        String frame = config.option("ball-frame", "field");
+        if (!frame.equals("field") && !frame.equals("body")) {
+            throw new IllegalArgumentException("field: ball-frame must be field or body, not " + frame);
+        }
+        return new FieldMetric(weights, weight(config, "play-mode-penalty", 10), weight(config, "missing", 1000),
+                frame.equals("body"));
+    }
+
+    private static double weight(PluginConfig config, String name, double fallback) {
+        double value = config.doubleOption(name, fallback);
+        if (!(value >= 0) || Double.isInfinite(value)) {
+            throw new IllegalArgumentException("field: " + name + " must be a finite number of 0 or more, not " + value);
+        }
+        return value;
+    }
+
+    /**
+     * A scene's features, each multiplied by its weight already; {@code mode} the play mode from
+     * the player's side; null features for a scene without a located world.
+     */
+    record Features(double[] values, boolean ballKnown, String mode) {
+    }
+
+    static final class FieldMetric implements EncodedMetric<Features> {
+        private final double[] weights;
+        private final double playModePenalty;
+        private final double missing;
+        private final boolean bodyFrame;
+
+        FieldMetric(double[] weights, double playModePenalty, double missing, boolean bodyFrame) {
+            this.weights = weights;
+            this.playModePenalty = playModePenalty;
+            this.missing = missing;
+            this.bodyFrame = bodyFrame;
+        }
+
+        @Override
+        public Features encode(Scene scene) {
+            World w = scene.world();
+            if (w == null || !w.located()) {
+                return new Features(null, false, "");
+            }
+            double[] f = new double[FEATURES];
+            f[X] = w.x();
+            f[Y] = w.y();
+            boolean ballKnown = w.ballKnown();
+            double body = Double.isNaN(w.body()) ? 0 : Math.toRadians(w.body());
+            if (ballKnown) {
+                double dx = w.ballX() - w.x();
+                double dy = w.ballY() - w.y();
+                double vx = Double.isNaN(w.ballVx()) ? 0 : w.ballVx();
+                double vy = Double.isNaN(w.ballVy()) ? 0 : w.ballVy();
+                // in the body's frame: x ahead, y to the right (the server's directions turn towards +y)
+                double cos = bodyFrame ? Math.cos(body) : 1;
+                double sin = bodyFrame ? Math.sin(body) : 0;
+                f[BALL_DX] = dx * cos + dy * sin;
+                f[BALL_DY] = dy * cos - dx * sin;
+                f[BALL_VX] = vx * cos + vy * sin;
+                f[BALL_VY] = vy * cos - vx * sin;
+            }
+            f[BODY_COS] = Math.cos(body);
+            f[BODY_SIN] = Math.sin(body);
+            f[STAMINA] = Double.isNaN(w.stamina()) ? 1 : w.stamina() / STAMINA_MAX;
+            for (int i = 0; i < FEATURES; i++) {
+                f[i] *= weights[i];
+            }
+            return new Features(f, ballKnown, ownMode(w.playMode(), scene.observer().side()));
+        }
+
+        /** The play mode with its side letter as seen from the player: {@code kick_off_own}, {@code goal_opp}. */
+        static String ownMode(String mode, Side side) {
+            int at = mode.lastIndexOf('_');
+            if (side == null || at < 0 || at != mode.length() - 2) {
+                return mode;
+            }
+            char letter = mode.charAt(at + 1);
+            if (letter != 'l' && letter != 'r') {
+                return mode;
+            }
+            return mode.substring(0, at) + (letter == side.letter() ? "_own" : "_opp");
+        }
+
+        @Override
+        public double distance(Features query, Features stored, double bound) {
+            if (query.values() == null || stored.values() == null) {
+                return query.values() == stored.values() ? 0 : missing;
+            }
+            double sum = 0;
+            if (!query.mode().equals(stored.mode())) {
+                sum = playModePenalty * playModePenalty;
+            }
+            if (query.ballKnown() != stored.ballKnown()) {
+                sum += missing * missing / 100;
+            }
+            double limit = bound * bound;
+            double[] a = query.values();
+            double[] b = stored.values();
+            for (int i = 0; i < FEATURES && sum <= limit; i++) {
+                double d = a[i] - b[i];
+                sum += d * d;
+            }
+            return Math.sqrt(sum);
+        }
+    }
+}
