@@ -1,6 +1,6 @@
-// Distance metrics on the shared Krislet data, laid out like the thesis' table of metrics: one
+// Distance metrics on five players' scene files, laid out like the thesis' table of metrics: one
 // row per metric, the cross-validated figures as columns. The script version of ball-goal
-// runs beside the Java one and must give the same numbers. Regenerate (from the repository
+// runs beside the Java one and must give the same numbers. Run (from the repository
 // root, with the shared data beside it; see docs/results/README.md):
 //   scenes experiment docs/results/sweeps/distance-metrics.groovy --out-dir docs/results
 

@@ -1,4 +1,4 @@
-// Number of neighbours and action selectors on the shared Krislet data, laid out like the
+// Number of neighbours and action selectors on five players' scene files, laid out like the
 // thesis' table of k and selectors: one row per selector, one column per k, action accuracy
 // in the cells (metric ball-goal). Regenerate (see docs/results/README.md):
 //   scenes experiment docs/results/sweeps/k-selectors.groovy --out-dir docs/results

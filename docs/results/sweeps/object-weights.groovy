@@ -1,4 +1,4 @@
-// Object weights on the shared Krislet data, laid out like the thesis' table of weights: one
+// Object weights on five players' scene files, laid out like the thesis' table of weights: one
 // row per weight vector (ball/goal/flag/line/players/teammates/opponents/unknown), one column
 // per metric, action accuracy in the cells. Regenerate (see docs/results/README.md):
 //   scenes experiment docs/results/sweeps/object-weights.groovy --out-dir docs/results
