@@ -1,8 +1,8 @@
 // Distance metrics on five players' scene files, laid out like the thesis' table of metrics: one
 // row per metric, the cross-validated figures as columns. The script version of ball-goal
-// runs beside the Java one and must give the same numbers. Run (from the repository
-// root, with the shared data beside it; see docs/results/README.md):
-//   scenes experiment docs/results/sweeps/distance-metrics.groovy --out-dir docs/results
+// runs beside the Java one and must give the same numbers. Run from the
+// repository root (see docs/results/README.md):
+//   scenes experiment docs/results/sweeps/distance-metrics.groovy --out-dir my-results
 
 // The scene files: players 1 to 5 of one team, one file each. By default those of the demo's
 // first game ('scenes demo' in the repository root writes them); the shipped tables were made

@@ -1,7 +1,8 @@
 // Number of neighbours and action selectors on five players' scene files, laid out like the
 // thesis' table of k and selectors: one row per selector, one column per k, action accuracy
-// in the cells (metric ball-goal). Regenerate (see docs/results/README.md):
-//   scenes experiment docs/results/sweeps/k-selectors.groovy --out-dir docs/results
+// in the cells (metric ball-goal). Run from the repository root (see
+// docs/results/README.md):
+//   scenes experiment docs/results/sweeps/k-selectors.groovy --out-dir my-results
 
 // The scene files: players 1 to 5 of one team, one file each. By default those of the demo's
 // first game ('scenes demo' in the repository root writes them); the shipped tables were made

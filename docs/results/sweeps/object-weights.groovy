@@ -1,7 +1,8 @@
 // Object weights on five players' scene files, laid out like the thesis' table of weights: one
 // row per weight vector (ball/goal/flag/line/players/teammates/opponents/unknown), one column
-// per metric, action accuracy in the cells. Regenerate (see docs/results/README.md):
-//   scenes experiment docs/results/sweeps/object-weights.groovy --out-dir docs/results
+// per metric, action accuracy in the cells. Run from the repository root (see
+// docs/results/README.md):
+//   scenes experiment docs/results/sweeps/object-weights.groovy --out-dir my-results
 
 // The scene files: players 1 to 5 of one team, one file each. By default those of the demo's
 // first game ('scenes demo' in the repository root writes them); the shipped tables were made
