@@ -68,16 +68,27 @@ class RecordingRecipeTest {
         String output = Files.readString(dir.resolve("out.txt"));
         assertEquals(0, process.exitValue(), output);
         assertTrue(output.contains("1 game ended: stopping"), output);
-        List<String> proxyLogs = names(dir.resolve("games/game1"));
+        List<String> proxyLogs = names(dir.resolve(argument(recipe, "scenes proxy ", "--out")));
         for (String team : List.of("Teal", "Amber")) {
             for (int unum = 1; unum <= 11; unum++) {
                 assertTrue(proxyLogs.contains(team + "_" + unum + ".log"), team + "_" + unum + " in " + proxyLogs);
             }
         }
-        List<String> serverLogs = names(dir.resolve("games/server"));
+        List<String> serverLogs = names(dir.resolve(argument(recipe, "scenes server ", "--record")));
         Optional<String> game = serverLogs.stream().filter(n -> n.endsWith(".rcg")).findFirst();
         assertTrue(game.isPresent() && serverLogs.stream().anyMatch(n -> n.endsWith(".rcl")), serverLogs.toString());
         assertTrue(game.get().startsWith("Teal_") || game.get().startsWith("Amber_"), game.get());
+    }
+
+    /** The value of {@code option} on the recipe's line starting with {@code command}. */
+    private static String argument(String recipe, String command, String option) {
+        for (String line : recipe.split("\n")) {
+            if (line.startsWith(command)) {
+                List<String> words = List.of(line.split("\\s+"));
+                return words.get(words.indexOf(option) + 1);
+            }
+        }
+        throw new AssertionError("no '" + command + "' line in " + recipe);
     }
 
     private static List<String> names(Path directory) throws IOException {
