@@ -37,7 +37,8 @@ final class ImitationTeamOptions {
 
     /** The players' brains, paced when asked. */
     BrainFactory brains(ImitationTeam team, MatchConfig config, PluginRegistry registry, ImitationBrain.Guards guards) {
-        return PacedBrain.pace(team.brains(config.selectorFactory(registry), config.transformFactory(registry), guards),
+        return PacedBrain.pace(team.brains(config.selectorFactory(registry), config.transformFactory(registry), guards,
+                config.replay()),
                 thinkSteps);
     }
 

@@ -7,7 +7,9 @@ import java.util.List;
 import java.util.Map;
 import org.scenes.api.ActionWeights;
 import org.scenes.api.ObjectWeights;
+import org.scenes.internal.target.Replay;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.options.KeyConverters;
 import picocli.CommandLine.Option;
 
 /** How scenes are matched and an action chosen: the options validate, tune and play share. */
@@ -56,6 +58,13 @@ final class MatchOptions {
             description = "Scene transform applied to train and test scenes (repeatable), e.g. memory.")
     List<String> transforms;
 
+    @Option(names = "--replay", paramLabel = "raw|target", converter = KeyConverters.Replay.class,
+            description = "How the chosen scene's actions are carried out: raw sends the recorded commands; target"
+                    + " reaches what they achieved in the field (body direction, running direction, ball velocity,"
+                    + " gaze) from the player's own world model (scenes converted with --world). Default: raw, or the"
+                    + " config's.")
+    Replay replay;
+
     @Option(names = "--seed", paramLabel = "S", description = "Seed of every random choice. Default: 1, or the config's.")
     Long seed;
 
@@ -95,6 +104,9 @@ final class MatchOptions {
         }
         if (seed != null) {
             base = base.withSeed(seed);
+        }
+        if (replay != null) {
+            base = base.withReplay(replay);
         }
         List<MatchConfig> configs = new ArrayList<>();
         List<String> metricNames = metrics == null ? List.of(base.metric()) : metrics;

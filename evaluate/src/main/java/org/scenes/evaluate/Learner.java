@@ -22,6 +22,7 @@ import org.scenes.api.SceneTransform;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
+import org.scenes.internal.target.Replay;
 import org.scenes.internal.validate.MatchConfig;
 
 /**
@@ -37,12 +38,19 @@ public final class Learner {
     /** How to match: the metric, k, selector and transforms, as made from a configuration. */
     public record Matching(java.util.function.Supplier<SceneMetric> metric, int k,
                            java.util.function.Supplier<ActionSelector> selector,
-                           java.util.function.Supplier<List<SceneTransform>> transforms) {
+                           java.util.function.Supplier<List<SceneTransform>> transforms, Replay replay) {
+        /** Matching that sends the recorded commands as they are. */
+        public Matching(java.util.function.Supplier<SceneMetric> metric, int k,
+                        java.util.function.Supplier<ActionSelector> selector,
+                        java.util.function.Supplier<List<SceneTransform>> transforms) {
+            this(metric, k, selector, transforms, Replay.RAW);
+        }
+
         /** The matching a configuration (of {@code validate}, {@code tune}) describes. */
         public static Matching of(MatchConfig config, PluginRegistry registry) {
             config.check(registry);
             return new Matching(config.metricFactory(registry), config.k(), config.selectorFactory(registry),
-                    config.transformFactory(registry));
+                    config.transformFactory(registry), config.replay());
         }
     }
 
@@ -59,7 +67,8 @@ public final class Learner {
         Path directory = Files.createTempDirectory("scenes-evaluate-");
         try {
             KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
-            SceneConverter converter = SceneConverter.with(Grid.DEFAULT).build();
+            // with world models, so world-model metrics and target replay work on the teacher's games
+            SceneConverter converter = SceneConverter.with(Grid.DEFAULT).world(true).build();
             long done = 0;
             for (long seed : trainingSeeds) {
                 Path logs = directory.resolve("seed-" + seed);
@@ -87,8 +96,8 @@ public final class Learner {
     public static Imitator of(KnowledgeBase knowledge, Matching matching) {
         Recognizer recognizer = new Recognizer(knowledge, matching.metric(), matching.k(),
                 SceneTransform.queryImage(matching.transforms().get()));
-        return new Imitator(ImitationBrain.factory(recognizer, matching.selector(), matching.transforms()),
-                knowledge.size());
+        return new Imitator(ImitationBrain.factory(recognizer, matching.selector(), matching.transforms(),
+                ImitationBrain.Guards.OFF, matching.replay()), knowledge.size());
     }
 
     private static void deleteTree(Path directory) throws IOException {

@@ -43,4 +43,13 @@ public final class KeyConverters {
             return KeyConverters.convert(value, Tuner.Objective::fromKey, "mean, accuracy, direction or macro-f1");
         }
     }
+
+    /** {@code --replay raw|target}. */
+    public static final class Replay implements ITypeConverter<org.scenes.internal.target.Replay> {
+        @Override
+        public org.scenes.internal.target.Replay convert(String value) {
+            return KeyConverters.convert(value, org.scenes.internal.target.Replay::fromKey,
+                    org.scenes.internal.target.Replay.keys());
+        }
+    }
 }

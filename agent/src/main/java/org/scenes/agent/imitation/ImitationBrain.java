@@ -25,6 +25,7 @@ import org.scenes.internal.protocol.Parameters;
 import org.scenes.internal.protocol.See;
 import org.scenes.internal.protocol.SenseBody;
 import org.scenes.internal.protocol.ServerNotice;
+import org.scenes.internal.target.Replay;
 import org.scenes.internal.validate.Validator;
 import org.scenes.internal.world.WorldModel;
 
@@ -81,6 +82,7 @@ public final class ImitationBrain implements Brain {
     private Observer observer = Observer.UNKNOWN;
     private boolean placed;
     private final Guards guards;
+    private final Replay replay;
     private double kickable = DEFAULT_KICKABLE;
     /**
      * Per-cycle play, for knowledge bases of players that act every cycle (several see ages): in
@@ -133,18 +135,29 @@ public final class ImitationBrain implements Brain {
 
     public ImitationBrain(String team, Recognizer recognizer, ActionSelector selector,
                           Supplier<List<SceneTransform>> transforms, Random random, Guards guards) {
-        this(team, ImitationTeam.of(Objects.requireNonNull(recognizer, "recognizer")), selector, transforms, random,
-                guards, false);
+        this(team, recognizer, selector, transforms, random, guards, Replay.RAW);
     }
 
-    /** A player of an imitation team: its knowledge and kick-off moves are its counterpart's. */
+    /** The same, carrying out the chosen scene's actions as {@code replay} says. */
+    public ImitationBrain(String team, Recognizer recognizer, ActionSelector selector,
+                          Supplier<List<SceneTransform>> transforms, Random random, Guards guards, Replay replay) {
+        this(team, ImitationTeam.of(Objects.requireNonNull(recognizer, "recognizer")), selector, transforms, random,
+                guards, false, replay);
+    }
+
+    /**
+     * A player of an imitation team: its knowledge and kick-off moves are its counterpart's; it
+     * carries out the chosen scene's actions as {@code replay} says.
+     */
     public ImitationBrain(String team, ImitationTeam roles, ActionSelector selector,
-                          Supplier<List<SceneTransform>> transforms, Random random, Guards guards) {
-        this(team, roles, selector, transforms, random, guards, true);
+                          Supplier<List<SceneTransform>> transforms, Random random, Guards guards, Replay replay) {
+        this(team, roles, selector, transforms, random, guards, true, replay);
     }
 
     private ImitationBrain(String team, ImitationTeam roles, ActionSelector selector,
-                           Supplier<List<SceneTransform>> transforms, Random random, Guards guards, boolean withRoles) {
+                           Supplier<List<SceneTransform>> transforms, Random random, Guards guards, boolean withRoles,
+                           Replay replay) {
+        this.replay = Objects.requireNonNull(replay, "replay");
         this.guards = Objects.requireNonNull(guards, "guards");
         this.team = Objects.requireNonNull(team, "team");
         this.world = new WorldModel(team);
@@ -166,7 +179,14 @@ public final class ImitationBrain implements Brain {
     /** The same, every brain with the given guards. */
     public static BrainFactory factory(Recognizer recognizer, Supplier<ActionSelector> selectors,
                                        Supplier<List<SceneTransform>> transforms, Guards guards) {
-        return (team, random) -> new ImitationBrain(team, recognizer, selectors.get(), transforms, random, guards);
+        return factory(recognizer, selectors, transforms, guards, Replay.RAW);
+    }
+
+    /** The same, every brain carrying out its chosen actions as {@code replay} says. */
+    public static BrainFactory factory(Recognizer recognizer, Supplier<ActionSelector> selectors,
+                                       Supplier<List<SceneTransform>> transforms, Guards guards, Replay replay) {
+        return (team, random) -> new ImitationBrain(team, recognizer, selectors.get(), transforms, random, guards,
+                replay);
     }
 
     @Override
@@ -261,7 +281,7 @@ public final class ImitationBrain implements Brain {
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
-        List<Action> actions = Validator.withNeck(action, nearest);
+        List<Action> actions = Validator.prediction(action, nearest, seen, replay);
         Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age, seen.world());
         actions.forEach(world::sent);
         history.addLast(made);

@@ -20,6 +20,7 @@ import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.internal.scene.SceneSource;
+import org.scenes.internal.target.Replay;
 
 /**
  * What an imitation team knows, by role: the whole team's scenes, and for each recorded player
@@ -132,10 +133,17 @@ public final class ImitationTeam {
     /** Brains for the players, each finding its counterpart by the uniform number the server gives it. */
     public BrainFactory brains(Supplier<ActionSelector> selectors, Supplier<List<SceneTransform>> transforms,
                                ImitationBrain.Guards guards) {
+        return brains(selectors, transforms, guards, Replay.RAW);
+    }
+
+    /** The same, each brain carrying out its chosen actions as {@code replay} says. */
+    public BrainFactory brains(Supplier<ActionSelector> selectors, Supplier<List<SceneTransform>> transforms,
+                               ImitationBrain.Guards guards, Replay replay) {
         return new BrainFactory() {
             @Override
             public org.scenes.agent.Brain create(String teamName, java.util.Random random) {
-                return new ImitationBrain(teamName, ImitationTeam.this, selectors.get(), transforms, random, guards);
+                return new ImitationBrain(teamName, ImitationTeam.this, selectors.get(), transforms, random, guards,
+                        replay);
             }
 
             @Override

@@ -15,6 +15,7 @@ import org.scenes.api.SceneMetric;
 import org.scenes.api.SceneTransform;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
+import org.scenes.internal.target.Replay;
 
 /**
  * Everything that decides how scenes are matched and an action chosen: what {@code scenes tune}
@@ -29,25 +30,35 @@ import org.scenes.internal.match.Recognizer;
  * @param selectorOptions the selector's options ({@code params=average})
  * @param transforms scene transforms applied to every scene sequence, in order
  * @param seed seed of every random choice
+ * @param replay how the chosen scene's action is carried out: as recorded, or as its target
  */
 public record MatchConfig(String metric, Map<String, String> metricOptions, ObjectWeights objectWeights,
                           ActionWeights actionWeights, int k, String selector, Map<String, String> selectorOptions,
-                          List<String> transforms, long seed) {
+                          List<String> transforms, long seed, Replay replay) {
 
     public static final MatchConfig DEFAULT = new MatchConfig("ball-goal", Map.of(), ObjectWeights.DEFAULT,
-            ActionWeights.DEFAULT, 1, "first-valid", Map.of(), List.of(), 1L);
+            ActionWeights.DEFAULT, 1, "first-valid", Map.of(), List.of(), 1L, Replay.RAW);
+
+    /** A configuration replaying recorded commands as they are. */
+    public MatchConfig(String metric, Map<String, String> metricOptions, ObjectWeights objectWeights,
+                       ActionWeights actionWeights, int k, String selector, Map<String, String> selectorOptions,
+                       List<String> transforms, long seed) {
+        this(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, transforms, seed,
+                Replay.RAW);
+    }
 
     public MatchConfig {
         metricOptions = Map.copyOf(new TreeMap<>(metricOptions));
         selectorOptions = Map.copyOf(new TreeMap<>(selectorOptions));
         transforms = List.copyOf(transforms);
+        replay = replay == null ? Replay.RAW : replay;
         if (k < 1) {
             throw new IllegalArgumentException("k must be at least 1, not " + k);
         }
     }
 
     public MatchConfig withMetric(String name, Map<String, String> options) {
-        return new MatchConfig(name, options, objectWeights, actionWeights, k, selector, selectorOptions, transforms, seed);
+        return new MatchConfig(name, options, objectWeights, actionWeights, k, selector, selectorOptions, transforms, seed, replay);
     }
 
     /** The same metric with one option set to {@code value}, or left out when {@code value} is null. */
@@ -62,27 +73,32 @@ public record MatchConfig(String metric, Map<String, String> metricOptions, Obje
     }
 
     public MatchConfig withObjectWeights(ObjectWeights weights) {
-        return new MatchConfig(metric, metricOptions, weights, actionWeights, k, selector, selectorOptions, transforms, seed);
+        return new MatchConfig(metric, metricOptions, weights, actionWeights, k, selector, selectorOptions, transforms, seed, replay);
     }
 
     public MatchConfig withActionWeights(ActionWeights weights) {
-        return new MatchConfig(metric, metricOptions, objectWeights, weights, k, selector, selectorOptions, transforms, seed);
+        return new MatchConfig(metric, metricOptions, objectWeights, weights, k, selector, selectorOptions, transforms, seed, replay);
     }
 
     public MatchConfig withK(int newK) {
-        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, newK, selector, selectorOptions, transforms, seed);
+        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, newK, selector, selectorOptions, transforms, seed, replay);
     }
 
     public MatchConfig withSelector(String name, Map<String, String> options) {
-        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, name, options, transforms, seed);
+        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, name, options, transforms, seed, replay);
     }
 
     public MatchConfig withTransforms(List<String> names) {
-        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, names, seed);
+        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, names, seed, replay);
     }
 
     public MatchConfig withSeed(long newSeed) {
-        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, transforms, newSeed);
+        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, transforms, newSeed, replay);
+    }
+
+    public MatchConfig withReplay(Replay newReplay) {
+        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, transforms, seed,
+                newReplay);
     }
 
     private PluginConfig base() {
@@ -132,6 +148,9 @@ public record MatchConfig(String metric, Map<String, String> metricOptions, Obje
         }
         text.append(" k=").append(k).append(' ').append(selector);
         selectorOptions.forEach((key, value) -> text.append(' ').append(key).append('=').append(value));
+        if (replay != Replay.RAW) {
+            text.append(" replay=").append(replay.key());
+        }
         return text.toString();
     }
 }

@@ -19,6 +19,7 @@ import org.scenes.api.ActionWeights;
 import org.scenes.api.ObjectWeights;
 import org.scenes.internal.files.AtomicOutput;
 import org.scenes.internal.files.Inputs;
+import org.scenes.internal.target.Replay;
 
 /**
  * The configuration file of {@code scenes tune} and {@code scenes-spark tune}, read by {@code --config}:
@@ -30,7 +31,7 @@ public final class MatchConfigFile {
 
     /** The keys a configuration may hold; {@code crossValidation} is what tune writes beside them. */
     public static final List<String> KEYS = List.of("metric", "options", "objectWeights", "actionWeights", "k",
-            "selector", "selectorOptions", "transforms", "seed", "crossValidation");
+            "selector", "selectorOptions", "transforms", "seed", "replay", "crossValidation");
 
     /** A configuration file that cannot be read; the message starts with the file's name. */
     public static final class InvalidException extends RuntimeException {
@@ -71,6 +72,7 @@ public final class MatchConfigFile {
         map.put("selectorOptions", new TreeMap<>(config.selectorOptions()));
         map.put("transforms", config.transforms());
         map.put("seed", config.seed());
+        map.put("replay", config.replay().key());
         return map;
     }
 
@@ -113,7 +115,8 @@ public final class MatchConfigFile {
                     text(file, root, "selector", base.selector()),
                     strings(file, root, "selectorOptions"),
                     list(file, root, "transforms"),
-                    integer(file, root, "seed", base.seed(), Long.MIN_VALUE, Long.MAX_VALUE));
+                    integer(file, root, "seed", base.seed(), Long.MIN_VALUE, Long.MAX_VALUE),
+                    Replay.parse(text(file, root, "replay", base.replay().key())));
         } catch (IllegalArgumentException e) {
             throw new InvalidException(file + ": " + e.getMessage());
         }

@@ -14,6 +14,8 @@ import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
+import org.scenes.internal.target.Replay;
+import org.scenes.internal.target.Targets;
 
 /**
  * Asks the recognizer and selector for an action on every test scene and compares it with
@@ -30,6 +32,16 @@ public final class Validator {
      */
     public static ValidationReport run(Recognizer recognizer, Supplier<ActionSelector> selectors, List<Scene> test,
                                        long seed, boolean parallel, Runnable progress) {
+        return run(recognizer, selectors, test, seed, Replay.RAW, parallel, progress);
+    }
+
+    /**
+     * @param replay how the chosen scene's actions become the prediction: as recorded, or as their
+     *               targets reached from the test scene's world model
+     * @param progress called once per finished query (from any thread); may be null
+     */
+    public static ValidationReport run(Recognizer recognizer, Supplier<ActionSelector> selectors, List<Scene> test,
+                                       long seed, Replay replay, boolean parallel, Runnable progress) {
         int n = test.size();
         @SuppressWarnings("unchecked")
         List<Action>[] predicted = new List[n];
@@ -40,7 +52,8 @@ public final class Validator {
             long start = System.nanoTime();
             try {
                 List<Neighbour> nearest = recognizer.nearest(test.get(i));
-                predicted[i] = withNeck(selector.get().select(nearest, queryRandom(seed, i)), nearest);
+                predicted[i] = prediction(selector.get().select(nearest, queryRandom(seed, i)), nearest, test.get(i),
+                        replay);
             } catch (RuntimeException e) {
                 // a plugin's or script's error, located by the query it failed on
                 throw new QueryFailure(i, test.get(i).cycle(), e);
@@ -54,6 +67,33 @@ public final class Validator {
     }
 
     /**
+     * The actions a player sends for the selected action ({@link #withNeck}), carried out as
+     * {@code replay} says: with {@link Replay#TARGET}, reached from {@code query}'s world model
+     * what they achieved in the scene that holds them. A target the player has already reached
+     * (a turn to where it faces) gives way to the nearest neighbour's whose target it has not.
+     */
+    public static List<Action> prediction(Action selected, List<Neighbour> nearest, Scene query, Replay replay) {
+        List<Action> actions = withNeck(selected, nearest);
+        if (replay == Replay.RAW || actions.isEmpty()) {
+            return actions;
+        }
+        List<Action> reached = Targets.reach(actions, donor(actions.get(0), nearest), query);
+        if (!Targets.alreadyReached(reached, query)) {
+            return reached;
+        }
+        for (Neighbour neighbour : nearest) {
+            Action other = neighbour.scene().primaryAction();
+            if (other != null) {
+                List<Action> instead = Targets.reach(withNeck(other, List.of(neighbour)), neighbour.scene(), query);
+                if (!Targets.alreadyReached(instead, query)) {
+                    return instead;
+                }
+            }
+        }
+        return reached;
+    }
+
+    /**
      * The whole prediction for a selected action: selectors pick one action, so the neck action
      * comes from the nearest neighbour whose scene holds the selected action (its other action), or,
      * when none does (a selector that made the action up), from the nearest neighbour's scene.
@@ -62,16 +102,7 @@ public final class Validator {
         if (selected == null) {
             return List.of(); // no usable action: none for the body and the neck alike
         }
-        Scene donor = null;
-        for (Neighbour neighbour : nearest) {
-            if (neighbour.scene().actions().contains(selected)) {
-                donor = neighbour.scene();
-                break;
-            }
-        }
-        if (donor == null && !nearest.isEmpty()) {
-            donor = nearest.get(0).scene();
-        }
+        Scene donor = donor(selected, nearest);
         Action neck = donor == null ? null : ActionLabel.neckAction(donor.actions());
         if (neck == null || neck.equals(selected) || selected.type() == ActionType.TURN_NECK) {
             return List.of(selected);
@@ -79,11 +110,21 @@ public final class Validator {
         return List.of(selected, neck);
     }
 
+    /** The nearest neighbour's scene holding {@code selected}, else the nearest's, else null. */
+    private static Scene donor(Action selected, List<Neighbour> nearest) {
+        for (Neighbour neighbour : nearest) {
+            if (neighbour.scene().actions().contains(selected)) {
+                return neighbour.scene();
+            }
+        }
+        return nearest.isEmpty() ? null : nearest.get(0).scene();
+    }
+
     /** A whole run from a configuration: knowledge base from {@code train}, queries from {@code test}. */
     public static ValidationReport run(KnowledgeBase train, List<Scene> test, MatchConfig config,
                                        PluginRegistry registry, boolean parallel, Runnable progress) {
         Recognizer recognizer = config.recognizer(train, registry, config.k());
-        return run(recognizer, config.selectorFactory(registry), test, config.seed(), parallel, progress);
+        return run(recognizer, config.selectorFactory(registry), test, config.seed(), config.replay(), parallel, progress);
     }
 
     /** The generator of query {@code index}: independent of thread and order. */

@@ -1,13 +1,16 @@
 package org.scenes.plugins.field;
 
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import org.scenes.api.EncodedMetric;
 import org.scenes.api.MetricProvider;
+import org.scenes.api.PackedMetric;
 import org.scenes.api.PluginConfig;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneMetric;
 import org.scenes.api.Side;
+import org.scenes.api.TuneDimension;
 import org.scenes.api.World;
 
 /**
@@ -58,7 +61,18 @@ public final class FieldMetricProvider implements MetricProvider {
         options.put("ball-frame", "field: the ball's offset along the pitch's axes (default); body: turned into the"
                 + " body's frame (ahead, to the right)");
         options.put("missing", "distance of a scene without a located world model (default 1000)");
+        options.put("index", "true: search an exact k-d tree index; false: scan every scene (default true)");
         return options;
+    }
+
+    @Override
+    public List<TuneDimension> tuneDimensions() {
+        return List.of(TuneDimension.log("position-weight", 0.03, 0.1, 0.3, 1),
+                TuneDimension.log("ball-weight", 0.3, 1, 3),
+                TuneDimension.log("ball-velocity-weight", 0.5, 2, 8),
+                TuneDimension.log("body-weight", 1, 3, 10),
+                TuneDimension.log("stamina-weight", 0.5, 2, 8),
+                TuneDimension.log("play-mode-penalty", 3, 10, 30));
     }
 
     @Override
@@ -82,8 +96,12 @@ public final class FieldMetricProvider implements MetricProvider {
         if (!frame.equals("field") && !frame.equals("body")) {
             throw new IllegalArgumentException("field: ball-frame must be field or body, not " + frame);
         }
+        String index = config.option("index", "true");
+        if (!index.equals("true") && !index.equals("false")) {
+            throw new IllegalArgumentException("field: index must be true or false, not " + index);
+        }
         return new FieldMetric(weights, weight(config, "play-mode-penalty", 10), weight(config, "missing", 1000),
-                frame.equals("body"));
+                frame.equals("body"), index.equals("true"));
     }
 
     private static double weight(PluginConfig config, String name, double fallback) {
@@ -101,17 +119,19 @@ public final class FieldMetricProvider implements MetricProvider {
     record Features(double[] values, boolean ballKnown, String mode) {
     }
 
-    static final class FieldMetric implements EncodedMetric<Features> {
+    static final class FieldMetric implements EncodedMetric<Features>, PackedMetric {
         private final double[] weights;
         private final double playModePenalty;
         private final double missing;
         private final boolean bodyFrame;
+        private final boolean indexed;
 
-        FieldMetric(double[] weights, double playModePenalty, double missing, boolean bodyFrame) {
+        FieldMetric(double[] weights, double playModePenalty, double missing, boolean bodyFrame, boolean indexed) {
             this.weights = weights;
             this.playModePenalty = playModePenalty;
             this.missing = missing;
             this.bodyFrame = bodyFrame;
+            this.indexed = indexed;
         }
 
         @Override
@@ -161,10 +181,16 @@ public final class FieldMetricProvider implements MetricProvider {
         }
 
         @Override
-        public double distance(Features query, Features stored, double bound) {
-            if (query.values() == null || stored.values() == null) {
-                return query.values() == stored.values() ? 0 : missing;
-            }
+        public PackedScenes pack(List<Scene> scenes) {
+            return indexed ? FieldIndex.build(this, scenes) : null;
+        }
+
+        double missing() {
+            return missing;
+        }
+
+        /** The sum of squares two located scenes differ by before their features: play mode and ball state. */
+        double fixedCost(Features query, Features stored) {
             double sum = 0;
             if (!query.mode().equals(stored.mode())) {
                 sum = playModePenalty * playModePenalty;
@@ -172,6 +198,15 @@ public final class FieldMetricProvider implements MetricProvider {
             if (query.ballKnown() != stored.ballKnown()) {
                 sum += missing * missing / 100;
             }
+            return sum;
+        }
+
+        @Override
+        public double distance(Features query, Features stored, double bound) {
+            if (query.values() == null || stored.values() == null) {
+                return query.values() == stored.values() ? 0 : missing;
+            }
+            double sum = fixedCost(query, stored);
             double limit = bound * bound;
             double[] a = query.values();
             double[] b = stored.values();

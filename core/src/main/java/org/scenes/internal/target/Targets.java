@@ -1,0 +1,231 @@
+package org.scenes.internal.target;
+
+import static org.scenes.internal.vision.VisionNumbers.normalize;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.scenes.api.Action;
+import org.scenes.api.ActionType;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
+import org.scenes.api.World;
+
+/**
+ * Re-expresses a recorded player's actions as what they achieved in the field frame, and reaches
+ * the same from another player's state with the soccer server's motion models (default player
+ * type): a turn becomes the body direction it produced (a turn with no ball in view stays a turn
+ * by its moment: a search); a dash the field direction it drove along
+ * (turning first when the body is more than {@link #DASH_TOLERANCE} degrees off it); a kick the
+ * ball velocity it produced, solved for power and direction from where the ball lies; a neck turn
+ * the field direction the head came to look; a catch is aimed at the ball. A direction that pointed
+ * at the ball or the opponent goal is re-aimed at them ({@link #anchored}). Moves and tackles stay
+ * as recorded. Where either world model lacks what a target needs (no position, no ball), the
+ * recorded command is sent as it is.
+ *
+ * <p>Both worlds are in the player's own frame (its team attacking towards +x), so a scene of
+ * either team targets the same field direction for both.
+ */
+public final class Targets {
+    static final double INERTIA_MOMENT = 5;
+    static final double KICK_POWER_RATE = 0.027;
+    static final double KICKABLE_MARGIN = 0.7;
+    static final double PLAYER_SIZE = 0.3;
+    static final double BALL_SIZE = 0.085;
+    static final double BALL_ACCEL_MAX = 2.7;
+    static final double MAX_POWER = 100;
+    static final double MAX_MOMENT = 180;
+    static final double MAX_NECK = 90;
+    /** A dash is sent as recorded when the body is this close to the recorded dash's field direction. */
+    static final double DASH_TOLERANCE = 45;
+    /** A turn of the body by less than this many degrees is taken as facing its target already. */
+    static final double REACHED = 5;
+    /** A recorded direction this close to the ball or the goal is taken as aimed at it. */
+    static final double ANCHOR = 10;
+    /** The opponent goal's centre in the player's own frame. */
+    static final double GOAL_X = 52.5;
+
+    private Targets() {
+    }
+
+    /**
+     * The actions that reach from {@code query}'s state what {@code recorded} achieved from
+     * {@code chosen}'s: the body action first, then the neck action, as recorded.
+     *
+     * @param recorded the chosen scene's actions (body and neck)
+     * @param chosen the scene that holds them, or null
+     * @param query the deciding player's scene
+     */
+    public static List<Action> reach(List<Action> recorded, Scene chosen, Scene query) {
+        if (chosen == null || recorded.isEmpty()) {
+            return recorded;
+        }
+        World donor = chosen.world();
+        World own = query.world();
+        if (donor == null || own == null || !donor.located() || !own.located()) {
+            return recorded;
+        }
+        double donorBall = ballAngle(chosen);
+        double ownBall = ballAngle(query);
+        double donorBodyAfter = donor.body();
+        double ownBodyAfter = own.body();
+        List<Action> reached = new ArrayList<>(recorded.size());
+        for (Action action : recorded) {
+            Action mine = action.type() == ActionType.TURN_NECK
+                    ? neck(action, donor, donorBodyAfter, donorBall, own, ownBodyAfter, ownBall)
+                    : body(action, donor, donorBall, own, ownBall);
+            if (action.type() == ActionType.TURN) {
+                donorBodyAfter = donor.body() + turned(action.first(), donor);
+            }
+            if (mine.type() == ActionType.TURN) {
+                ownBodyAfter = own.body() + turned(mine.first(), own);
+            }
+            reached.add(mine);
+        }
+        return List.copyOf(reached);
+    }
+
+    private static Action body(Action action, World donor, double donorBall, World own, double ownBall) {
+        return switch (action.type()) {
+            // a turn without the ball in view is a search: its target is the turn itself
+            case TURN -> Double.isNaN(donorBall) ? action
+                    : turnTo(anchored(donor.body() + turned(action.first(), donor), donor, donorBall, own, ownBall), own);
+            case DASH -> dash(action, donor, donorBall, own, ownBall);
+            case KICK -> kick(action, donor, own);
+            case CATCH -> Double.isNaN(ownBall) ? action : Action.catchBall(normalize(ownBall));
+            default -> action;
+        };
+    }
+
+    /** The ball's direction from the body in the scene's see; NaN when the see shows no ball. */
+    static double ballAngle(Scene scene) {
+        World world = scene.world();
+        for (SeenObject object : scene.objects()) {
+            if (object.kind() == ObjectKind.BALL && !object.remembered()) {
+                return normalize(object.direction() + (Double.isNaN(world.neck()) ? 0 : world.neck()));
+            }
+        }
+        return Double.NaN;
+    }
+
+    /**
+     * Whether the body action of {@code reached} (actions made by {@link #reach} for {@code query})
+     * achieves nothing: a turn of less than {@link #REACHED} degrees, the body already facing its target.
+     */
+    public static boolean alreadyReached(List<Action> reached, Scene query) {
+        if (reached.isEmpty() || reached.get(0).type() != ActionType.TURN || query.world() == null) {
+            return false;
+        }
+        return Math.abs(turned(reached.get(0).first(), query.world())) < REACHED;
+    }
+
+    /** The turn that brings {@code own}'s body to {@code direction} (as near as one turn can). */
+    static Action turnTo(double direction, World own) {
+        double moment = normalize(direction - own.body()) * (1 + INERTIA_MOMENT * speed(own));
+        return Action.turn(clamp(moment, MAX_MOMENT));
+    }
+
+    private static Action dash(Action action, World donor, double donorBall, World own, double ownBall) {
+        // the dash drives along the body plus its direction: the same body gives the same way
+        double body = anchored(donor.body(), donor, donorBall, own, ownBall);
+        if (Math.abs(normalize(body - own.body())) <= DASH_TOLERANCE) {
+            return action;
+        }
+        return turnTo(body, own);
+    }
+
+    /** A kick that gives the ball the velocity the recorded kick gave it, from where the ball lies for {@code own}. */
+    private static Action kick(Action action, World donor, World own) {
+        double donorRate = kickRate(donor);
+        double ownRate = kickRate(own);
+        if (Double.isNaN(donorRate) || Double.isNaN(ownRate) || ownRate <= 0) {
+            return Action.kick(action.first(), normalize(donor.body() + action.second() - own.body()));
+        }
+        double accel = Math.min(Math.max(action.first(), 0) * donorRate, BALL_ACCEL_MAX);
+        double wantedX = velocity(donor.ballVx()) + accel * Math.cos(Math.toRadians(donor.body() + action.second()));
+        double wantedY = velocity(donor.ballVy()) + accel * Math.sin(Math.toRadians(donor.body() + action.second()));
+        // the ball's new course, aimed again at the goal when the recorded one was
+        double course = anchoredToGoal(bearing(wantedX, wantedY), donor.ballX(), donor.ballY(), own.ballX(), own.ballY());
+        double speed = Math.hypot(wantedX, wantedY);
+        wantedX = speed * Math.cos(Math.toRadians(course));
+        wantedY = speed * Math.sin(Math.toRadians(course));
+        double neededX = wantedX - velocity(own.ballVx());
+        double neededY = wantedY - velocity(own.ballVy());
+        double power = Math.min(Math.hypot(neededX, neededY) / ownRate, MAX_POWER);
+        return Action.kick(power, normalize(bearing(neededX, neededY) - own.body()));
+    }
+
+    /** The turn_neck that looks where the recorded head looked, within the neck's range. */
+    private static Action neck(Action action, World donor, double donorBody, double donorBall, World own,
+                               double ownBody, double ownBall) {
+        double donorNeck = Double.isNaN(donor.neck()) ? 0 : donor.neck();
+        double ownNeck = Double.isNaN(own.neck()) ? 0 : own.neck();
+        // the ball's bearings after this cycle's body turns
+        double looked = anchored(donorBody + clamp(donorNeck + action.first(), MAX_NECK), donor,
+                donorBall - (donorBody - donor.body()), own, ownBall - (ownBody - own.body()));
+        double neck = clamp(normalize(looked - ownBody), MAX_NECK);
+        return Action.turnNeck(neck - ownNeck);
+    }
+
+    /**
+     * A field direction of the recorded player re-aimed for {@code own}: one that pointed at the
+     * ball (within {@link #ANCHOR} degrees; {@code donorBall} and {@code ownBall} are the ball's
+     * directions from each body) points at {@code own}'s ball with the same offset, one
+     * that pointed at the opponent goal's centre at that goal; any other stays a field direction.
+     */
+    static double anchored(double direction, World donor, double donorBall, World own, double ownBall) {
+        if (!Double.isNaN(donorBall) && !Double.isNaN(ownBall)) {
+            double offset = normalize(direction - (donor.body() + donorBall));
+            if (Math.abs(offset) <= ANCHOR) {
+                return own.body() + ownBall + offset;
+            }
+        }
+        return anchoredToGoal(direction, donor.x(), donor.y(), own.x(), own.y());
+    }
+
+    /** A direction from ({@code fromX}, {@code fromY}) re-aimed from ({@code toX}, {@code toY}) when it pointed at the goal. */
+    private static double anchoredToGoal(double direction, double fromX, double fromY, double toX, double toY) {
+        if (Double.isNaN(fromX) || Double.isNaN(toX)) {
+            return direction;
+        }
+        double offset = normalize(direction - bearing(GOAL_X - fromX, -fromY));
+        return Math.abs(offset) <= ANCHOR ? bearing(GOAL_X - toX, -toY) + offset : direction;
+    }
+
+    /** The body's turn for a moment at the player's speed. */
+    static double turned(double moment, World world) {
+        return moment / (1 + INERTIA_MOMENT * speed(world));
+    }
+
+    /**
+     * The share of kick power that reaches the ball where it lies (the server's kick model), or
+     * NaN when the ball's position is unknown; at most zero out of reach.
+     */
+    static double kickRate(World world) {
+        if (!world.ballKnown()) {
+            return Double.NaN;
+        }
+        double dx = world.ballX() - world.x();
+        double dy = world.ballY() - world.y();
+        double gap = Math.max(Math.hypot(dx, dy) - PLAYER_SIZE - BALL_SIZE, 0);
+        double angle = Math.abs(normalize(bearing(dx, dy) - world.body()));
+        return KICK_POWER_RATE * (1 - 0.25 * angle / 180 - 0.25 * gap / KICKABLE_MARGIN);
+    }
+
+    private static double speed(World world) {
+        double speed = Math.hypot(world.vx(), world.vy());
+        return Double.isNaN(speed) ? 0 : speed;
+    }
+
+    private static double velocity(double component) {
+        return Double.isNaN(component) ? 0 : component;
+    }
+
+    private static double bearing(double dx, double dy) {
+        return Math.toDegrees(Math.atan2(dy, dx));
+    }
+
+    private static double clamp(double value, double limit) {
+        return Math.max(-limit, Math.min(limit, value));
+    }
+}

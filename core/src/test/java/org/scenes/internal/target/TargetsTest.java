@@ -1,0 +1,154 @@
+package org.scenes.internal.target;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.scenes.api.Action;
+import org.scenes.api.ActionType;
+import org.scenes.api.Grid;
+import org.scenes.api.Neighbour;
+import org.scenes.api.ObjectKind;
+import org.scenes.api.Relation;
+import org.scenes.api.Scene;
+import org.scenes.api.SeenObject;
+import org.scenes.api.World;
+import org.scenes.internal.validate.Validator;
+
+class TargetsTest {
+    private static final double DELTA = 1e-6;
+
+    /** A standing player at (x, y) facing {@code body}, neck straight, the ball at (ballX, ballY) at rest. */
+    static World world(double x, double y, double body, double ballX, double ballY) {
+        return new World(x, y, body, 0, 0, 0, 8000, 1, 0, ballX, ballY, 0, 0, 0, List.of(), "play_on", 0, 0);
+    }
+
+    /** A scene of {@code world} whose see shows the ball where the world has it (none when {@code seesBall} is false). */
+    static Scene scene(World world, boolean seesBall, Action... actions) {
+        List<SeenObject> objects = List.of();
+        if (seesBall) {
+            double dx = world.ballX() - world.x();
+            double dy = world.ballY() - world.y();
+            double direction = Math.toDegrees(Math.atan2(dy, dx)) - world.body() - world.neck();
+            objects = List.of(SeenObject.simple(ObjectKind.BALL, "b", Relation.NONE, Math.hypot(dx, dy),
+                    org.scenes.internal.vision.VisionNumbers.normalize(direction), Grid.DEFAULT));
+        }
+        return new Scene(10, null, objects, List.of(actions), null, 0, world);
+    }
+
+    private static Action only(List<Action> actions) {
+        assertEquals(1, actions.size(), actions.toString());
+        return actions.get(0);
+    }
+
+    @Test
+    void aTurnTowardsTheBallTurnsTowardsTheOwnBall() {
+        // the recorded player turned 30 degrees to face its ball; this one has its ball 50 degrees to the left
+        Scene chosen = scene(world(0, 0, 0, 10 * Math.cos(Math.toRadians(30)), 10 * Math.sin(Math.toRadians(30))), true,
+                Action.turn(30));
+        Scene query = scene(world(-20, 5, 90, -20 + 5 * Math.cos(Math.toRadians(40)), 5 + 5 * Math.sin(Math.toRadians(40))),
+                true);
+        Action turn = only(Targets.reach(chosen.actions(), chosen, query));
+        assertEquals(ActionType.TURN, turn.type());
+        assertEquals(-50, turn.first(), 1e-3);
+    }
+
+    @Test
+    void aTurnWithoutTheBallInViewIsASearchAndKeepsItsMoment() {
+        Scene chosen = scene(world(0, 0, 0, 10, 10), false, Action.turn(40));
+        Scene query = scene(world(-20, 5, 90, 0, 0), true);
+        assertEquals(Action.turn(40), only(Targets.reach(chosen.actions(), chosen, query)));
+    }
+
+    @Test
+    void aTurnToAFieldDirectionFacesItFromTheOwnBodyWithTheOwnSpeed() {
+        // the ball far off to the side: the turn faced the field direction 20 degrees
+        Scene chosen = scene(world(0, 0, 0, 0, 30), true, Action.turn(20));
+        World moving = new World(5, 5, -40, 0, 0.2, 0, 8000, 1, 0, 5, 35, 0, 0, 0, List.of(), "play_on", 0, 0);
+        Action turn = only(Targets.reach(chosen.actions(), chosen, scene(moving, true)));
+        // 60 degrees to turn, at 0.2 m/cycle the body turns moment / (1 + 5 * 0.2)
+        assertEquals(120, turn.first(), 1e-6);
+    }
+
+    @Test
+    void aDashIsSentAsRecordedWhenFacingItsWayAndTurnsFirstOtherwise() {
+        Action dash = Action.dash(80);
+        // the body 40 degrees off the goal and 130 off the ball: a field direction
+        Scene chosen = scene(world(0, 0, 40, 0, -30), true, dash);
+        double near = 40 + Targets.DASH_TOLERANCE - 1;
+        assertEquals(dash, only(Targets.reach(chosen.actions(), chosen, scene(world(3, 3, near, 3, -27), true))));
+        double far = 40 + Targets.DASH_TOLERANCE + 20;
+        Action turn = only(Targets.reach(chosen.actions(), chosen, scene(world(3, 3, far, 3, -27), true)));
+        assertEquals(-Targets.DASH_TOLERANCE - 20, turn.first(), 1e-9);
+    }
+
+    @Test
+    void aKickAtTheGoalIsAimedAtTheGoalFromTheOwnBall() {
+        // the recorded player kicked from (30, 10) straight at the goal's centre (52.5, 0)
+        World donor = world(30, 10, 0, 30.5, 10);
+        double atGoal = Math.toDegrees(Math.atan2(-10, 52.5 - 30.5));
+        Scene chosen = scene(donor, true, Action.kick(100, atGoal));
+        World own = world(40, -15, 90, 40, -14.5);
+        Action kick = only(Targets.reach(chosen.actions(), chosen, scene(own, true)));
+        assertEquals(ActionType.KICK, kick.type());
+        double course = own.body() + kick.second();
+        assertEquals(Math.toDegrees(Math.atan2(14.5, 52.5 - 40)), org.scenes.internal.vision.VisionNumbers.normalize(course),
+                1e-6);
+    }
+
+    @Test
+    void aPassKeepsItsFieldDirectionAndBallSpeed() {
+        // a kick across the pitch (90 degrees off the goal): same field direction, power for the same speed
+        World donor = world(0, 0, 0, 0.5, 0);
+        Scene chosen = scene(donor, true, Action.kick(60, 90));
+        World own = world(10, 10, -90, 10, 9.5); // the ball straight ahead of its body, as the recorded one's
+        Action kick = only(Targets.reach(chosen.actions(), chosen, scene(own, true)));
+        assertEquals(180, Math.abs(kick.second()), 1e-6);
+        double donorRate = Targets.kickRate(donor);
+        assertEquals(60 * donorRate, kick.first() * Targets.kickRate(own), 1e-9);
+    }
+
+    @Test
+    void aNeckTurnLooksWhereTheRecordedHeadLookedAndStaysWithinTheNeck() {
+        World donor = world(0, 0, 0, 0, 30);
+        Scene chosen = scene(donor, false, Action.turnNeck(45));
+        Action neck = only(Targets.reach(chosen.actions(), chosen, scene(world(0, 0, 30, 0, 30), false)));
+        assertEquals(Action.turnNeck(15), neck);
+        Action limited = only(Targets.reach(chosen.actions(), chosen, scene(world(0, 0, -90, 0, 30), false)));
+        assertEquals(Action.turnNeck(90), limited);
+    }
+
+    @Test
+    void aCatchIsAimedAtTheSeenBall() {
+        Scene chosen = scene(world(-50, 0, 0, -49, 0), true, Action.catchBall(0));
+        Action caught = only(Targets.reach(chosen.actions(), chosen, scene(world(-50, 0, 0, -49, 1), true)));
+        assertEquals(45, caught.first(), 1e-6);
+    }
+
+    @Test
+    void withoutAWorldModelTheRecordedActionsAreSent() {
+        List<Action> recorded = List.of(Action.turn(30), Action.turnNeck(10));
+        Scene chosen = new Scene(1, null, List.of(), recorded, null, 0, null);
+        assertSame(recorded, Targets.reach(recorded, chosen, scene(world(0, 0, 0, 1, 1), true)));
+        World lost = world(Double.NaN, Double.NaN, 0, 1, 1);
+        assertSame(recorded, Targets.reach(recorded, scene(world(0, 0, 0, 1, 1), true, Action.turn(30)),
+                scene(lost, true)));
+    }
+
+    @Test
+    void aTurnAlreadyReachedGivesWayToTheNextNeighboursTarget() {
+        Scene query = scene(world(0, 0, 0, 10, 0.2), true);
+        // the nearest turned to face its ball, which this player already faces; the next dashed
+        Scene turned = scene(world(0, 0, 0, 10 * Math.cos(Math.toRadians(20)), 10 * Math.sin(Math.toRadians(20))), true,
+                Action.turn(20));
+        Scene dashed = scene(world(0, 0, 0, 10, 0), true, Action.dash(100));
+        List<Neighbour> nearest = List.of(new Neighbour(turned, 0, 0.1), new Neighbour(dashed, 1, 0.2));
+        assertTrue(Targets.alreadyReached(Targets.reach(turned.actions(), turned, query), query));
+        assertEquals(List.of(Action.dash(100)), Validator.prediction(Action.turn(20), nearest, query, Replay.TARGET));
+        assertEquals(List.of(Action.turn(20)), Validator.prediction(Action.turn(20), nearest, query, Replay.RAW));
+        assertFalse(Targets.alreadyReached(List.of(Action.dash(100)), query));
+    }
+}

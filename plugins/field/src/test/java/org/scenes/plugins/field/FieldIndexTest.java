@@ -1,0 +1,98 @@
+package org.scenes.plugins.field;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.scenes.api.Action;
+import org.scenes.api.Grid;
+import org.scenes.api.Neighbour;
+import org.scenes.api.Observer;
+import org.scenes.api.PluginConfig;
+import org.scenes.api.PluginRegistry;
+import org.scenes.api.Scene;
+import org.scenes.api.Side;
+import org.scenes.api.World;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
+
+class FieldIndexTest {
+    private static final List<String> MODES = List.of("play_on", "kick_off_l", "kick_off_r", "goal_kick_l");
+
+    /** Random scenes: several play modes and sides, unknown balls, unlocated worlds, and exact duplicates (ties). */
+    private static List<Scene> scenes(Random random, int n) {
+        List<Scene> scenes = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            if (i > 0 && random.nextInt(10) == 0) {
+                scenes.add(scenes.get(random.nextInt(i)));
+                continue;
+            }
+            boolean located = random.nextInt(30) != 0;
+            boolean ballKnown = random.nextInt(8) != 0;
+            double x = located ? random.nextDouble() * 105 - 52.5 : Double.NaN;
+            // coarse positions, so many scenes share coordinates and distances tie
+            double y = Math.round(random.nextDouble() * 68 - 34);
+            World world = new World(x, y, random.nextInt(8) * 45, 0, random.nextGaussian() * 0.2, 0,
+                    random.nextInt(3) * 4000, 1, 0, ballKnown ? x + random.nextGaussian() * 10 : Double.NaN,
+                    ballKnown ? y + random.nextGaussian() * 10 : Double.NaN, random.nextGaussian(), random.nextGaussian(),
+                    0, List.of(), MODES.get(random.nextInt(MODES.size())), 0, 0);
+            Side side = random.nextBoolean() ? Side.LEFT : Side.RIGHT;
+            scenes.add(new Scene(i, new Observer("T", side, 1 + random.nextInt(11)), List.of(), List.of(Action.dash(50)),
+                    null, 0, world));
+        }
+        return scenes;
+    }
+
+    @Test
+    void theIndexFindsTheScansNeighboursBitForBit() {
+        Random random = new Random(7);
+        List<Scene> stored = scenes(random, 3000);
+        List<Scene> queries = new ArrayList<>(scenes(random, 150));
+        queries.addAll(stored.subList(0, 50));
+        for (Map<String, String> options : List.of(Map.<String, String>of(), Map.of("ball-frame", "body"),
+                Map.of("position-weight", "0", "play-mode-penalty", "0.5"))) {
+            PluginConfig config = PluginConfig.DEFAULT.withOptions(options);
+            FieldMetricProvider.FieldMetric metric = (FieldMetricProvider.FieldMetric) PluginRegistry.load()
+                    .metric("field", config);
+            KnowledgeBase knowledge = KnowledgeBase.of(Grid.DEFAULT, stored);
+            for (int k : new int[] {1, 5, 15}) {
+                Recognizer recognizer = new Recognizer(knowledge, () -> PluginRegistry.load().metric("field", config), k);
+                for (Scene query : queries) {
+                    List<Neighbour> expected = exhaustive(metric, stored, query).subList(0, k);
+                    List<Neighbour> actual = recognizer.nearest(query);
+                    assertEquals(k, actual.size());
+                    for (int i = 0; i < k; i++) {
+                        String where = "neighbour " + i + ", k=" + k + ", options " + options + ", query " + query.world();
+                        assertEquals(expected.get(i).index(), actual.get(i).index(), where);
+                        assertEquals(Double.doubleToLongBits(expected.get(i).distance()),
+                                Double.doubleToLongBits(actual.get(i).distance()), where);
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
+    void theIndexIsUsedUnlessTurnedOff() {
+        List<Scene> stored = scenes(new Random(3), 50);
+        PluginRegistry registry = PluginRegistry.load();
+        assertEquals(FieldIndex.class, ((FieldMetricProvider.FieldMetric) registry.metric("field", PluginConfig.DEFAULT))
+                .pack(stored).getClass());
+        assertEquals(null, ((FieldMetricProvider.FieldMetric) registry.metric("field",
+                PluginConfig.DEFAULT.withOptions(Map.of("index", "false")))).pack(stored));
+    }
+
+    private static List<Neighbour> exhaustive(FieldMetricProvider.FieldMetric metric, List<Scene> stored, Scene query) {
+        FieldMetricProvider.Features q = metric.encode(query);
+        List<Neighbour> all = new ArrayList<>();
+        for (int i = 0; i < stored.size(); i++) {
+            all.add(new Neighbour(null, i, metric.distance(q, metric.encode(stored.get(i)), Double.POSITIVE_INFINITY)));
+        }
+        all.sort(Comparator.comparingDouble(Neighbour::distance).thenComparingInt(Neighbour::index));
+        return all;
+    }
+}
