@@ -72,9 +72,12 @@ final class ConvertCommand implements Callable<Integer> {
     @Mixin
     GameLogOptions gameLogOptions;
 
-    @Option(names = "--world", description = "Give each scene the player's world model (its position, the ball's,"
-            + " the players it remembers, stamina, play mode, score; scene format 2, docs/scene-format.md).")
-    boolean world;
+    @Option(names = "--world", negatable = true, defaultValue = "true", fallbackValue = "true",
+            description = "Give each scene the player's world model (its position, the ball's, the players it"
+                    + " remembers, stamina, play mode, score; scene format 2, docs/scene-format.md): what the field"
+                    + " metric, --replay target and the shipped configurations need. --no-world leaves it out"
+                    + " (files a third smaller, conversion a quarter faster). Default: on.")
+    boolean world = true;
 
     @Option(names = "--threads", paramLabel = "N", description = "Game logs: threads rebuilding the players."
             + " Default: the number of cores.")

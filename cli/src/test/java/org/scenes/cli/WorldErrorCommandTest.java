@@ -32,7 +32,7 @@ class WorldErrorCommandTest {
         }
         assertEquals(0, cli.run("convert", logs.resolve("Teal_1.lsf.gz"), logs.resolve("Amber_2.lsf.gz"),
                 "--out-dir", dir.resolve("world"), "--world"), cli.err());
-        assertEquals(0, cli.run("convert", logs.resolve("Teal_1.lsf.gz"), "--out-dir", dir.resolve("plain")), cli.err());
+        assertEquals(0, cli.run("convert", logs.resolve("Teal_1.lsf.gz"), "--no-world", "--out-dir", dir.resolve("plain")), cli.err());
         assertTrue(text(dir.resolve("world/Teal_1.json.gz")).contains("\"world\":{\"x\":"));
         assertFalse(text(dir.resolve("plain/Teal_1.json.gz")).contains("\"world\""));
 

@@ -154,7 +154,21 @@ public final class SyntheticScenes {
         See see = (See) parser.parse(vision.see(self));
         String command = Teachers.krisletCommand(see, observer.side());
         last = ((PlayerCommand) parser.parse(command)).toAction();
-        return new Scene(cycle, observer, SceneConverter.seenObjects(see, observer, grid), List.of(last));
+        return new Scene(cycle, observer, SceneConverter.seenObjects(see, observer, grid), List.of(last), null, 0,
+                truth(self, observer.side()));
+    }
+
+    /**
+     * The observer's true state as a world model in its own frame (the right team's turned by 180
+     * degrees): what a perfect localisation would give, so world-model metrics can be measured too.
+     */
+    private org.scenes.api.World truth(Player self, Side side) {
+        double sign = side == Side.LEFT ? 1 : -1;
+        Ball ball = world.ball;
+        return new org.scenes.api.World(sign * self.x, sign * self.y,
+                Numbers.normalize(self.body + (side == Side.LEFT ? 0 : 180)), self.neck, sign * self.vx,
+                sign * self.vy, self.stamina, self.effort, 0, sign * ball.x, sign * ball.y, sign * ball.vx,
+                sign * ball.vy, 0, List.of(), world.mode.word, 0, 0);
     }
 
     /** At a distance from the ball, within the pitch's margin, looking at it or anywhere. */
