@@ -281,7 +281,7 @@ public final class ImitationBrain implements Brain {
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
-        List<Action> actions = Validator.prediction(action, nearest, seen, replay);
+        List<Action> actions = Validator.prediction(action, nearest, seen, replay, recognizer.knowledge());
         Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age, seen.world());
         actions.forEach(world::sent);
         history.addLast(made);

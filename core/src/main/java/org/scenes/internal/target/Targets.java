@@ -38,6 +38,10 @@ public final class Targets {
     static final double MAX_NECK = 90;
     /** A dash is sent as recorded when the body is this close to the recorded dash's field direction. */
     static final double DASH_TOLERANCE = 45;
+    /** A direction more than this far off is behind: turned to one way only ({@link #turnAngle}). */
+    static final double BEHIND = 150;
+    /** A destination this near is reached: the player then does what the chosen scene's player did. */
+    static final double ARRIVED = 1;
     /** A turn of the body by less than this many degrees is taken as facing its target already. */
     static final double REACHED = 5;
     /** A recorded direction this close to the ball or the goal is taken as aimed at it. */
@@ -57,6 +61,18 @@ public final class Targets {
      * @param query the deciding player's scene
      */
     public static List<Action> reach(List<Action> recorded, Scene chosen, Scene query) {
+        return reach(recorded, chosen, query, null, Double.NaN);
+    }
+
+    /**
+     * The same, with the point the neighbours ran to: a dash or turn then steers the player to
+     * {@code destination} ({@link #goTo}) rather than copying one neighbour's heading.
+     *
+     * @param destination the mean destination of the neighbours ({@link Destinations}), or null
+     * @param power the dash power to run with, NaN for the recorded dash's or the full power
+     */
+    public static List<Action> reach(List<Action> recorded, Scene chosen, Scene query, double[] destination,
+                                     double power) {
         if (chosen == null || recorded.isEmpty()) {
             return recorded;
         }
@@ -71,8 +87,10 @@ public final class Targets {
         double ownBodyAfter = own.body();
         List<Action> reached = new ArrayList<>(recorded.size());
         for (Action action : recorded) {
+            boolean run = destination != null && (action.type() == ActionType.DASH || action.type() == ActionType.TURN);
             Action mine = action.type() == ActionType.TURN_NECK
                     ? neck(action, donor, donorBodyAfter, donorBall, own, ownBodyAfter, ownBall)
+                    : run ? goTo(destination, own, runPower(action, power), body(action, donor, donorBall, own, ownBall))
                     : body(action, donor, donorBall, own, ownBall);
             if (action.type() == ActionType.TURN) {
                 donorBodyAfter = donor.body() + turned(action.first(), donor);
@@ -119,9 +137,45 @@ public final class Targets {
         return Math.abs(turned(reached.get(0).first(), query.world())) < REACHED;
     }
 
+    private static double runPower(Action action, double power) {
+        if (!Double.isNaN(power)) {
+            return power;
+        }
+        return action.type() == ActionType.DASH ? action.first() : MAX_POWER;
+    }
+
+    /**
+     * Steers towards {@code destination}: a turn when the body is off its bearing by more than the
+     * larger of {@link #DASH_TOLERANCE} and the angle that misses it by {@link #ARRIVED} metres,
+     * else a dash at {@code power}; {@code arrived} once within {@link #ARRIVED} metres.
+     */
+    static Action goTo(double[] destination, World own, double power, Action arrived) {
+        double dx = destination[0] - own.x();
+        double dy = destination[1] - own.y();
+        double distance = Math.hypot(dx, dy);
+        if (distance < ARRIVED) {
+            return arrived;
+        }
+        double off = normalize(bearing(dx, dy) - own.body());
+        double tolerance = Math.max(DASH_TOLERANCE, Math.toDegrees(Math.asin(Math.min(1, ARRIVED / distance))));
+        if (Math.abs(off) > tolerance) {
+            return Action.turn(clamp(turnAngle(off) * (1 + INERTIA_MOMENT * speed(own)), MAX_MOMENT));
+        }
+        return Action.dash(power);
+    }
+
+    /**
+     * The way to turn by {@code off} degrees: a direction nearly behind is turned to clockwise
+     * (positive) whichever side the estimate puts it, so turns of a moving player (which cover
+     * only part of the angle) do not alternate between left and right on a noisy estimate.
+     */
+    static double turnAngle(double off) {
+        return Math.abs(off) > BEHIND && off < 0 ? off + 360 : off;
+    }
+
     /** The turn that brings {@code own}'s body to {@code direction} (as near as one turn can). */
     static Action turnTo(double direction, World own) {
-        double moment = normalize(direction - own.body()) * (1 + INERTIA_MOMENT * speed(own));
+        double moment = turnAngle(normalize(direction - own.body())) * (1 + INERTIA_MOMENT * speed(own));
         return Action.turn(clamp(moment, MAX_MOMENT));
     }
 

@@ -14,6 +14,7 @@ import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
+import org.scenes.internal.target.Destinations;
 import org.scenes.internal.target.Replay;
 import org.scenes.internal.target.Targets;
 
@@ -53,7 +54,7 @@ public final class Validator {
             try {
                 List<Neighbour> nearest = recognizer.nearest(test.get(i));
                 predicted[i] = prediction(selector.get().select(nearest, queryRandom(seed, i)), nearest, test.get(i),
-                        replay);
+                        replay, recognizer.knowledge());
             } catch (RuntimeException e) {
                 // a plugin's or script's error, located by the query it failed on
                 throw new QueryFailure(i, test.get(i).cycle(), e);
@@ -73,24 +74,50 @@ public final class Validator {
      * (a turn to where it faces) gives way to the nearest neighbour's whose target it has not.
      */
     public static List<Action> prediction(Action selected, List<Neighbour> nearest, Scene query, Replay replay) {
+        return prediction(selected, nearest, query, replay, null);
+    }
+
+    /**
+     * The same; with the knowledge base the neighbours come from, a run (dash or turn) steers to
+     * the neighbours' mean destination ({@link Destinations}) at their mean dash power.
+     */
+    public static List<Action> prediction(Action selected, List<Neighbour> nearest, Scene query, Replay replay,
+                                          KnowledgeBase knowledge) {
         List<Action> actions = withNeck(selected, nearest);
         if (replay == Replay.RAW || actions.isEmpty()) {
             return actions;
         }
-        List<Action> reached = Targets.reach(actions, donor(actions.get(0), nearest), query);
+        double[] destination = knowledge == null ? null : Destinations.of(knowledge).mean(nearest);
+        double power = meanDashPower(nearest);
+        List<Action> reached = Targets.reach(actions, donor(actions.get(0), nearest), query, destination, power);
         if (!Targets.alreadyReached(reached, query)) {
             return reached;
         }
         for (Neighbour neighbour : nearest) {
             Action other = neighbour.scene().primaryAction();
             if (other != null) {
-                List<Action> instead = Targets.reach(withNeck(other, List.of(neighbour)), neighbour.scene(), query);
+                List<Action> instead = Targets.reach(withNeck(other, List.of(neighbour)), neighbour.scene(), query,
+                        destination, power);
                 if (!Targets.alreadyReached(instead, query)) {
                     return instead;
                 }
             }
         }
         return reached;
+    }
+
+    /** The mean power of the neighbours' dashes, NaN when none dashed. */
+    private static double meanDashPower(List<Neighbour> nearest) {
+        double sum = 0;
+        int count = 0;
+        for (Neighbour neighbour : nearest) {
+            Action action = neighbour.scene().primaryAction();
+            if (action != null && action.type() == ActionType.DASH && !Double.isNaN(action.first())) {
+                sum += action.first();
+                count++;
+            }
+        }
+        return count == 0 ? Double.NaN : sum / count;
     }
 
     /**

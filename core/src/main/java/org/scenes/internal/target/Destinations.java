@@ -1,0 +1,106 @@
+package org.scenes.internal.target;
+
+import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.WeakHashMap;
+import org.scenes.api.ActionType;
+import org.scenes.api.Neighbour;
+import org.scenes.api.Observer;
+import org.scenes.api.Scene;
+import org.scenes.api.World;
+import org.scenes.internal.match.KnowledgeBase;
+
+/**
+ * Where each stored scene's player was {@link #AHEAD} cycles later: the point it was running to,
+ * read from the same player's later scene in the knowledge base (scenes of one recorded player lie
+ * in cycle order, one sequence after another). Unknown when that scene is missing, unlocated, or
+ * a move or another play mode lies between (a kick-off's jump is no run).
+ */
+public final class Destinations {
+    /** How far ahead the destination is read: a second of play, the span of one run to a spot. */
+    static final int AHEAD = 10;
+    /** Later scenes looked at past {@link #AHEAD} cycles when the exact one is missing (sparse vision). */
+    private static final int SLACK = 5;
+    private static final Map<KnowledgeBase, Destinations> CACHE = new WeakHashMap<>();
+
+    private final double[] x;
+    private final double[] y;
+
+    private Destinations(double[] x, double[] y) {
+        this.x = x;
+        this.y = y;
+    }
+
+    /** The destinations of a knowledge base's scenes, computed once per knowledge base. */
+    public static Destinations of(KnowledgeBase knowledge) {
+        Objects.requireNonNull(knowledge, "knowledge");
+        synchronized (CACHE) {
+            return CACHE.computeIfAbsent(knowledge, base -> of(base.scenes()));
+        }
+    }
+
+    /** The destinations of scenes in stored order; each scene is read once (a knowledge base decodes on every read). */
+    static Destinations of(List<Scene> scenes) {
+        int n = scenes.size();
+        int[] cycle = new int[n];
+        Observer[] observer = new Observer[n];
+        String[] mode = new String[n];
+        boolean[] moved = new boolean[n];
+        double[] atX = new double[n];
+        double[] atY = new double[n];
+        int i = 0;
+        for (Scene scene : scenes) {
+            World world = scene.world();
+            cycle[i] = scene.cycle();
+            observer[i] = scene.observer();
+            mode[i] = world == null ? null : world.playMode();
+            moved[i] = scene.actionType() == ActionType.MOVE;
+            atX[i] = world == null ? Double.NaN : world.x();
+            atY[i] = world == null ? Double.NaN : world.y();
+            i++;
+        }
+        double[] x = new double[n];
+        double[] y = new double[n];
+        Arrays.fill(x, Double.NaN);
+        Arrays.fill(y, Double.NaN);
+        for (i = 0; i < n; i++) {
+            if (mode[i] == null || Double.isNaN(atX[i])) {
+                continue;
+            }
+            for (int j = i + 1; j < n; j++) {
+                int gap = cycle[j] - cycle[i];
+                if (gap < 0 || gap > AHEAD + SLACK || !Objects.equals(observer[j], observer[i])
+                        || !mode[i].equals(mode[j]) || moved[j]) {
+                    break;
+                }
+                if (gap >= AHEAD) {
+                    x[i] = atX[j];
+                    y[i] = atY[j];
+                    break;
+                }
+            }
+        }
+        return new Destinations(x, y);
+    }
+
+    /**
+     * The mean destination of the neighbours that have one, or null when none has. (A neighbour
+     * found as a transform's image, such as a mirrored scene, counts with its stored scene's.)
+     */
+    public double[] mean(List<Neighbour> nearest) {
+        double sumX = 0;
+        double sumY = 0;
+        int count = 0;
+        for (Neighbour neighbour : nearest) {
+            int i = neighbour.index();
+            if (i >= 0 && i < x.length && !Double.isNaN(x[i])) {
+                sumX += x[i];
+                sumY += y[i];
+                count++;
+            }
+        }
+        return count == 0 ? null : new double[] {sumX / count, sumY / count};
+    }
+}
