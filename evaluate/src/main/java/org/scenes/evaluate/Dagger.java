@@ -149,6 +149,11 @@ public final class Dagger {
         return round;
     }
 
+    /** The scenes the last round labelled, one sequence per imitating player and game, in seed and uniform number order. */
+    List<List<Scene>> corrections() {
+        return corrections;
+    }
+
     /** {@code base}'s stored scenes and the labelled sequences through fresh transforms each. */
     KnowledgeBase extended(KnowledgeBase base, List<List<Scene>> sequences) {
         KnowledgeBase.Builder builder = KnowledgeBase.builder(base.grid());
