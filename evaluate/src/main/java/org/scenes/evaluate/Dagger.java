@@ -93,9 +93,9 @@ public final class Dagger {
      * {@code thinkSteps} steps ({@link PacedBrain}).
      */
     public Dagger(Evaluation.Plan plan, KnowledgeBase knowledge, Learner.Matching matching, int thinkSteps) {
-        if (plan.external()) {
-            throw new IllegalArgumentException("DAgger needs teacher and opponent in process (the shadow is the"
-                    + " teacher's own brain)");
+        if (plan.teacher().brains() instanceof ExternalTeam) {
+            throw new IllegalArgumentException("DAgger needs the teacher in process: the shadow is the teacher's own"
+                    + " brain");
         }
         if (thinkSteps < 0) {
             throw new IllegalArgumentException("think steps must be 0 or more, not " + thinkSteps);
