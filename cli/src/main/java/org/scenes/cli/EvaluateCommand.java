@@ -18,6 +18,7 @@ import org.scenes.api.PluginRegistry;
 import org.scenes.api.Side;
 import org.scenes.evaluate.Arena;
 import org.scenes.evaluate.Comparison;
+import org.scenes.evaluate.Dagger;
 import org.scenes.evaluate.Evaluation;
 import org.scenes.evaluate.ExternalTeam;
 import org.scenes.evaluate.HtmlReport;
@@ -93,6 +94,13 @@ final class EvaluateCommand implements Callable<Integer> {
                     + " steps (Krislet: 2); 0 answers every see, as 'scenes play' does. Default: ${DEFAULT-VALUE}.")
     int thinkSteps;
 
+    @Option(names = "--dagger", paramLabel = "N", defaultValue = "0",
+            description = "After the evaluation, N rounds of DAgger: the scenes the imitator built in its games (the"
+                    + " same seeds each round), labelled with what its shadow teacher sent on the same sees, join"
+                    + " its knowledge base, and it is evaluated again; one row of figures per round. Needs the"
+                    + " teacher in process (not --teacher-command). Default: ${DEFAULT-VALUE}.")
+    int dagger;
+
     @Option(names = "--json", description = "Print one JSON object instead of the table.")
     boolean json;
 
@@ -144,6 +152,10 @@ final class EvaluateCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         if (teacherGames != null || imitatorGames != null || team != null) {
+            if (dagger != 0) {
+                throw new UsageException("--dagger: plays and corrects the imitator; not with --teacher-games (the"
+                        + " figures of existing game logs)");
+            }
             return fromGameLogs();
         }
         Setup setup = setup();
@@ -157,8 +169,14 @@ final class EvaluateCommand implements Callable<Integer> {
             Map<String, Object> root = new LinkedHashMap<>();
             root.put("about", outcome.about());
             root.putAll(Tables.json(outcome.comparison()));
+            if (!outcome.rounds().isEmpty()) {
+                root.put("rounds", outcome.rounds().stream().map(Dagger.Round::json).toList());
+            }
             out.println(ConfigFiles.JSON.writeValueAsString(root));
         } else {
+            if (!outcome.rounds().isEmpty()) {
+                out.printf("%nRound %d%n", outcome.rounds().size() - 1);
+            }
             out.print(Tables.text(outcome.comparison()));
         }
         if (report != null) {
@@ -243,11 +261,12 @@ final class EvaluateCommand implements Callable<Integer> {
     /** Everything the evaluation needs, checked. */
     record Setup(String teacherName, GameSetup.Team teacher, GameSetup.Team opponent, Side side, MatchConfig config,
                  PluginRegistry registry, List<Path> sceneFiles, int trainGames, int cycles, List<Long> seeds,
-                 int thinkSteps) {
+                 int thinkSteps, int dagger) {
     }
 
-    /** The evaluation's games, figures and a description of what was compared. */
-    record Outcome(Map<String, String> about, Comparison comparison, Evaluation.Results results) {
+    /** The evaluation's games (of the last DAgger round), figures, DAgger rounds (or none) and what was compared. */
+    record Outcome(Map<String, String> about, Comparison comparison, Evaluation.Results results,
+                   List<Dagger.Round> rounds) {
     }
 
     private Setup setup() {
@@ -270,6 +289,13 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         if (thinkSteps < 0) {
             throw new UsageException("--think-steps: must be 0 or more, not " + thinkSteps);
+        }
+        if (dagger < 0) {
+            throw new UsageException("--dagger: must be 0 or more rounds, not " + dagger);
+        }
+        if (dagger > 0 && teacherCommand != null) {
+            throw new UsageException("--dagger: labels with a shadow teacher in process; not with --teacher-command"
+                    + " (give a built-in --teacher)");
         }
         if (teacherCommand != null || opponentCommand != null) {
             if (teacherCommand != null && opponentCommand != null) {
@@ -297,7 +323,7 @@ final class EvaluateCommand implements Callable<Integer> {
                 : SimulateCommand.team(opponent, "Amber");
         return new Setup(teacherCommand != null ? "the command '" + teacherCommand + "'" : teacher, teacherTeam,
                 opponentTeam, teacherCommand != null ? Side.RIGHT : Side.LEFT, configs.get(0), top.global.registry(),
-                sceneFiles, trainGames, cycles, seedList, thinkSteps);
+                sceneFiles, trainGames, cycles, seedList, thinkSteps, dagger);
     }
 
     /** The embedded simulator, or with --server the live server. */
@@ -375,15 +401,57 @@ final class EvaluateCommand implements Callable<Integer> {
                 PacedBrain.pace(imitator.brains(), setup.thinkSteps()), setup.opponent(), setup.cycles(),
                 setup.seeds(), setup.side());
         Evaluation.Results results;
-        try (TerminalProgress bar = TerminalProgress.start("Evaluating", plan.totalCycles(), " cycles", 1)) {
-            results = Evaluation.run(plan, arena, bar.stepper());
+        Comparison comparison;
+        List<Dagger.Round> rounds = setup.dagger() == 0 ? List.of() : dagger(setup, plan, imitator, matching, arena, out);
+        if (rounds.isEmpty()) {
+            try (TerminalProgress bar = TerminalProgress.start("Evaluating", plan.totalCycles(), " cycles", 1)) {
+                results = Evaluation.run(plan, arena, bar.stepper());
+            }
+            comparison = Comparison.of(results);
+        } else {
+            Dagger.Round last = rounds.get(rounds.size() - 1);
+            results = last.results();
+            comparison = last.comparison();
+            about.put("DAgger", setup.dagger() + " rounds after the first evaluation (round 0): in each round's games"
+                    + " (the same seeds) the scenes each imitating player built, labelled with its shadow teacher's"
+                    + " reply to the same see, join the knowledge base of the next round; the teacher's games are"
+                    + " played once. Figures below: round " + last.number());
+            about.put("DAgger: columns", Dagger.Round.header().trim());
+            about.put("DAgger: teacher", rounds.get(0).teacherRow().trim());
+            for (Dagger.Round round : rounds) {
+                about.put("DAgger: round " + round.number(), round.row().trim());
+            }
         }
-        Comparison comparison = Comparison.of(results);
         if (results.teacher().stream().anyMatch(g -> g.frames().isEmpty())) {
             about.put("not measured", HtmlReport.NO_POSITIONS);
         }
         about.put("time", String.format(Locale.ROOT, "%.1f s", (System.nanoTime() - started) / 1e9));
-        return new Outcome(about, comparison, results);
+        return new Outcome(about, comparison, results, rounds);
+    }
+
+    /** DAgger's rounds 0 to {@code --dagger}, a row printed and a progress bar per round. */
+    private static List<Dagger.Round> dagger(Setup setup, Evaluation.Plan plan, Learner.Imitator imitator,
+                                             Learner.Matching matching, Arena arena, PrintWriter out)
+            throws IOException {
+        Dagger dagger = new Dagger(plan, imitator.knowledge(), matching, setup.thinkSteps());
+        if (out != null) {
+            out.println(Dagger.Round.header());
+            out.flush();
+        }
+        List<Dagger.Round> rounds = new ArrayList<>();
+        for (int r = 0; r <= setup.dagger(); r++) {
+            try (TerminalProgress bar = TerminalProgress.start("Round " + r, dagger.nextRoundCycles(), " cycles", 1)) {
+                rounds.add(dagger.next(arena, bar.stepper()));
+            }
+            if (out != null) {
+                if (r == 0) {
+                    out.println(rounds.get(0).teacherRow());
+                }
+                out.println(rounds.get(r).row());
+                out.flush();
+            }
+        }
+        return rounds;
     }
 
     static String describe(GameSetup.Team team) {

@@ -31,8 +31,12 @@ import org.scenes.internal.validate.MatchConfig;
  * directory that is deleted afterwards.
  */
 public final class Learner {
-    /** The learnt imitator: its brains and how many scenes it learnt from. */
-    public record Imitator(BrainFactory brains, int scenes) {
+    /** The learnt imitator: its brains and the knowledge base they match in. */
+    public record Imitator(BrainFactory brains, KnowledgeBase knowledge) {
+        /** How many scenes it learnt from. */
+        public int scenes() {
+            return knowledge.size();
+        }
     }
 
     /** How to match: the metric, k, selector and transforms, as made from a configuration. */
@@ -97,7 +101,7 @@ public final class Learner {
         Recognizer recognizer = new Recognizer(knowledge, matching.metric(), matching.k(),
                 SceneTransform.queryImage(matching.transforms().get()));
         return new Imitator(ImitationBrain.factory(recognizer, matching.selector(), matching.transforms(),
-                ImitationBrain.Guards.OFF, matching.replay()), knowledge.size());
+                ImitationBrain.Guards.OFF, matching.replay()), knowledge);
     }
 
     private static void deleteTree(Path directory) throws IOException {

@@ -51,6 +51,14 @@ public final class PacedBrain implements Brain {
         };
     }
 
+    /** One brain paced to one decision per {@code steps} steps; 0 leaves it as it is. */
+    static Brain pace(Brain brain, int steps) {
+        if (steps < 0) {
+            throw new IllegalArgumentException("think steps must be 0 or more, not " + steps);
+        }
+        return steps == 0 ? brain : new PacedBrain(brain, steps);
+    }
+
     @Override
     public boolean repeatsKickOffMove() {
         return inner.repeatsKickOffMove();

@@ -1,0 +1,51 @@
+package org.scenes.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class EvaluateDaggerTest {
+    @TempDir
+    Path dir;
+
+    private final CommandRunner cli = new CommandRunner();
+
+    @Test
+    void daggerRoundsGrowTheKnowledgeBaseAndAreReported() throws Exception {
+        Path report = dir.resolve("report");
+        int status = cli.run("evaluate", "--metric", "ball-goal", "--players", "2", "--opponent", "krislet:2",
+                "--cycles", "300", "--seeds", "1", "--train-games", "1", "--dagger", "1", "--json", "--report", report);
+        assertEquals(ExitCodes.OK, status, cli.err());
+        JsonNode root = ConfigFiles.JSON.readTree(cli.out());
+        JsonNode rounds = root.get("rounds");
+        assertEquals(2, rounds.size());
+        int labelled = rounds.get(0).get("labelled").asInt();
+        assertTrue(labelled > 100, "labelled " + labelled);
+        assertEquals(rounds.get(0).get("scenes").asInt() + labelled, rounds.get(1).get("scenes").asInt());
+        assertEquals(labelled, rounds.get(1).get("added").asInt());
+        // the figures printed are the last round's
+        assertEquals(rounds.get(1).get("agreement").asDouble(),
+                root.at("/figures/agreement/imitator/mean").asDouble(), 1e-12);
+        String page = Files.readString(report.resolve("index.html"));
+        assertTrue(page.contains("DAgger: round 1"), "the rounds in the report");
+    }
+
+    @Test
+    void daggerNeedsTheTeacherInProcess() {
+        assertEquals(ExitCodes.USAGE, cli.run("evaluate", "--dagger", "1", "--teacher-games", dir, "--imitator-games",
+                dir));
+        assertTrue(cli.err().contains("--dagger:") && cli.err().strip().lines().count() == 1, cli.err());
+        CommandRunner external = new CommandRunner();
+        assertEquals(ExitCodes.USAGE, external.run("evaluate", "--dagger", "2", "--teacher-command", "./start.sh",
+                "--server", "localhost:6000", "--server-logs", dir, dir.resolve("x.json")));
+        assertTrue(external.err().contains("--dagger:") && external.err().contains("--teacher-command"), external.err());
+        CommandRunner negative = new CommandRunner();
+        assertEquals(ExitCodes.USAGE, negative.run("evaluate", "--dagger", "-1"));
+        assertTrue(negative.err().contains("--dagger: must be 0 or more"), negative.err());
+    }
+}

@@ -1,0 +1,213 @@
+package org.scenes.evaluate;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Random;
+import java.util.function.LongConsumer;
+import org.scenes.agent.Brain;
+import org.scenes.agent.BrainFactory;
+import org.scenes.agent.imitation.ImitationBrain;
+import org.scenes.agent.sim.GameSetup;
+import org.scenes.api.Scene;
+import org.scenes.internal.match.KnowledgeBase;
+
+/**
+ * Learning from the corrections (DAgger, dataset aggregation: Ross, Gordon and Bagnell 2011),
+ * round by round. Each round the imitator of the current knowledge base plays the plan's seeds
+ * beside its shadow teacher; those games are evaluated against the teacher's (played once, in
+ * the first round: the same seeds give the same games), and the scenes each imitating player
+ * built, labelled with its shadow's replies to the same sees ({@link ShadowLabels}), join the
+ * knowledge base, one sequence per player and game in cycle order, for the next round.
+ * It needs the teacher in process: the shadow is the teacher's own brain.
+ */
+public final class Dagger {
+    /**
+     * One round's imitator and figures.
+     *
+     * @param number 0 for the imitator as first learnt
+     * @param scenes the scenes of its knowledge base
+     * @param added of those, the scenes the previous round labelled
+     * @param labelled the scenes this round's games labelled, for the next
+     */
+    public record Round(int number, int scenes, int added, int labelled, Comparison comparison,
+                        Evaluation.Results results) {
+        /** The column heads of {@link #row}. */
+        public static String header() {
+            return String.format(Locale.ROOT, "%-8s %8s %7s %8s %8s %7s %8s %9s %7s", "round", "scenes", "added",
+                    "goals", "mix JSD", "stuck", "to ball", "agreement", "Turing");
+        }
+
+        /** The teacher's figures in the columns of {@link #row} that it has. */
+        public String teacherRow() {
+            return String.format(Locale.ROOT, "%-8s %8s %7s %8.2f %8s %6.1f%% %8.1f %9s %7s", "teacher", "", "",
+                    comparison.figure("goalsPer1000").teacher().mean(), "", 100 * figure("stuckShare", true),
+                    comparison.figure("ballDistance").teacher().mean(), "", "");
+        }
+
+        /** Goals per 1000 cycles, action-mix JSD, stuck share, distance to the ball, agreement, Turing accuracy. */
+        public String row() {
+            return String.format(Locale.ROOT, "%-8d %8d %7d %8.2f %8.4f %6.1f%% %8.1f %8.1f%% %6.1f%%", number, scenes,
+                    added, figure("goalsPer1000", false), comparison.divergence().mean(),
+                    100 * figure("stuckShare", false), figure("ballDistance", false), 100 * figure("agreement", false),
+                    100 * comparison.turing().accuracy());
+        }
+
+        /** The row's figures by name, for JSON. */
+        public Map<String, Object> json() {
+            Map<String, Object> json = new LinkedHashMap<>();
+            json.put("round", number);
+            json.put("scenes", scenes);
+            json.put("added", added);
+            json.put("labelled", labelled);
+            json.put("goalsPer1000", figure("goalsPer1000", false));
+            json.put("divergence", comparison.divergence().mean());
+            json.put("stuckShare", figure("stuckShare", false));
+            json.put("ballDistance", figure("ballDistance", false));
+            json.put("agreement", figure("agreement", false));
+            json.put("turing", comparison.turing().accuracy());
+            return json;
+        }
+
+        private double figure(String key, boolean teacher) {
+            Comparison.Figure figure = comparison.figure(key);
+            return (teacher ? figure.teacher() : figure.imitator()).mean();
+        }
+    }
+
+    private final Evaluation.Plan plan;
+    private final Learner.Matching matching;
+    private final int thinkSteps;
+    private KnowledgeBase knowledge;
+    private int added;
+    private List<List<Scene>> corrections = List.of();
+    private List<PlayedGame> teacherGames;
+    private int rounds;
+
+    /**
+     * Rounds on {@code plan}'s teacher, opponent, cycles and seeds (its imitator is not used),
+     * starting from {@code knowledge}, matched as {@code matching} says; the imitator decides every
+     * {@code thinkSteps} steps ({@link PacedBrain}).
+     */
+    public Dagger(Evaluation.Plan plan, KnowledgeBase knowledge, Learner.Matching matching, int thinkSteps) {
+        if (plan.teacher().brains() instanceof ExternalTeam) {
+            throw new IllegalArgumentException("DAgger needs the teacher in process: the shadow is the teacher's own"
+                    + " brain");
+        }
+        if (thinkSteps < 0) {
+            throw new IllegalArgumentException("think steps must be 0 or more, not " + thinkSteps);
+        }
+        this.plan = plan;
+        this.knowledge = knowledge;
+        this.matching = matching;
+        this.thinkSteps = thinkSteps;
+    }
+
+    /** Game cycles the next round plays, for progress: the first round plays the teacher's games too. */
+    public long nextRoundCycles() {
+        return (teacherGames == null ? 2L : 1L) * plan.seeds().size() * plan.cycles();
+    }
+
+    /**
+     * Adds the previous round's labelled scenes (none before the first round) to the knowledge
+     * base, plays the round's games and labels the imitator's scenes; {@code progress} gets the
+     * cycles played so far in the round.
+     */
+    public Round next(Arena arena, LongConsumer progress) throws IOException {
+        if (!corrections.isEmpty()) {
+            knowledge = extended(knowledge, corrections);
+        }
+        Learner.Imitator imitator = Learner.of(knowledge, matching);
+        boolean first = teacherGames == null;
+        List<PlayedGame> teacher = first ? new ArrayList<>() : teacherGames;
+        List<PlayedGame> imitating = new ArrayList<>();
+        List<List<Scene>> labelled = new ArrayList<>();
+        long[] done = {0};
+        for (long seed : plan.seeds()) {
+            if (first) {
+                teacher.add(Evaluation.play(PlayedGame.Role.TEACHER, plan.teacher(), null, plan, seed, arena, done,
+                        progress));
+            }
+            Labelling labelling = new Labelling(imitator.brains(), plan.teacher().brains(), thinkSteps);
+            GameSetup.Team team = new GameSetup.Team(plan.teacher().name(), plan.teacher().players(),
+                    labelling.imitator());
+            imitating.add(Evaluation.play(PlayedGame.Role.IMITATOR, team, labelling.shadow(), plan, seed, arena, done,
+                    progress));
+            for (ShadowLabels player : labelling.players) {
+                labelled.add(player.labelled());
+            }
+        }
+        teacherGames = teacher;
+        Evaluation.Results results = new Evaluation.Results(teacher, imitating);
+        Round round = new Round(rounds++, knowledge.size(), added, labelled.stream().mapToInt(List::size).sum(),
+                Comparison.of(results), results);
+        corrections = labelled;
+        added = round.labelled();
+        return round;
+    }
+
+    /** The scenes the last round labelled, one sequence per imitating player and game, in seed and uniform number order. */
+    List<List<Scene>> corrections() {
+        return corrections;
+    }
+
+    /** {@code base}'s stored scenes and the labelled sequences through fresh transforms each. */
+    KnowledgeBase extended(KnowledgeBase base, List<List<Scene>> sequences) {
+        KnowledgeBase.Builder builder = KnowledgeBase.builder(base.grid());
+        // stored scenes are already transformed: copied as they are
+        base.scenes().forEach(builder::add);
+        for (List<Scene> sequence : sequences) {
+            builder.addSequence(sequence, matching.transforms().get());
+        }
+        return builder.build();
+    }
+
+    /**
+     * One game's imitating players and their shadows, each pair sharing one {@link ShadowLabels}.
+     * {@link Evaluation#traced} makes each player's shadow right after its driver.
+     */
+    private static final class Labelling {
+        final List<ShadowLabels> players = new ArrayList<>();
+        private final BrainFactory imitation;
+        private final BrainFactory teacher;
+        private final int thinkSteps;
+
+        Labelling(BrainFactory imitation, BrainFactory teacher, int thinkSteps) {
+            this.imitation = imitation;
+            this.teacher = teacher;
+            this.thinkSteps = thinkSteps;
+        }
+
+        BrainFactory imitator() {
+            return new BrainFactory() {
+                @Override
+                public Brain create(String team, Random random) {
+                    ShadowLabels labels = new ShadowLabels();
+                    players.add(labels);
+                    Brain brain = imitation.create(team, random);
+                    if (brain instanceof ImitationBrain imitating) {
+                        imitating.onScene(labels::built);
+                    }
+                    return labels.imitator(PacedBrain.pace(brain, thinkSteps));
+                }
+
+                @Override
+                public boolean goalie(int unum) {
+                    return imitation.goalie(unum);
+                }
+            };
+        }
+
+        BrainFactory shadow() {
+            return (team, random) -> {
+                if (players.isEmpty()) {
+                    throw new IllegalStateException("a shadow is made after its imitating player");
+                }
+                return players.get(players.size() - 1).shadow(teacher.create(team, random));
+            };
+        }
+    }
+}

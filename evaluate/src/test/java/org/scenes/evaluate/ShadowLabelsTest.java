@@ -1,0 +1,108 @@
+package org.scenes.evaluate;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+import org.junit.jupiter.api.Test;
+import org.scenes.agent.Brain;
+import org.scenes.api.Action;
+import org.scenes.api.ActionType;
+import org.scenes.api.Observer;
+import org.scenes.api.Scene;
+
+class ShadowLabelsTest {
+    private static final List<String> MESSAGES = List.of("(init l 1 before_kick_off)", "(player_type (id 0))",
+            "(see 1 ((b) 10 0))", "(sense_body 1)", "(see 2 ((b) 9 0))", "(sense_body 2)", "(sense_body 3)",
+            "(see 3 ((b) 8 0))", "(sense_body 4)", "(see 4 ((b) 7 0))");
+
+    /** Builds a scene (cycle = see time, its own dash) on each see, and sends that dash. */
+    private static Brain imitator(ShadowLabels labels) {
+        return (message, send) -> {
+            if (message.startsWith("(see ")) {
+                int time = Integer.parseInt(message.split(" ")[1]);
+                labels.built(new Scene(time, Observer.UNKNOWN, List.of(), List.of(Action.dash(50)), null, 0, null));
+                send.accept("(dash 50)");
+            }
+        };
+    }
+
+    /**
+     * A teacher that moves before any see, answers see 1 on the next sense_body with a turn, a
+     * turn_neck and an extra dash, leaves see 2 unanswered, answers see 3 with only a turn_neck and
+     * see 4 at once with a kick.
+     */
+    private static Brain shadow() {
+        int[] sees = {0};
+        return (message, send) -> {
+            if (message.startsWith("(player_type")) {
+                send.accept("(move -10 0)");
+            } else if (message.startsWith("(see ")) {
+                sees[0]++;
+                if (sees[0] == 4) {
+                    send.accept("(kick 100 0)");
+                }
+            } else if (message.startsWith("(sense_body 1)")) {
+                send.accept("(turn 30)");
+                send.accept("(turn_neck 10)");
+                send.accept("(dash 20)");
+            } else if (message.startsWith("(sense_body 4)")) {
+                send.accept("(turn_neck -20)");
+            }
+        };
+    }
+
+    private static List<Scene> play(boolean shadowFirst) {
+        ShadowLabels labels = new ShadowLabels();
+        Brain imitator = labels.imitator(imitator(labels));
+        Brain shadow = labels.shadow(shadow());
+        List<String> sent = new ArrayList<>();
+        Consumer<String> nowhere = command -> { };
+        for (String message : MESSAGES) {
+            if (shadowFirst) {
+                shadow.receive(message, nowhere);
+                imitator.receive(message, sent::add);
+            } else {
+                imitator.receive(message, sent::add);
+                shadow.receive(message, nowhere);
+            }
+        }
+        assertEquals(4, sent.size(), "the imitator's own commands go out untouched");
+        return labels.labelled();
+    }
+
+    @Test
+    void eachSceneGetsTheShadowsReplyToItsSeeAndUnansweredSeesAreLeftOut() {
+        for (boolean shadowFirst : new boolean[] {false, true}) {
+            List<Scene> labelled = play(shadowFirst);
+            assertEquals(List.of(1, 4), labelled.stream().map(Scene::cycle).toList(), "shadow first: " + shadowFirst);
+            assertEquals(List.of(new Action(ActionType.TURN, 30, Double.NaN), new Action(ActionType.TURN_NECK, 10,
+                    Double.NaN)), labelled.get(0).actions());
+            assertEquals(List.of(new Action(ActionType.KICK, 100, 0)), labelled.get(1).actions());
+        }
+    }
+
+    @Test
+    void aSceneBuiltAgainOnTheSameSeeIsLabelledOnce() {
+        ShadowLabels labels = new ShadowLabels();
+        Brain imitator = labels.imitator((message, send) -> {
+            if (message.startsWith("(sense_body")) {
+                // a paced imitator deciding again on its latest see
+                labels.built(new Scene(7, Observer.UNKNOWN, List.of(), List.of(), null, 0, null));
+            }
+        });
+        Brain shadow = labels.shadow((message, send) -> {
+            if (message.startsWith("(see ")) {
+                send.accept("(dash 80)");
+            }
+        });
+        for (String message : List.of("(sense_body 6)", "(see 7 ((b) 3 0))", "(sense_body 7)", "(sense_body 8)")) {
+            imitator.receive(message, command -> { });
+            shadow.receive(message, command -> { });
+        }
+        List<Scene> labelled = labels.labelled();
+        assertEquals(1, labelled.size(), "the scene before any see is dropped, the repeat on see 7 too");
+        assertEquals(List.of(new Action(ActionType.DASH, 80, Double.NaN)), labelled.get(0).actions());
+    }
+}
