@@ -25,12 +25,18 @@ public final class Destinations {
     private static final int SLACK = 5;
     private static final Map<KnowledgeBase, Destinations> CACHE = new WeakHashMap<>();
 
+    /** A destination this near where the ball then was is a run to the ball. */
+    static final double AT_BALL = 2;
+
     private final double[] x;
     private final double[] y;
+    /** whether the player then stood at the ball: it ran to the ball, wherever that was */
+    private final boolean[] toBall;
 
-    private Destinations(double[] x, double[] y) {
+    private Destinations(double[] x, double[] y, boolean[] toBall) {
         this.x = x;
         this.y = y;
+        this.toBall = toBall;
     }
 
     /** The destinations of a knowledge base's scenes, computed once per knowledge base. */
@@ -50,6 +56,8 @@ public final class Destinations {
         boolean[] moved = new boolean[n];
         double[] atX = new double[n];
         double[] atY = new double[n];
+        double[] ballX = new double[n];
+        double[] ballY = new double[n];
         int i = 0;
         for (Scene scene : scenes) {
             World world = scene.world();
@@ -59,10 +67,13 @@ public final class Destinations {
             moved[i] = scene.actionType() == ActionType.MOVE;
             atX[i] = world == null ? Double.NaN : world.x();
             atY[i] = world == null ? Double.NaN : world.y();
+            ballX[i] = world == null ? Double.NaN : world.ballX();
+            ballY[i] = world == null ? Double.NaN : world.ballY();
             i++;
         }
         double[] x = new double[n];
         double[] y = new double[n];
+        boolean[] toBall = new boolean[n];
         Arrays.fill(x, Double.NaN);
         Arrays.fill(y, Double.NaN);
         for (i = 0; i < n; i++) {
@@ -78,29 +89,42 @@ public final class Destinations {
                 if (gap >= AHEAD) {
                     x[i] = atX[j];
                     y[i] = atY[j];
+                    toBall[i] = Math.hypot(ballX[j] - atX[j], ballY[j] - atY[j]) < AT_BALL;
                     break;
                 }
             }
         }
-        return new Destinations(x, y);
+        return new Destinations(x, y, toBall);
     }
 
     /**
-     * The mean destination of the neighbours that have one, or null when none has. (A neighbour
-     * found as a transform's image, such as a mirrored scene, counts with its stored scene's.)
+     * Where to run for these neighbours: when most of those with a destination ran to the ball,
+     * {@code ball} (the deciding player's own ball, null when it does not know one); else their
+     * mean destination; null when none has one. (A neighbour found as a transform's image, such
+     * as a mirrored scene, counts with its stored scene's destination.)
      */
-    public double[] mean(List<Neighbour> nearest) {
+    public double[] target(List<Neighbour> nearest, double[] ball) {
         double sumX = 0;
         double sumY = 0;
         int count = 0;
+        int ballRuns = 0;
         for (Neighbour neighbour : nearest) {
             int i = neighbour.index();
             if (i >= 0 && i < x.length && !Double.isNaN(x[i])) {
                 sumX += x[i];
                 sumY += y[i];
                 count++;
+                if (toBall[i]) {
+                    ballRuns++;
+                }
             }
         }
-        return count == 0 ? null : new double[] {sumX / count, sumY / count};
+        if (count == 0) {
+            return null;
+        }
+        if (2 * ballRuns > count && ball != null) {
+            return ball;
+        }
+        return new double[] {sumX / count, sumY / count};
     }
 }

@@ -40,6 +40,9 @@ public final class Targets {
     static final double DASH_TOLERANCE = 45;
     /** A direction more than this far off is behind: turned to one way only ({@link #turnAngle}). */
     static final double BEHIND = 150;
+    /** Cycles ahead a run to the ball aims at the ball's course. */
+    static final int BALL_LEAD = 3;
+    static final double BALL_DECAY = 0.94;
     /** A destination this near is reached: the player then does what the chosen scene's player did. */
     static final double ARRIVED = 1;
     /** A turn of the body by less than this many degrees is taken as facing its target already. */
@@ -90,8 +93,8 @@ public final class Targets {
             boolean run = destination != null && (action.type() == ActionType.DASH || action.type() == ActionType.TURN);
             Action mine = action.type() == ActionType.TURN_NECK
                     ? neck(action, donor, donorBodyAfter, donorBall, own, ownBodyAfter, ownBall)
-                    : run ? goTo(destination, own, runPower(action, power), body(action, donor, donorBall, own, ownBall))
-                    : body(action, donor, donorBall, own, ownBall);
+                    : run ? goTo(destination, own, runPower(action, power), body(action, chosen, donorBall, own, ownBall))
+                    : body(action, chosen, donorBall, own, ownBall);
             if (action.type() == ActionType.TURN) {
                 donorBodyAfter = donor.body() + turned(action.first(), donor);
             }
@@ -103,10 +106,11 @@ public final class Targets {
         return List.copyOf(reached);
     }
 
-    private static Action body(Action action, World donor, double donorBall, World own, double ownBall) {
+    private static Action body(Action action, Scene chosen, double donorBall, World own, double ownBall) {
+        World donor = chosen.world();
         return switch (action.type()) {
             // a turn without the ball in view is a search: its target is the turn itself
-            case TURN -> Double.isNaN(donorBall) ? action
+            case TURN -> !seesBall(chosen) ? action
                     : turnTo(anchored(donor.body() + turned(action.first(), donor), donor, donorBall, own, ownBall), own);
             case DASH -> dash(action, donor, donorBall, own, ownBall);
             case KICK -> kick(action, donor, own);
@@ -115,7 +119,11 @@ public final class Targets {
         };
     }
 
-    /** The ball's direction from the body in the scene's see; NaN when the see shows no ball. */
+    /**
+     * The ball's direction from the body: as the scene's see shows it, else as the world model
+     * remembers it (so a target aimed at the ball stays so while the head looks away); NaN when
+     * neither knows it.
+     */
     static double ballAngle(Scene scene) {
         World world = scene.world();
         for (SeenObject object : scene.objects()) {
@@ -123,7 +131,19 @@ public final class Targets {
                 return normalize(object.direction() + (Double.isNaN(world.neck()) ? 0 : world.neck()));
             }
         }
-        return Double.NaN;
+        return world.ballKnown()
+                ? normalize(bearing(world.ballX() - world.x(), world.ballY() - world.y()) - world.body())
+                : Double.NaN;
+    }
+
+    /** Whether the scene's see shows the ball. */
+    private static boolean seesBall(Scene scene) {
+        for (SeenObject object : scene.objects()) {
+            if (object.kind() == ObjectKind.BALL && !object.remembered()) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -135,6 +155,20 @@ public final class Targets {
             return false;
         }
         return Math.abs(turned(reached.get(0).first(), query.world())) < REACHED;
+    }
+
+    /**
+     * Where the player's ball will be in {@link #BALL_LEAD} cycles (the server's ball decay), or
+     * null when its world model knows no ball or no position.
+     */
+    public static double[] ballAhead(World world) {
+        if (world == null || !world.located() || !world.ballKnown()) {
+            return null;
+        }
+        double vx = velocity(world.ballVx());
+        double vy = velocity(world.ballVy());
+        double travelled = (1 - Math.pow(BALL_DECAY, BALL_LEAD)) / (1 - BALL_DECAY);
+        return new double[] {world.ballX() + vx * travelled, world.ballY() + vy * travelled};
     }
 
     private static double runPower(Action action, double power) {

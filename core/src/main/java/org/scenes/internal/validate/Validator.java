@@ -87,7 +87,8 @@ public final class Validator {
         if (replay == Replay.RAW || actions.isEmpty()) {
             return actions;
         }
-        double[] destination = knowledge == null ? null : Destinations.of(knowledge).mean(nearest);
+        double[] destination = knowledge == null ? null
+                : Destinations.of(knowledge).target(nearest, Targets.ballAhead(query.world()));
         double power = meanDashPower(nearest);
         List<Action> reached = Targets.reach(actions, donor(actions.get(0), nearest), query, destination, power);
         if (!Targets.alreadyReached(reached, query)) {

@@ -19,7 +19,8 @@ import org.scenes.api.World;
  * showed: a weighted Euclidean distance over the player's position, the ball's offset from the
  * player, the ball's velocity, the body's direction (as a unit vector), stamina, plus a penalty
  * when the play modes differ (modes compared from the player's side: {@code kick_off_l} of a left
- * player equals {@code kick_off_r} of a right one). With {@code ball-frame=body} the ball's offset
+ * player equals {@code kick_off_r} of a right one) and another when the ball is within kicking reach
+ * in one scene only (what decides most of a player's actions). With {@code ball-frame=body} the ball's offset
  * and velocity are turned into the body's frame (ahead, to the right) instead. A scene without a located world model is
  * {@code missing} away from every other; an unknown ball costs {@code missing} / 10.
  */
@@ -37,6 +38,8 @@ public final class FieldMetricProvider implements MetricProvider {
     static final int FEATURES = 9;
     /** The default server's full stamina: stamina is compared as a share of it. */
     static final double STAMINA_MAX = 8000;
+    /** The default player's kicking reach: player_size 0.3 + ball_size 0.085 + kickable_margin 0.7. */
+    static final double KICKABLE = 1.085;
 
     @Override
     public String name() {
@@ -58,6 +61,8 @@ public final class FieldMetricProvider implements MetricProvider {
         options.put("body-weight", "weight of the body direction's unit vector (default 3)");
         options.put("stamina-weight", "weight of stamina as a share of 8000 (default 2)");
         options.put("play-mode-penalty", "added when the play modes differ (default 10)");
+        options.put("kickable-penalty", "added when the ball is within kicking reach (1.085 m, the default player's)"
+                + " in one scene and not in the other (default 10)");
         options.put("ball-frame", "field: the ball's offset along the pitch's axes (default); body: turned into the"
                 + " body's frame (ahead, to the right)");
         options.put("missing", "distance of a scene without a located world model (default 1000)");
@@ -72,7 +77,8 @@ public final class FieldMetricProvider implements MetricProvider {
                 TuneDimension.log("ball-velocity-weight", 0.5, 2, 8),
                 TuneDimension.log("body-weight", 1, 3, 10),
                 TuneDimension.log("stamina-weight", 0.5, 2, 8),
-                TuneDimension.log("play-mode-penalty", 3, 10, 30));
+                TuneDimension.log("play-mode-penalty", 3, 10, 30),
+                TuneDimension.log("kickable-penalty", 1, 3, 10, 30));
     }
 
     @Override
@@ -101,7 +107,7 @@ public final class FieldMetricProvider implements MetricProvider {
             throw new IllegalArgumentException("field: index must be true or false, not " + index);
         }
         return new FieldMetric(weights, weight(config, "play-mode-penalty", 10), weight(config, "missing", 1000),
-                frame.equals("body"), index.equals("true"));
+                frame.equals("body"), index.equals("true"), weight(config, "kickable-penalty", 10));
     }
 
     private static double weight(PluginConfig config, String name, double fallback) {
@@ -116,7 +122,10 @@ public final class FieldMetricProvider implements MetricProvider {
      * A scene's features, each multiplied by its weight already; {@code mode} the play mode from
      * the player's side; null features for a scene without a located world.
      */
-    record Features(double[] values, boolean ballKnown, String mode) {
+    record Features(double[] values, boolean ballKnown, String mode, boolean kickable) {
+        Features(double[] values, boolean ballKnown, String mode) {
+            this(values, ballKnown, mode, false);
+        }
     }
 
     static final class FieldMetric implements EncodedMetric<Features>, PackedMetric {
@@ -125,8 +134,11 @@ public final class FieldMetricProvider implements MetricProvider {
         private final double missing;
         private final boolean bodyFrame;
         private final boolean indexed;
+        private final double kickablePenalty;
 
-        FieldMetric(double[] weights, double playModePenalty, double missing, boolean bodyFrame, boolean indexed) {
+        FieldMetric(double[] weights, double playModePenalty, double missing, boolean bodyFrame, boolean indexed,
+                    double kickablePenalty) {
+            this.kickablePenalty = kickablePenalty;
             this.weights = weights;
             this.playModePenalty = playModePenalty;
             this.missing = missing;
@@ -164,7 +176,8 @@ public final class FieldMetricProvider implements MetricProvider {
             for (int i = 0; i < FEATURES; i++) {
                 f[i] *= weights[i];
             }
-            return new Features(f, ballKnown, ownMode(w.playMode(), scene.observer().side()));
+            boolean kickable = ballKnown && Math.hypot(w.ballX() - w.x(), w.ballY() - w.y()) <= KICKABLE;
+            return new Features(f, ballKnown, ownMode(w.playMode(), scene.observer().side()), kickable);
         }
 
         /** The play mode with its side letter as seen from the player: {@code kick_off_own}, {@code goal_opp}. */
@@ -197,6 +210,9 @@ public final class FieldMetricProvider implements MetricProvider {
             }
             if (query.ballKnown() != stored.ballKnown()) {
                 sum += missing * missing / 100;
+            }
+            if (query.kickable() != stored.kickable()) {
+                sum += kickablePenalty * kickablePenalty;
             }
             return sum;
         }
