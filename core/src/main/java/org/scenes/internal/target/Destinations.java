@@ -25,12 +25,12 @@ public final class Destinations {
     private static final int SLACK = 5;
     private static final Map<KnowledgeBase, Destinations> CACHE = new WeakHashMap<>();
 
-    /** A destination this near where the ball then was is a run to the ball. */
-    static final double AT_BALL = 2;
+    /** A player this near its ball at some cycle of the run reached the ball: a run to the ball (kicking reach). */
+    static final double AT_BALL = 1.085;
 
     private final double[] x;
     private final double[] y;
-    /** whether the player then stood at the ball: it ran to the ball, wherever that was */
+    /** whether the player reached the ball on the way: it ran to the ball, wherever that was */
     private final boolean[] toBall;
 
     private Destinations(double[] x, double[] y, boolean[] toBall) {
@@ -80,16 +80,18 @@ public final class Destinations {
             if (mode[i] == null || Double.isNaN(atX[i])) {
                 continue;
             }
+            boolean reachedBall = false;
             for (int j = i + 1; j < n; j++) {
                 int gap = cycle[j] - cycle[i];
                 if (gap < 0 || gap > AHEAD + SLACK || !Objects.equals(observer[j], observer[i])
                         || !mode[i].equals(mode[j]) || moved[j]) {
                     break;
                 }
+                reachedBall |= Math.hypot(ballX[j] - atX[j], ballY[j] - atY[j]) <= AT_BALL;
                 if (gap >= AHEAD) {
                     x[i] = atX[j];
                     y[i] = atY[j];
-                    toBall[i] = Math.hypot(ballX[j] - atX[j], ballY[j] - atY[j]) < AT_BALL;
+                    toBall[i] = reachedBall;
                     break;
                 }
             }

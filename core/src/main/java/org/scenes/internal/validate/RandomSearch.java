@@ -376,6 +376,17 @@ public final class RandomSearch {
         return chosen;
     }
 
+    /** The object families this search mixes itself; any other metric declaring dimensions is searched as declared. */
+    private static final List<String> OBJECT_FAMILIES = List.of("ball-goal", "continuous", "projection", "cell");
+
+    /** Metrics with tune dimensions of their own, outside the object families, by name. */
+    private List<String> otherFamilies() {
+        return registry.names(PluginKind.METRIC).stream()
+                .filter(name -> !OBJECT_FAMILIES.contains(name))
+                .filter(name -> !registry.tuneDimensions(PluginKind.METRIC, name).isEmpty())
+                .sorted().toList();
+    }
+
     /**
      * One random metric setting. What to search in a metric's own options, and over which values,
      * the metric's provider declares ({@link org.scenes.api.TuneDimension}); what spans plugins
@@ -388,7 +399,17 @@ public final class RandomSearch {
         // deeper memory of actions: 2 to 4 actions back, each further one weighing decay times the last
         int depth = memoryAction > 0 && random.nextInt(3) == 0 ? 2 + random.nextInt(3) : 1;
         double decay = pick(random, 0.3, 0.5, 1);
-        int family = random.nextInt(20);
+        List<String> others = otherFamilies();
+        int family = random.nextInt(20 + 3 * others.size());
+        if (family >= 20) {
+            // a family of its own (world-model metrics such as field): each dimension it declares, drawn
+            String name = others.get((family - 20) / 3);
+            Map<String, String> options = new HashMap<>();
+            for (TuneDimension dimension : registry.tuneDimensions(PluginKind.METRIC, name).values()) {
+                options.put(dimension.option(), format(pick(random, dimension.valueArray())));
+            }
+            return start.withMetric(name, options);
+        }
         if (family < 3) {
             Map<String, TuneDimension> ballGoal = registry.tuneDimensions(PluginKind.METRIC, "ball-goal");
             Map<String, String> options = new HashMap<>();
