@@ -13,8 +13,10 @@ import org.scenes.api.World;
 import org.scenes.internal.match.KnowledgeBase;
 
 /**
- * Where each stored scene's player was {@link #AHEAD} cycles later: the point it was running to,
- * read from the same player's later scene in the knowledge base (scenes of one recorded player lie
+ * Where each stored scene's player went in the next {@link #AHEAD} cycles: its displacement in the
+ * field frame (the neighbours of a metric that ignores position, such as {@code ball-goal}, stand
+ * anywhere, so their destinations only agree relative to each player), read from the same
+ * player's later scene in the knowledge base (scenes of one recorded player lie
  * in cycle order, one sequence after another). Unknown when that scene is missing, unlocated, or
  * a move or another play mode lies between (a kick-off's jump is no run).
  */
@@ -89,8 +91,8 @@ public final class Destinations {
                 }
                 reachedBall |= Math.hypot(ballX[j] - atX[j], ballY[j] - atY[j]) <= AT_BALL;
                 if (gap >= AHEAD) {
-                    x[i] = atX[j];
-                    y[i] = atY[j];
+                    x[i] = atX[j] - atX[i];
+                    y[i] = atY[j] - atY[i];
                     toBall[i] = reachedBall;
                     break;
                 }
@@ -100,12 +102,16 @@ public final class Destinations {
     }
 
     /**
-     * Where to run for these neighbours: when most of those with a destination ran to the ball,
-     * {@code ball} (the deciding player's own ball, null when it does not know one); else their
-     * mean destination; null when none has one. (A neighbour found as a transform's image, such
-     * as a mirrored scene, counts with its stored scene's destination.)
+     * Where to run for these neighbours, from {@code own}'s position: when most of those with a
+     * destination ran to the ball, {@code ball} (the deciding player's own ball, null when it does
+     * not know one); else its position plus their mean displacement; null when none has one or the
+     * player's position is unknown. (A neighbour found as a transform's image, such as a mirrored
+     * scene, counts with its stored scene's displacement.)
      */
-    public double[] target(List<Neighbour> nearest, double[] ball) {
+    public double[] target(List<Neighbour> nearest, World own, double[] ball) {
+        if (own == null || !own.located()) {
+            return null;
+        }
         double sumX = 0;
         double sumY = 0;
         int count = 0;
@@ -127,6 +133,6 @@ public final class Destinations {
         if (2 * ballRuns > count && ball != null) {
             return ball;
         }
-        return new double[] {sumX / count, sumY / count};
+        return new double[] {own.x() + sumX / count, own.y() + sumY / count};
     }
 }

@@ -88,7 +88,7 @@ public final class Validator {
             return actions;
         }
         double[] destination = knowledge == null ? null
-                : Destinations.of(knowledge).target(nearest, Targets.ballAhead(query.world()));
+                : Destinations.of(knowledge).target(nearest, query.world(), Targets.ballAhead(query.world()));
         double power = meanDashPower(nearest);
         List<Action> reached = Targets.reach(actions, donor(actions.get(0), nearest), query, destination, power);
         if (!Targets.alreadyReached(reached, query)) {
