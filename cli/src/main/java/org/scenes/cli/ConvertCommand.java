@@ -20,6 +20,7 @@ import org.scenes.internal.scene.LazySceneFileWriter;
 import org.scenes.options.GameLogOptions;
 import org.scenes.options.GridOptions;
 import org.scenes.options.PairingOptions;
+import org.scenes.options.WorldOptions;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -72,12 +73,8 @@ final class ConvertCommand implements Callable<Integer> {
     @Mixin
     GameLogOptions gameLogOptions;
 
-    @Option(names = "--world", negatable = true, defaultValue = "true", fallbackValue = "true",
-            description = "Give each scene the player's world model (its position, the ball's, the players it"
-                    + " remembers, stamina, play mode, score; scene format 2, docs/scene-format.md): what the field"
-                    + " metric, --replay target and the shipped configurations need. --no-world leaves it out"
-                    + " (files a third smaller, conversion a quarter faster). Default: on.")
-    boolean world = true;
+    @Mixin
+    WorldOptions worldOptions;
 
     @Option(names = "--threads", paramLabel = "N", description = "Game logs: threads rebuilding the players."
             + " Default: the number of cores.")
@@ -129,7 +126,7 @@ final class ConvertCommand implements Callable<Integer> {
                 .pairing(pairingOptions.pairing())
                 .strict(pairingOptions.strict())
                 .warnings(line -> warn(err, line))
-                .world(world)
+                .world(worldOptions.world())
                 .keepUnanswered(unanswered == Unanswered.KEEP)
                 .build();
         ConversionReport total = new ConversionReport();

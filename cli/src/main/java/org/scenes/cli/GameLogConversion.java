@@ -56,7 +56,7 @@ final class GameLogConversion {
         long started = System.nanoTime();
         GameSceneFiles.Written written = GameSceneFiles.write(new GameLogConverter(grid, options.pairingOptions.pairing(),
                 choice.fading(), choice.selected(), options.threads).commandsBeforeSee(choice.commandsFirst())
-                        .seePhase(choice.seePhase()).world(options.world)
+                        .seePhase(choice.seePhase()).world(options.worldOptions.world())
                         .keepUnanswered(options.unanswered == ConvertCommand.Unanswered.KEEP), grid,
                 logs, target);
         if (written.result().players().isEmpty()) {

@@ -16,6 +16,7 @@ import org.scenes.internal.convert.DropReason;
 import org.scenes.internal.gamelog.GameLogs;
 import org.scenes.internal.gamelog.ServerLogs;
 import org.scenes.options.GameLogOptions;
+import org.scenes.options.WorldOptions;
 import org.scenes.options.GridOptions;
 import org.scenes.options.PairingOptions;
 import picocli.CommandLine.Command;
@@ -63,13 +64,16 @@ final class ConvertCommand implements Callable<Integer> {
     @Mixin
     GameLogOptions gameLogOptions;
 
+    @Mixin
+    WorldOptions worldOptions;
+
     @Override
     public Integer call() throws IOException {
         GameLogOptions g = gameLogOptions;
         g.check();
         GameConversion.Settings settings = GameConversion.Settings.of(gridOptions.grid(), pairingOptions.pairing(), pairingOptions.strict(),
                 new GameConversion.GameLogSettings(g.team(), g.unum(), g.fadingName(), g.fadingSeed(), g.commandsFirst(),
-                        g.seePhase()));
+                        g.seePhase()), worldOptions.world());
         HadoopFiles hadoop = HadoopFiles.fromEnvironment();
         List<GameConversion.Game> games = games(hadoop);
         for (GameConversion.Game game : games) {

@@ -46,10 +46,10 @@ final class GameConversion {
      * for game logs the players chosen, the fading and the order of commands and sees.
      */
     record Settings(int columns, double minAngle, double maxAngle, double[] bounds, String pairing, boolean strict,
-                    GameLogSettings gameLogs) implements Serializable {
-        static Settings of(Grid grid, Pairing pairing, boolean strict, GameLogSettings gameLogs) {
+                    GameLogSettings gameLogs, boolean world) implements Serializable {
+        static Settings of(Grid grid, Pairing pairing, boolean strict, GameLogSettings gameLogs, boolean world) {
             return new Settings(grid.columns(), grid.minAngle(), grid.maxAngle(), grid.bounds(), pairing.key(), strict,
-                    gameLogs);
+                    gameLogs, world);
         }
 
         Grid grid() {
@@ -92,6 +92,7 @@ final class GameConversion {
                 SceneConverter converter = SceneConverter.with(grid)
                         .pairing(Pairing.fromKey(settings.pairing()))
                         .strict(settings.strict())
+                        .world(settings.world())
                         .warnings(line -> {
                             if (warnings.size() < WARNINGS_KEPT) {
                                 warnings.add(line.describe());
@@ -141,7 +142,8 @@ final class GameConversion {
         GameSceneFiles.Written written;
         try {
             GameLogs logs = new GameLogs(hadoop.local(gameLog, scratch), hadoop.local(commandLog, scratch));
-            written = GameSceneFiles.write(settings.gameLogs().converter(grid, Pairing.fromKey(settings.pairing())),
+            written = GameSceneFiles.write(settings.gameLogs().converter(grid, Pairing.fromKey(settings.pairing()))
+                            .world(settings.world()),
                     grid, logs, key -> files.resolve(key + ".json.gz"));
         } catch (IOException | RuntimeException e) {
             return List.of(failed(gameLog, gameLog + ": " + e.getMessage(), new ArrayList<>()));

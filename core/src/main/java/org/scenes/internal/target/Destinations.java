@@ -13,10 +13,11 @@ import org.scenes.api.World;
 import org.scenes.internal.match.KnowledgeBase;
 
 /**
- * Where each stored scene's player went in the next {@link #AHEAD} cycles: its displacement in the
- * field frame (the neighbours of a metric that ignores position, such as {@code ball-goal}, stand
- * anywhere, so their destinations only agree relative to each player), read from the same
- * player's later scene in the knowledge base (scenes of one recorded player lie
+ * Where each stored scene's player went in the next {@link #AHEAD} cycles, read from the same
+ * player's later scene in the knowledge base. A neighbour that stood near the deciding player
+ * lends the point it ran to (a formation spot); one that stood elsewhere (the neighbours of a
+ * metric that ignores position, such as {@code ball-goal}, stand anywhere) lends its displacement,
+ * added to the deciding player's position (scenes of one recorded player lie
  * in cycle order, one sequence after another). Unknown when that scene is missing, unlocated, or
  * a move or another play mode lies between (a kick-off's jump is no run).
  */
@@ -30,12 +31,20 @@ public final class Destinations {
     /** A player this near its ball at some cycle of the run reached the ball: a run to the ball (kicking reach). */
     static final double AT_BALL = 1.085;
 
+    /** A neighbour that stood this near the deciding player lends its end point, a farther one its displacement. */
+    static final double NEAR = 10;
+
+    /** where each scene's player stood, and where it was {@link #AHEAD} cycles later (NaN: unknown) */
+    private final double[] fromX;
+    private final double[] fromY;
     private final double[] x;
     private final double[] y;
     /** whether the player reached the ball on the way: it ran to the ball, wherever that was */
     private final boolean[] toBall;
 
-    private Destinations(double[] x, double[] y, boolean[] toBall) {
+    private Destinations(double[] fromX, double[] fromY, double[] x, double[] y, boolean[] toBall) {
+        this.fromX = fromX;
+        this.fromY = fromY;
         this.x = x;
         this.y = y;
         this.toBall = toBall;
@@ -91,22 +100,23 @@ public final class Destinations {
                 }
                 reachedBall |= Math.hypot(ballX[j] - atX[j], ballY[j] - atY[j]) <= AT_BALL;
                 if (gap >= AHEAD) {
-                    x[i] = atX[j] - atX[i];
-                    y[i] = atY[j] - atY[i];
+                    x[i] = atX[j];
+                    y[i] = atY[j];
                     toBall[i] = reachedBall;
                     break;
                 }
             }
         }
-        return new Destinations(x, y, toBall);
+        return new Destinations(atX, atY, x, y, toBall);
     }
 
     /**
      * Where to run for these neighbours, from {@code own}'s position: when most of those with a
      * destination ran to the ball, {@code ball} (the deciding player's own ball, null when it does
-     * not know one); else its position plus their mean displacement; null when none has one or the
-     * player's position is unknown. (A neighbour found as a transform's image, such as a mirrored
-     * scene, counts with its stored scene's displacement.)
+     * not know one); else the mean of their end points (those within {@link #NEAR} metres) and of
+     * their displacements from its position (the others); null when none has one or the player's
+     * position is unknown. (A neighbour found as a transform's image, such as a mirrored scene,
+     * counts as its stored scene.)
      */
     public double[] target(List<Neighbour> nearest, World own, double[] ball) {
         if (own == null || !own.located()) {
@@ -119,8 +129,9 @@ public final class Destinations {
         for (Neighbour neighbour : nearest) {
             int i = neighbour.index();
             if (i >= 0 && i < x.length && !Double.isNaN(x[i])) {
-                sumX += x[i];
-                sumY += y[i];
+                boolean near = Math.hypot(fromX[i] - own.x(), fromY[i] - own.y()) <= NEAR;
+                sumX += near ? x[i] : own.x() + x[i] - fromX[i];
+                sumY += near ? y[i] : own.y() + y[i] - fromY[i];
                 count++;
                 if (toBall[i]) {
                     ballRuns++;
@@ -133,6 +144,6 @@ public final class Destinations {
         if (2 * ballRuns > count && ball != null) {
             return ball;
         }
-        return new double[] {own.x() + sumX / count, own.y() + sumY / count};
+        return new double[] {sumX / count, sumY / count};
     }
 }

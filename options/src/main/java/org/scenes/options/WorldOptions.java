@@ -1,0 +1,17 @@
+package org.scenes.options;
+
+import picocli.CommandLine.Option;
+
+/** {@code --world} / {@code --no-world}: whether converted scenes carry the player's world model. */
+public final class WorldOptions {
+    @Option(names = "--world", negatable = true, defaultValue = "true", fallbackValue = "true",
+            description = "Give each scene the player's world model (its position, the ball's, the players it"
+                    + " remembers, stamina, play mode, score; scene format 2, docs/scene-format.md): what the field"
+                    + " metric, --replay target and the shipped configurations need. --no-world leaves it out"
+                    + " (files a third smaller, conversion a quarter faster). Default: on.")
+    private boolean world = true;
+
+    public boolean world() {
+        return world;
+    }
+}
