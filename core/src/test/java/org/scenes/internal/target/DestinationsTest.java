@@ -1,0 +1,91 @@
+package org.scenes.internal.target;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.scenes.api.Action;
+import org.scenes.api.Neighbour;
+import org.scenes.api.Observer;
+import org.scenes.api.Scene;
+import org.scenes.api.Side;
+import org.scenes.api.World;
+
+class DestinationsTest {
+    private static final Observer SEVEN = new Observer("T", Side.LEFT, 7);
+    private static final Observer EIGHT = new Observer("T", Side.LEFT, 8);
+
+    private static Scene at(Observer observer, int cycle, double x, double y, double ballX, double ballY, String mode,
+                            Action action) {
+        World world = new World(x, y, 0, 0, 0, 0, 8000, 1, 0, ballX, ballY, 0, 0, 0, List.of(), mode, 0, 0);
+        return new Scene(cycle, observer, List.of(), List.of(action), null, 0, world);
+    }
+
+    /** A player running along x one metre a cycle from {@code x0}, the ball far away. */
+    private static List<Scene> run(Observer observer, int cycles, double x0, double y) {
+        List<Scene> scenes = new ArrayList<>();
+        for (int t = 0; t < cycles; t++) {
+            scenes.add(at(observer, t, x0 + t, y, 40, 30, "play_on", Action.dash(100)));
+        }
+        return scenes;
+    }
+
+    private static Neighbour neighbour(int index) {
+        return new Neighbour(null, index, 0);
+    }
+
+    @Test
+    void aNearNeighbourLendsItsEndPointAFarOneItsDisplacement() {
+        List<Scene> scenes = run(SEVEN, 20, 0, 0);
+        Destinations destinations = Destinations.of(scenes);
+        World here = at(SEVEN, 0, 3, 4, 40, 30, "play_on", Action.dash(100)).world();
+        // scene 0 stood at (0, 0), 5 m away: its end point, (10, 0)
+        assertArrayEquals(new double[] {10, 0}, destinations.target(List.of(neighbour(0)), here, null), 1e-9);
+        World far = at(SEVEN, 0, -30, 20, 40, 30, "play_on", Action.dash(100)).world();
+        // 36 m away: its displacement, 10 m along x
+        assertArrayEquals(new double[] {-20, 20}, destinations.target(List.of(neighbour(0)), far, null), 1e-9);
+        // two neighbours: the mean
+        assertArrayEquals(new double[] {10.5, 0}, destinations.target(List.of(neighbour(0), neighbour(1)), here, null),
+                1e-9);
+    }
+
+    @Test
+    void noDestinationAcrossAnotherPlayerAPlayModeAMoveOrTheEndOfItsScenes() {
+        List<Scene> scenes = new ArrayList<>(run(SEVEN, 8, 0, 0));
+        scenes.addAll(run(EIGHT, 20, 0, 0)); // another player follows: scene 0 of number 7 has no tenth cycle
+        scenes.add(at(SEVEN, 30, 0, 0, 40, 30, "play_on", Action.dash(100)));
+        for (int t = 31; t < 45; t++) {
+            scenes.add(at(SEVEN, t, t - 30, 0, 40, 30, t < 35 ? "play_on" : "goal_l", Action.dash(100)));
+        }
+        Destinations destinations = Destinations.of(scenes);
+        World here = scenes.get(0).world();
+        assertNull(destinations.target(List.of(neighbour(0)), here, null));
+        assertNull(destinations.target(List.of(neighbour(28)), here, null)); // the play mode changes at cycle 35
+        List<Scene> moved = new ArrayList<>(run(SEVEN, 20, 0, 0));
+        moved.set(5, at(SEVEN, 5, -20, 0, 40, 30, "play_on", Action.move(-20, 0)));
+        assertNull(Destinations.of(moved).target(List.of(neighbour(0)), here, null));
+        assertNull(destinations.target(List.of(neighbour(0)), null, null));
+    }
+
+    @Test
+    void whenMostNeighboursReachedTheBallThePlayerRunsToItsOwnBall() {
+        List<Scene> scenes = new ArrayList<>();
+        for (int t = 0; t < 20; t++) {
+            // the ball rests at (5, 0): the player passes it at cycle 5
+            scenes.add(at(SEVEN, t, t, 0, 5, 0, "play_on", Action.dash(100)));
+        }
+        scenes.addAll(run(EIGHT, 20, 0, 10));
+        Destinations destinations = Destinations.of(scenes);
+        World here = scenes.get(0).world();
+        double[] ball = {7, 7};
+        assertArrayEquals(ball, destinations.target(List.of(neighbour(0), neighbour(1)), here, ball), 1e-9);
+        // one of three ran to the ball: the mean end point
+        assertArrayEquals(new double[] {10, 10 * 2 / 3.0},
+                destinations.target(List.of(neighbour(0), neighbour(20), neighbour(20)), here, ball), 1e-9);
+        // no ball known: the mean end point too
+        assertArrayEquals(new double[] {10.5, 0}, destinations.target(List.of(neighbour(0), neighbour(1)), here, null),
+                1e-9);
+    }
+}
