@@ -15,8 +15,9 @@ import org.scenes.api.World;
  * Re-expresses a recorded player's actions as what they achieved in the field frame, and reaches
  * the same from another player's state with the soccer server's motion models (default player
  * type): a turn becomes the body direction it produced (a turn with no ball in view stays a turn
- * by its moment: a search); a dash the field direction it drove along
- * (turning first when the body is more than {@link #DASH_TOLERANCE} degrees off it); a kick the
+ * by its moment: a search); a dash the field direction it drove along (turning first when the body
+ * is more than {@link #DASH_TOLERANCE} degrees off it) or, given where the neighbours ran
+ * ({@link Destinations}), a run there ({@link #goTo}); a kick the
  * ball velocity it produced, solved for power and direction from where the ball lies; a neck turn
  * the field direction the head came to look; a catch is aimed at the ball. A direction that pointed
  * at the ball or the opponent goal is re-aimed at them ({@link #anchored}). Moves and tackles stay
