@@ -1,13 +1,16 @@
 package org.scenes.cli;
 
+import com.fasterxml.jackson.core.type.TypeReference;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 import org.scenes.internal.convert.SceneComparison;
@@ -30,7 +33,7 @@ final class CompareCommand implements Callable<Integer> {
     Path first;
 
     @Parameters(index = "1", paramLabel = "B", description = {"The scene file to compare it with, or a directory:"
-            + " its files of the same names (every player of a game); the figures are summed."})
+            + " its files of the same names (every player of a game): each player's figures, then their sum."})
     Path second;
 
     @Option(names = "--json", description = "Print the figures as JSON.")
@@ -38,39 +41,68 @@ final class CompareCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        SceneComparison.Result r;
         if (Files.isDirectory(first) != Files.isDirectory(second)) {
             throw new UsageException("compare two scene files or two directories, not " + first + " and " + second);
         }
-        if (Files.isDirectory(first)) {
-            List<Path> left = new ArrayList<>();
-            List<Path> right = new ArrayList<>();
-            try (Stream<Path> files = Files.list(first)) {
-                for (Path file : files.filter(f -> f.getFileName().toString().matches(".*\\.json(\\.gz)?"))
-                        .sorted().toList()) {
-                    Path other = second.resolve(file.getFileName().toString());
-                    if (Files.isRegularFile(other)) {
-                        left.add(file);
-                        right.add(other);
-                    }
-                }
-            }
-            if (left.isEmpty()) {
-                throw new UsageException("no scene file of " + first + " has a namesake in " + second);
-            }
-            r = new SceneComparison().compare(left, right);
-            if (!json) {
-                spec.commandLine().getOut().printf(Locale.ROOT, "%-26s %d of the same name%n", "Files", left.size());
-            }
-        } else {
-            r = new SceneComparison().compare(first, second);
-        }
         PrintWriter out = spec.commandLine().getOut();
-        if (json) {
-            out.println(new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(r));
+        ObjectMapper mapper = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+        if (!Files.isDirectory(first)) {
+            SceneComparison.Result r = new SceneComparison().compare(first, second);
+            if (json) {
+                out.println(mapper.writeValueAsString(r));
+            } else {
+                print(out, r);
+            }
             out.flush();
             return ExitCodes.OK;
         }
+        List<Path> left = new ArrayList<>();
+        List<Path> right = new ArrayList<>();
+        try (Stream<Path> files = Files.list(first)) {
+            for (Path file : files.filter(f -> f.getFileName().toString().matches(".*\\.json(\\.gz)?"))
+                    .sorted().toList()) {
+                Path other = second.resolve(file.getFileName().toString());
+                if (Files.isRegularFile(other)) {
+                    left.add(file);
+                    right.add(other);
+                }
+            }
+        }
+        if (left.isEmpty()) {
+            throw new UsageException("no scene file of " + first + " has a namesake in " + second);
+        }
+        SceneComparison comparison = new SceneComparison();
+        List<Map<String, Object>> players = new ArrayList<>();
+        for (int i = 0; i < left.size(); i++) {
+            SceneComparison.Result one = comparison.compare(left.get(i), right.get(i));
+            String name = left.get(i).getFileName().toString();
+            if (json) {
+                Map<String, Object> player = new LinkedHashMap<>();
+                player.put("file", name);
+                player.putAll(mapper.convertValue(one, new TypeReference<Map<String, Object>>() { }));
+                players.add(player);
+            } else {
+                out.printf(Locale.ROOT, "%-26s %s%n", "File", name);
+                print(out, one);
+                out.println();
+            }
+        }
+        SceneComparison.Result all = comparison.compare(left, right);
+        if (json) {
+            // the summed figures keep their keys at the top; each player's are under "players"
+            Map<String, Object> result = new LinkedHashMap<>(
+                    mapper.convertValue(all, new TypeReference<Map<String, Object>>() { }));
+            result.put("players", players);
+            out.println(mapper.writeValueAsString(result));
+        } else {
+            out.printf(Locale.ROOT, "%-26s %d of the same name, summed%n", "Files", left.size());
+            print(out, all);
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    private static void print(PrintWriter out, SceneComparison.Result r) {
         out.printf(Locale.ROOT, "%-26s %s | %s%n", "Players", r.observerA().label(), r.observerB().label());
         out.printf(Locale.ROOT, "%-26s %d | %d, %d of the same cycle%n", "Scenes", r.scenesA(), r.scenesB(),
                 r.paired());
@@ -84,7 +116,5 @@ final class CompareCommand implements Callable<Integer> {
                 r.directionErrorMax());
         out.printf(Locale.ROOT, "%-26s %.3f %% same type, %.3f %% same command%n", "Actions agree",
                 100 * r.actionTypeShare(), 100 * r.actionShare());
-        out.flush();
-        return ExitCodes.OK;
     }
 }

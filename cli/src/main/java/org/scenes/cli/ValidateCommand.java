@@ -119,6 +119,9 @@ final class ValidateCommand implements Callable<Integer> {
                 out.println("Chart written to " + chart);
             }
         }
+        if (predictions != null && !json) {
+            out.printf("%-24s %s%n", "Predictions written", predictions);
+        }
         out.flush();
         return ExitCodes.OK;
     }

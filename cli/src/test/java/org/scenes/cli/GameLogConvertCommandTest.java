@@ -81,6 +81,25 @@ class GameLogConvertCommandTest {
     }
 
     @Test
+    void compareOfTwoDirectoriesReportsEveryPlayerThenTheSum() throws IOException {
+        Path rcg = game();
+        assertEquals(0, run("convert", rcg, "--out-dir", dir.resolve("s")), err);
+        assertEquals(0, run("compare", dir.resolve("s"), dir.resolve("s")), err);
+        int myTeam = out.indexOf("File                       My_Team_1.json.gz");
+        int other = out.indexOf("File                       Other_1.json.gz");
+        int sum = out.indexOf("Files                      2 of the same name, summed");
+        assertTrue(myTeam >= 0 && other > myTeam && sum > other, out);
+        assertTrue(out.substring(other, sum).contains("Players                    Other 1"), out);
+        assertEquals(3, out.split("100.000 % same type", -1).length - 1, out);
+        assertEquals(0, run("compare", dir.resolve("s"), dir.resolve("s"), "--json"), err);
+        com.fasterxml.jackson.databind.JsonNode json = new com.fasterxml.jackson.databind.ObjectMapper().readTree(out);
+        assertEquals(2, json.get("players").size(), out);
+        assertEquals("Other_1.json.gz", json.get("players").get(1).get("file").asText());
+        assertEquals(json.get("paired").asLong(), json.get("players").get(0).get("paired").asLong()
+                + json.get("players").get(1).get("paired").asLong(), out);
+    }
+
+    @Test
     void oneFileTakesOnePlayer() throws IOException {
         Path rcg = game();
         Path rcl = dir.resolve("g.rcl");

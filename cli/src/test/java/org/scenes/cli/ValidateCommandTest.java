@@ -73,6 +73,29 @@ class ValidateCommandTest {
         assertEquals(result.get("kick").get("total").asInt(), result.get("kick").get("correct").asInt());
         assertTrue(result.get("kick").get("total").asInt() > 10);
         assertTrue(result.get("decisionMicros").has("p99"));
+        JsonNode time = result.get("decisionMicros");
+        assertTrue(time.get("p50").asDouble() <= time.get("p99").asDouble(), time.toString());
+    }
+
+    @Test
+    void decisionTimeLinePrintsTheMedianAndFlagsWarmUpOutliers() {
+        Action[] actions = new Action[100];
+        java.util.Arrays.fill(actions, Action.dash(50));
+        long[] steady = new long[100];
+        java.util.Arrays.fill(steady, 20_000);
+        long[] warmUp = steady.clone();
+        warmUp[0] = 50_000_000;
+        java.io.StringWriter text = new java.io.StringWriter();
+        ReportTables.printRun(new java.io.PrintWriter(text, true),
+                org.scenes.internal.validate.ValidationReport.of(10, actions, actions, steady));
+        assertTrue(text.toString().contains("mean 20.0 us, p50 20.0 us, p99 20.0 us, max 20.0 us"), text.toString());
+        assertFalse(text.toString().contains("warm-up"), text.toString());
+        text = new java.io.StringWriter();
+        ReportTables.printRun(new java.io.PrintWriter(text, true),
+                org.scenes.internal.validate.ValidationReport.of(10, actions, actions, warmUp));
+        assertTrue(text.toString().contains("mean 519.8 us (warm-up included), p50 20.0 us, p99 20.0 us, max 50000.0 us"),
+                text.toString());
+        assertTrue(text.toString().contains("the max is JIT warm-up or a GC pause"), text.toString());
     }
 
     @Test
@@ -103,6 +126,7 @@ class ValidateCommandTest {
         assertEquals(0, run("validate", "--train", a, "--test", b, "--metric", "random,ball-goal", "--predictions", csv,
                 "--json"), cli.err());
         JsonNode runs = json().get("configurations");
+        assertFalse(cli.out().contains("Predictions written"), "--json prints JSON only");
         List<org.apache.commons.csv.CSVRecord> rows;
         try (java.io.Reader in = Files.newBufferedReader(csv);
              org.apache.commons.csv.CSVParser parser = org.apache.commons.csv.CSVParser.parse(in,
@@ -128,6 +152,10 @@ class ValidateCommandTest {
                         recorded + " against " + predicted);
             }
         }
+        Path again = dir.resolve("again.csv");
+        assertEquals(0, run("validate", "--train", a, "--test", b, "--metric", "ball-goal", "--predictions", again),
+                cli.err());
+        assertTrue(cli.out().contains("Predictions written      " + again), cli.out());
         assertEquals(ExitCodes.USAGE, run("validate", "--folds", a, b, "--predictions", csv));
         assertTrue(cli.err().contains("--predictions"), cli.err());
         assertEquals(ExitCodes.USAGE, run("validate", "--train", a, "--test", b, "--predictions", dir.resolve("p.txt")));

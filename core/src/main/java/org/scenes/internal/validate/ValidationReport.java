@@ -32,6 +32,7 @@ public final class ValidationReport {
     private int turnPairs;
     private int turnSignAgree;
     private final double meanMicros;
+    private final double p50Micros;
     private final double p99Micros;
     private final double maxMicros;
     private final Action[] truth;
@@ -116,6 +117,7 @@ public final class ValidationReport {
         directionCorrect = withDirection;
         double[] micros = Arrays.stream(nanos).mapToDouble(n -> n / 1000.0).sorted().toArray();
         meanMicros = micros.length == 0 ? 0 : Arrays.stream(micros).average().orElse(0);
+        p50Micros = micros.length == 0 ? 0 : micros[Math.max(0, (int) Math.ceil(0.5 * micros.length) - 1)];
         p99Micros = micros.length == 0 ? 0 : micros[Math.min(micros.length - 1, (int) Math.ceil(0.99 * micros.length) - 1)];
         maxMicros = micros.length == 0 ? 0 : micros[micros.length - 1];
     }
@@ -435,6 +437,11 @@ public final class ValidationReport {
         return meanMicros;
     }
 
+    /** The median (nearest rank) of the same decisions the mean is over: a typical decision's time. */
+    public double p50DecisionMicros() {
+        return p50Micros;
+    }
+
     /**
      * The 99th percentile (nearest rank) of the same decisions the mean is over: the mean can lie
      * above it when under 1 % of them are very slow (JIT warm-up, a garbage collection); see the max.
@@ -513,6 +520,7 @@ public final class ValidationReport {
         map.put("parameters", parameters);
         Map<String, Object> time = new LinkedHashMap<>();
         time.put("mean", number(meanDecisionMicros()));
+        time.put("p50", number(p50DecisionMicros()));
         time.put("p99", number(p99DecisionMicros()));
         time.put("max", number(maxDecisionMicros()));
         time.put("decisions", testScenes);
