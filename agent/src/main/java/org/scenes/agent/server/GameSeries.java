@@ -27,6 +27,9 @@ public final class GameSeries {
     private final Consumer<String> events;
     private volatile boolean stopRequested;
     private volatile SoccerServer current;
+    /** How long the next game may wait for the previous game's port to be free again. */
+    private static final long REBIND_MILLIS = 5000;
+    private static final long REBIND_PAUSE_MILLIS = 50;
 
     /**
      * @param config the first game's configuration; its seed is the first seed
@@ -67,7 +70,7 @@ public final class GameSeries {
                 // holds complete, numbered logs
                 one = one.withRecordDirectory(Files.createDirectories(config.recordDirectory().resolve(".serving")));
             }
-            try (SoccerServer server = SoccerServer.open(one, events)) {
+            try (SoccerServer server = game == 0 ? SoccerServer.open(one, events) : reopen(one)) {
                 current = server;
                 // port 0: any free port for the first game, the same for the next ones
                 port = server.port();
@@ -94,6 +97,30 @@ public final class GameSeries {
             }
         }
         return results;
+    }
+
+    /**
+     * The next game's server on the previous game's port. The previous socket's close can complete
+     * a moment after {@code close} returns (seen as "Address already in use" in about every other
+     * series under test), so binding is retried for up to {@link #REBIND_MILLIS}.
+     */
+    private SoccerServer reopen(ServerConfig one) throws IOException {
+        long deadline = System.nanoTime() + REBIND_MILLIS * 1_000_000L;
+        while (true) {
+            try {
+                return SoccerServer.open(one, events);
+            } catch (IOException inUse) {
+                if (System.nanoTime() > deadline || stopRequested) {
+                    throw inUse;
+                }
+                try {
+                    Thread.sleep(REBIND_PAUSE_MILLIS);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    throw inUse;
+                }
+            }
+        }
     }
 
     /** Ends the game being served (its logs are completed) and serves no more; from any thread. */
