@@ -20,7 +20,7 @@ import picocli.CommandLine;
                 ValidateCommand.class, TuneCommand.class, ExperimentCommand.class, BenchCommand.class,
                 SimulateCommand.class, PlayCommand.class, TeamCommand.class, EvaluateCommand.class,
                 MatchCommand.class, ReplayCommand.class, DemoCommand.class, ProxyCommand.class, ServerCommand.class,
-                CompareCommand.class, WorldErrorCommand.class})
+                CompareCommand.class, WorldErrorCommand.class, GameLogCheckCommand.class})
 final class ScenesCommand implements Runnable {
     @Spec
     CommandLine.Model.CommandSpec spec;

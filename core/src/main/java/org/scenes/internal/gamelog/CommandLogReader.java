@@ -14,7 +14,7 @@ import org.scenes.internal.files.Inputs;
  * {@code TEAM_Coach} has none) and {@code TIME,STOPPAGE<TAB>(referee WORD)} for the referee.
  * Plain or gzip. Lines must come in the order of the steps; errors name the file and line.
  */
-public final class CommandLogReader implements AutoCloseable {
+public final class CommandLogReader implements CommandSource {
     /**
      * One line of the log.
      *
@@ -48,11 +48,13 @@ public final class CommandLogReader implements AutoCloseable {
         return new CommandLogReader(file);
     }
 
+    @Override
     public Path file() {
         return file;
     }
 
     /** The next entry that is a player's message or the referee's; null at the end of the log. */
+    @Override
     public Entry next() throws IOException {
         String text;
         while ((text = in.readLine()) != null) {

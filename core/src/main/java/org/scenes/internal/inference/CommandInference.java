@@ -1,0 +1,297 @@
+package org.scenes.internal.inference;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.PlayerState;
+import org.scenes.internal.protocol.CommandType;
+
+/**
+ * The commands one player executed in one simulator step, from the game log's shows before and
+ * after it: which ones from the command counters, their arguments by inverting rcssserver's models.
+ * <ul>
+ * <li>turn: the body turns by {@code moment (1 + r) / (1 + inertia_moment |v|)}, {@code r} uniform
+ *     within {@code player_rand}: the moment is the turn times {@code 1 + inertia_moment |v|}, within
+ *     {@code player_rand} of the moment;</li>
+ * <li>dash: the stamina drops by the power (twice a negative one) and recovers by
+ *     {@code recovery stamina_inc_max} (at most the capacity left): the power exactly while the stamina
+ *     stays below its maximum; the direction is that of the acceleration
+ *     {@code v' / player_decay - v} relative to the body (the velocity's noise bounds it); at full
+ *     stamina the power comes from the acceleration's length, {@code effort power dir_rate dash_power_rate};</li>
+ * <li>kick: the ball's acceleration {@code v' / ball_decay - v} points in the kick's direction relative to the
+ *     body, its length is {@code power kick_power_rate (1 - 0.25 dir_diff / 180 - 0.25 dist / kickable_margin)}
+ *     with the ball's direction and distance from the kicker before the kick;</li>
+ * <li>turn_neck: the neck angle's change (at the neck's limit, at least that); move: the position
+ *     after (in the player's own coordinates); catch: the ball's direction from the body;
+ *     tackle: the ball's acceleration's direction, else the ball's direction; change_view: the view after.</li>
+ * </ul>
+ * {@code say}, {@code pointto} and {@code attentionto} are counted by the server but their words are
+ * not in a show: they are left out.
+ */
+final class CommandInference {
+    /** One inferred command: arguments as the protocol orders them, with their bounds (NaN: not given). */
+    record Command(CommandType type, double first, double second, double firstBound, double secondBound) {
+        /** The command as a player writes it. */
+        String text() {
+            return switch (type) {
+                case DASH, KICK, MOVE -> String.format(Locale.ROOT, "(%s %s %s)", type.key(), num(first), num(second));
+                case CHANGE_VIEW -> "(change_view " + VIEWS[(int) first] + (second == 0 ? " low" : "") + ")";
+                default -> String.format(Locale.ROOT, "(%s %s)", type.key(), num(first));
+            };
+        }
+
+        private static String num(double value) {
+            String text = String.format(Locale.ROOT, "%.3f", value);
+            text = text.contains(".") ? text.replaceAll("0+$", "").replaceAll("\\.$", "") : text;
+            return text.equals("-0") ? "0" : text;
+        }
+    }
+
+    /** The commands of a player's step, or why the counters tell none (null when they do). */
+    record Step(List<Command> commands, String irregular) {
+        CommandType body() {
+            for (Command command : commands) {
+                if (command.type().body()) {
+                    return command.type();
+                }
+            }
+            return null;
+        }
+
+        String text() {
+            StringBuilder text = new StringBuilder(64);
+            for (Command command : commands) {
+                text.append(command.text());
+            }
+            return text.toString();
+        }
+    }
+
+    static final String[] VIEWS = {"narrow", "normal", "wide"};
+    private static final double BALL_MOVED = 1e-3;
+
+    private final ServerModel model;
+    private final double playerRand;
+    private final double ballDecay;
+    private final double ballRand;
+    private final double ballSize;
+    private final double staminaMax;
+    private final double sideDashRate;
+    private final double backDashRate;
+    private final double dashAngleStep;
+    private final double minMoment;
+    private final double maxMoment;
+    private final double minPower;
+    private final double maxPower;
+    private final double minDashPower;
+    private final double maxDashPower;
+    private final double maxNeckAngle;
+    private final double minNeckAngle;
+    private final double visibleAngle;
+
+    CommandInference(ServerModel model) {
+        this.model = model;
+        playerRand = model.get("player_rand", 0.1);
+        ballDecay = model.get("ball_decay", 0.94);
+        ballRand = model.get("ball_rand", 0.05);
+        ballSize = model.get("ball_size", 0.085);
+        staminaMax = model.get("stamina_max", 8000);
+        sideDashRate = model.get("side_dash_rate", 0.4);
+        backDashRate = model.get("back_dash_rate", 0.7);
+        dashAngleStep = Math.max(1e-6, model.get("dash_angle_step", 1));
+        minMoment = model.get("minmoment", -180);
+        maxMoment = model.get("maxmoment", 180);
+        minPower = model.get("minpower", -100);
+        maxPower = model.get("maxpower", 100);
+        minDashPower = model.get("min_dash_power", 0);
+        maxDashPower = model.get("max_dash_power", 100);
+        minNeckAngle = model.get("minneckang", -90);
+        maxNeckAngle = model.get("maxneckang", 90);
+        visibleAngle = model.get("visible_angle", 90);
+    }
+
+    /**
+     * The commands player {@code a} (in show {@code before}) executed in the step to show
+     * {@code after}, where it is {@code b}.
+     */
+    Step infer(GameFrame before, PlayerState a, GameFrame after, PlayerState b) {
+        PlayerState.Counts x = a.counts();
+        PlayerState.Counts y = b.counts();
+        int[] deltas = {y.kick() - x.kick(), y.dash() - x.dash(), y.turn() - x.turn(), y.catches() - x.catches(),
+            y.move() - x.move(), y.tackle() - x.tackle(), y.turnNeck() - x.turnNeck(), y.changeView() - x.changeView()};
+        String[] names = {"kick", "dash", "turn", "catch", "move", "tackle", "turn_neck", "change_view"};
+        int body = 0;
+        for (int i = 0; i < deltas.length; i++) {
+            if (deltas[i] < 0) {
+                return new Step(List.of(), names[i] + " count goes back from " + (count(x, i)) + " to " + count(y, i));
+            }
+            if (deltas[i] > 1) {
+                return new Step(List.of(), names[i] + " count jumps by " + deltas[i]);
+            }
+            body += i < 6 ? deltas[i] : 0;
+        }
+        if (body > 1) {
+            return new Step(List.of(), "two body commands counted in one step");
+        }
+        List<Command> commands = new ArrayList<>(3);
+        if (deltas[0] == 1) {
+            commands.add(kick(before, a, after));
+        } else if (deltas[1] == 1) {
+            commands.add(dash(a, b));
+        } else if (deltas[2] == 1) {
+            commands.add(turn(a, b));
+        } else if (deltas[3] == 1) {
+            commands.add(catchBall(before, a));
+        } else if (deltas[4] == 1) {
+            commands.add(move(b));
+        } else if (deltas[5] == 1) {
+            commands.add(tackle(before, a, after));
+        }
+        if (deltas[6] == 1) {
+            double moment = b.neck() - a.neck();
+            boolean atLimit = Math.abs(b.neck() - maxNeckAngle) < 1e-6 || Math.abs(b.neck() - minNeckAngle) < 1e-6;
+            commands.add(new Command(CommandType.TURN_NECK, moment, Double.NaN, atLimit ? Double.POSITIVE_INFINITY : 0.5,
+                    Double.NaN));
+        }
+        if (deltas[7] == 1) {
+            commands.add(changeView(b));
+        }
+        return new Step(commands, null);
+    }
+
+    private static int count(PlayerState.Counts c, int i) {
+        return switch (i) {
+            case 0 -> c.kick();
+            case 1 -> c.dash();
+            case 2 -> c.turn();
+            case 3 -> c.catches();
+            case 4 -> c.move();
+            case 5 -> c.tackle();
+            case 6 -> c.turnNeck();
+            default -> c.changeView();
+        };
+    }
+
+    Command turn(PlayerState a, PlayerState b) {
+        double speed = Math.hypot(a.vx(), a.vy());
+        double factor = 1 + model.type(a.type()).inertiaMoment() * speed;
+        double turned = normalize(b.body() - a.body());
+        double moment = clamp(turned * factor, minMoment, maxMoment);
+        // a turn of more than 180 degrees (at full moment, standing, with noise) shows as one the other way
+        double limit = Math.max(Math.abs(minMoment), Math.abs(maxMoment));
+        double bound = Math.abs(moment) * playerRand / (1 - playerRand) + 0.001 * factor;
+        if (Math.abs(turned) * factor > limit * (1 - playerRand)) {
+            bound = Math.max(bound, limit * playerRand * 2);
+        }
+        return new Command(CommandType.TURN, moment, Double.NaN, bound, Double.NaN);
+    }
+
+    Command dash(PlayerState a, PlayerState b) {
+        ServerModel.PlayerType type = model.type(a.type());
+        double accelX = b.vx() / type.decay() - a.vx();
+        double accelY = b.vy() / type.decay() - a.vy();
+        double accel = Math.hypot(accelX, accelY);
+        double noise = playerRand * Math.hypot(a.vx() + accelX, a.vy() + accelY) * Math.sqrt(2);
+        double direction = accel < 1e-4 ? 0 : normalize(Math.toDegrees(Math.atan2(accelY, accelX)) - a.body());
+        direction = clamp(dashAngleStep * Math.rint(direction / dashAngleStep), model.get("min_dash_angle", -180),
+                model.get("max_dash_angle", 180));
+        double directionBound = accel <= noise ? 180 : Math.toDegrees(Math.asin(Math.min(1, noise / accel)));
+        double recovered = Double.isNaN(b.recovery()) ? type.staminaIncMax() : b.recovery() * type.staminaIncMax();
+        if (!Double.isNaN(a.capacity())) {
+            recovered = Math.min(recovered, a.capacity());
+        }
+        double power;
+        double powerBound;
+        if (b.stamina() < staminaMax - 0.01) {
+            double need = a.stamina() - b.stamina() + recovered;
+            // a negative power costs twice its size: the acceleration against the body's direction tells it
+            power = minDashPower < 0 && Math.abs(direction) > 90 && model.get("max_dash_angle", 180) == 0 ? -need / 2
+                    : need;
+            powerBound = 0.02 + (Double.isNaN(a.capacity()) ? 0 : 0.5);
+        } else {
+            // at full stamina the recovery hides the cost: the acceleration's length tells the power
+            double rate = a.effort() * dirRate(direction) * type.dashPowerRate();
+            power = rate <= 0 ? 0 : accel / rate;
+            powerBound = rate <= 0 ? maxDashPower : noise / rate;
+        }
+        power = clamp(power, Math.min(0, minDashPower), maxDashPower);
+        return new Command(CommandType.DASH, power, direction, powerBound, directionBound);
+    }
+
+    /** The share of a dash's power that acts in direction {@code dir} from the body. */
+    double dirRate(double dir) {
+        double abs = Math.abs(dir);
+        return abs > 90 ? backDashRate - (backDashRate - sideDashRate) * (1 - (abs - 90) / 90)
+                : sideDashRate + (1 - sideDashRate) * (1 - abs / 90);
+    }
+
+    Command kick(GameFrame before, PlayerState a, GameFrame after) {
+        ServerModel.PlayerType type = model.type(a.type());
+        GameFrame.BallState ball = before.ball();
+        GameFrame.BallState next = after.ball();
+        double accelX = next.vx() / ballDecay - ball.vx();
+        double accelY = next.vy() / ballDecay - ball.vy();
+        double accel = Math.hypot(accelX, accelY);
+        if (accel < BALL_MOVED) {
+            // the ball did not move: out of reach, or another player's kick met this one
+            return new Command(CommandType.KICK, 0, 0, Double.POSITIVE_INFINITY, 180);
+        }
+        double direction = normalize(Math.toDegrees(Math.atan2(accelY, accelX)) - a.body());
+        double toBall = Math.toDegrees(Math.atan2(ball.y() - a.y(), ball.x() - a.x()));
+        double dirDiff = Math.abs(normalize(toBall - a.body()));
+        double distance = Math.hypot(ball.x() - a.x(), ball.y() - a.y()) - type.playerSize() - ballSize;
+        double rate = type.kickPowerRate() * (1 - 0.25 * dirDiff / 180 - 0.25 * Math.max(0, distance) / type.kickableMargin());
+        double power = rate <= 0 ? maxPower : clamp(accel / rate, minPower, maxPower);
+        // the kick's noise (kick_rand of the power) and the ball's (ball_rand of its speed), each axis
+        double noise = Math.sqrt(2) * (type.kickRand() * Math.abs(power) / maxPower
+                + ballRand * Math.hypot(ball.vx() + accelX, ball.vy() + accelY));
+        double directionBound = accel <= noise ? 180 : Math.toDegrees(Math.asin(Math.min(1, noise / accel)));
+        return new Command(CommandType.KICK, power, direction, rate <= 0 ? maxPower : noise / rate, directionBound);
+    }
+
+    Command catchBall(GameFrame before, PlayerState a) {
+        GameFrame.BallState ball = before.ball();
+        double direction = normalize(Math.toDegrees(Math.atan2(ball.y() - a.y(), ball.x() - a.x())) - a.body());
+        direction = clamp(direction, model.get("min_catch_angle", -90), model.get("max_catch_angle", 90));
+        return new Command(CommandType.CATCH, direction, Double.NaN, 1, Double.NaN);
+    }
+
+    Command tackle(GameFrame before, PlayerState a, GameFrame after) {
+        GameFrame.BallState ball = before.ball();
+        GameFrame.BallState next = after.ball();
+        double accelX = next.vx() / ballDecay - ball.vx();
+        double accelY = next.vy() / ballDecay - ball.vy();
+        boolean moved = Math.hypot(accelX, accelY) > BALL_MOVED;
+        double world = moved ? Math.atan2(accelY, accelX) : Math.atan2(ball.y() - a.y(), ball.x() - a.x());
+        return new Command(CommandType.TACKLE, normalize(Math.toDegrees(world) - a.body()), Double.NaN,
+                moved ? 10 : 180, Double.NaN);
+    }
+
+    static Command move(PlayerState b) {
+        double sign = b.side() == Side.LEFT ? 1 : -1;
+        return new Command(CommandType.MOVE, sign * b.x(), sign * b.y(), 0.01, 0.01);
+    }
+
+    Command changeView(PlayerState b) {
+        double factor = b.viewWidth() / visibleAngle;
+        // asynchronous cones are half, one and two visible angles; synchronous ones two thirds, four thirds and two
+        int width = factor < 0.75 ? 0 : factor < 1.6 ? 1 : 2;
+        return new Command(CommandType.CHANGE_VIEW, width, b.viewQuality() == 'l' ? 0 : 1, 0, 0);
+    }
+
+    static double normalize(double degrees) {
+        double angle = degrees % 360;
+        if (angle > 180) {
+            angle -= 360;
+        } else if (angle < -180) {
+            angle += 360;
+        }
+        return angle;
+    }
+
+    private static double clamp(double value, double low, double high) {
+        return Math.max(low, Math.min(high, value));
+    }
+}

@@ -1,0 +1,160 @@
+package org.scenes.internal.inference;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Map;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.CommandLogReader;
+import org.scenes.internal.gamelog.CommandSource;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.GameLogException;
+import org.scenes.internal.gamelog.GameLogReader;
+import org.scenes.internal.gamelog.PlayerState;
+
+/**
+ * A command log inferred from a game log alone: for each pair of consecutive shows, what each
+ * player executed in the step between them ({@link CommandInference}), as an entry at the first
+ * show's cycle and stoppage (the show's place among those of its cycle), where rcssserver logs what
+ * it received in that step. A player step whose counters go back or jump by more than one (the
+ * steps a game log does not show, before kick-off) gets no entry; they are counted in
+ * {@link #warnings()}, the first named.
+ */
+public final class InferredCommandLog implements CommandSource {
+    /** What one player executed in one step. */
+    record PlayerStep(int time, int stoppage, String team, int unum, CommandInference.Step step) {
+    }
+
+    /** Receives the inferred steps in order. */
+    @FunctionalInterface
+    interface Listener {
+        void step(PlayerStep step);
+    }
+
+    private final Path gameLog;
+    private final List<CommandLogReader.Entry> entries;
+    private final List<String> warnings;
+    private final Iterator<CommandLogReader.Entry> next;
+
+    private InferredCommandLog(Path gameLog, List<CommandLogReader.Entry> entries, List<String> warnings) {
+        this.gameLog = gameLog;
+        this.entries = entries;
+        this.warnings = warnings;
+        this.next = entries.iterator();
+    }
+
+    /** Reads the game log and infers its players' commands. */
+    public static InferredCommandLog of(Path gameLog) throws IOException {
+        List<CommandLogReader.Entry> entries = new ArrayList<>();
+        List<String> warnings = infer(gameLog, step -> {
+            String text = step.step().text();
+            if (!text.isEmpty()) {
+                entries.add(new CommandLogReader.Entry(0, step.time(), step.stoppage(), step.team(), step.unum(), text));
+            }
+        });
+        return new InferredCommandLog(gameLog, entries, warnings);
+    }
+
+    /** Player steps inferred. */
+    public int size() {
+        return entries.size();
+    }
+
+    /** What the counters did not tell, naming the game log and cycle. */
+    public List<String> warnings() {
+        return warnings;
+    }
+
+    /**
+     * Infers every player's step of the game log in order, handing each to {@code listener}; returns
+     * the warnings. A game log cut in its last line gives the steps up to there.
+     */
+    static List<String> infer(Path gameLog, Listener listener) throws IOException {
+        Walk walk = new Walk(gameLog, listener);
+        try {
+            GameLogReader.forEach(gameLog, walk::frame, walk.model::parameters);
+        } catch (GameLogException e) {
+            if (!e.cutOff() || walk.previous == null) {
+                throw e;
+            }
+            walk.warnings.add(e.getMessage() + "; the game log is cut there: commands up to cycle "
+                    + walk.previous.time() + " inferred");
+        }
+        if (walk.irregular > 0) {
+            walk.warnings.add(gameLog + ": " + walk.irregular + " player steps without inferred commands: counters"
+                    + " going back or jumping by more than one between two shows (steps the log does not show); the first "
+                    + walk.firstIrregular);
+        }
+        return walk.warnings;
+    }
+
+    private static final class Walk {
+        final Path gameLog;
+        final Listener listener;
+        final ServerModel model = new ServerModel();
+        final List<String> warnings = new ArrayList<>();
+        CommandInference inference;
+        GameFrame previous;
+        int previousStoppage;
+        final Map<Integer, PlayerState> before = new HashMap<>();
+        long irregular;
+        String firstIrregular;
+
+        Walk(Path gameLog, Listener listener) {
+            this.gameLog = gameLog;
+            this.listener = listener;
+        }
+
+        void frame(GameFrame frame) {
+            if (inference == null) {
+                inference = new CommandInference(model); // the parameters come before the first show
+            }
+            int stoppage = previous != null && previous.time() == frame.time() ? previousStoppage + 1 : 0;
+            if (previous != null) {
+                for (PlayerState b : frame.players()) {
+                    PlayerState a = before.get(slot(b));
+                    if (a == null) {
+                        continue;
+                    }
+                    CommandInference.Step step = inference.infer(previous, a, frame, b);
+                    String team = a.side() == Side.LEFT ? previous.leftTeam() : previous.rightTeam();
+                    if (step.irregular() != null) {
+                        if (irregular++ == 0) {
+                            firstIrregular = "at cycle " + previous.time() + " for " + team + "_" + a.unum() + ": "
+                                    + step.irregular();
+                        }
+                        continue;
+                    }
+                    listener.step(new PlayerStep(previous.time(), previousStoppage, team, a.unum(), step));
+                }
+            }
+            before.clear();
+            for (PlayerState state : frame.players()) {
+                before.put(slot(state), state);
+            }
+            previous = frame;
+            previousStoppage = stoppage;
+        }
+
+        private static int slot(PlayerState state) {
+            return (state.side() == Side.LEFT ? 0 : 1000) + state.unum();
+        }
+    }
+
+    @Override
+    public CommandLogReader.Entry next() {
+        return next.hasNext() ? next.next() : null;
+    }
+
+    @Override
+    public Path file() {
+        return gameLog;
+    }
+
+    @Override
+    public void close() {
+    }
+}
