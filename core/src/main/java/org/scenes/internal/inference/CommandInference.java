@@ -20,7 +20,9 @@ import org.scenes.internal.protocol.CommandType;
  *     stays below its maximum; the direction is that of the acceleration
  *     {@code v' / player_decay - v} relative to the body (the velocity's noise bounds it); at full
  *     stamina the power comes from the acceleration's length, {@code effort power dir_rate dash_power_rate};</li>
- * <li>kick: the ball's acceleration {@code v' / ball_decay - v} points in the kick's direction relative to the
+ * <li>kick: the ball's acceleration {@code v' / ball_decay - v} (a ball that bounced off a player,
+ *     reversed at a tenth of its speed, turned back; one cut to {@code ball_speed_max}, the full
+ *     kick that ends on its velocity's ray) points in the kick's direction relative to the
  *     body, its length is {@code power kick_power_rate (1 - 0.25 dir_diff / 180 - 0.25 dist / kickable_margin)}
  *     with the ball's direction and distance from the kicker before the kick;</li>
  * <li>turn_neck: the neck angle's change (at the neck's limit, at least that); move: the position
@@ -77,6 +79,8 @@ final class CommandInference {
     private final double ballDecay;
     private final double ballRand;
     private final double ballSize;
+    private final double ballSpeedMax;
+    private final double ballAccelMax;
     private final double staminaMax;
     private final double sideDashRate;
     private final double backDashRate;
@@ -97,6 +101,8 @@ final class CommandInference {
         ballDecay = model.get("ball_decay", 0.94);
         ballRand = model.get("ball_rand", 0.05);
         ballSize = model.get("ball_size", 0.085);
+        ballSpeedMax = model.get("ball_speed_max", 3);
+        ballAccelMax = model.get("ball_accel_max", 2.7);
         staminaMax = model.get("stamina_max", 8000);
         sideDashRate = model.get("side_dash_rate", 0.4);
         backDashRate = model.get("back_dash_rate", 0.7);
@@ -231,24 +237,49 @@ final class CommandInference {
         ServerModel.PlayerType type = model.type(a.type());
         GameFrame.BallState ball = before.ball();
         GameFrame.BallState next = after.ball();
-        double accelX = next.vx() / ballDecay - ball.vx();
-        double accelY = next.vy() / ballDecay - ball.vy();
+        // a ball that ran into a player bounces back at a tenth of its speed
+        double bounce = bounced(ball, next) ? -0.1 : 1;
+        double accelX = next.vx() / (ballDecay * bounce) - ball.vx();
+        double accelY = next.vy() / (ballDecay * bounce) - ball.vy();
         double accel = Math.hypot(accelX, accelY);
         if (accel < BALL_MOVED) {
             // the ball did not move: out of reach, or another player's kick met this one
             return new Command(CommandType.KICK, 0, 0, Double.POSITIVE_INFINITY, 180);
         }
-        double direction = normalize(Math.toDegrees(Math.atan2(accelY, accelX)) - a.body());
         double toBall = Math.toDegrees(Math.atan2(ball.y() - a.y(), ball.x() - a.x()));
         double dirDiff = Math.abs(normalize(toBall - a.body()));
         double distance = Math.hypot(ball.x() - a.x(), ball.y() - a.y()) - type.playerSize() - ballSize;
         double rate = type.kickPowerRate() * (1 - 0.25 * dirDiff / 180 - 0.25 * Math.max(0, distance) / type.kickableMargin());
+        double speed = Math.hypot(next.vx(), next.vy()) / ballDecay;
+        if (bounce > 0 && speed > ballSpeedMax * (1 - ballRand) && rate > 0) {
+            // the ball's speed was cut to its maximum, which turned its velocity: a kick of full power
+            // (the likeliest to reach it) is the one whose acceleration from v lands on the velocity's ray
+            double full = Math.min(rate * maxPower, ballAccelMax);
+            double wx = next.vx() / (speed * ballDecay);
+            double wy = next.vy() / (speed * ballDecay);
+            double along = wx * ball.vx() + wy * ball.vy();
+            double root = along * along - (ball.vx() * ball.vx() + ball.vy() * ball.vy()) + full * full;
+            if (root >= 0) {
+                double t = along + Math.sqrt(root);
+                accelX = t * wx - ball.vx();
+                accelY = t * wy - ball.vy();
+                accel = Math.hypot(accelX, accelY);
+            }
+        }
+        double direction = normalize(Math.toDegrees(Math.atan2(accelY, accelX)) - a.body());
         double power = rate <= 0 ? maxPower : clamp(accel / rate, minPower, maxPower);
         // the kick's noise (kick_rand of the power) and the ball's (ball_rand of its speed), each axis
         double noise = Math.sqrt(2) * (type.kickRand() * Math.abs(power) / maxPower
                 + ballRand * Math.hypot(ball.vx() + accelX, ball.vy() + accelY));
         double directionBound = accel <= noise ? 180 : Math.toDegrees(Math.asin(Math.min(1, noise / accel)));
         return new Command(CommandType.KICK, power, direction, rate <= 0 ? maxPower : noise / rate, directionBound);
+    }
+
+    /** Whether the ball moved one way and ends the step going the other: it ran into a player. */
+    static boolean bounced(GameFrame.BallState ball, GameFrame.BallState next) {
+        double dx = next.x() - ball.x();
+        double dy = next.y() - ball.y();
+        return Math.hypot(dx, dy) > 0.05 && dx * next.vx() + dy * next.vy() < 0;
     }
 
     Command catchBall(GameFrame before, PlayerState a) {
@@ -261,8 +292,9 @@ final class CommandInference {
     Command tackle(GameFrame before, PlayerState a, GameFrame after) {
         GameFrame.BallState ball = before.ball();
         GameFrame.BallState next = after.ball();
-        double accelX = next.vx() / ballDecay - ball.vx();
-        double accelY = next.vy() / ballDecay - ball.vy();
+        double bounce = bounced(ball, next) ? -0.1 : 1;
+        double accelX = next.vx() / (ballDecay * bounce) - ball.vx();
+        double accelY = next.vy() / (ballDecay * bounce) - ball.vy();
         boolean moved = Math.hypot(accelX, accelY) > BALL_MOVED;
         double world = moved ? Math.atan2(accelY, accelX) : Math.atan2(ball.y() - a.y(), ball.x() - a.x());
         return new Command(CommandType.TACKLE, normalize(Math.toDegrees(world) - a.body()), Double.NaN,
