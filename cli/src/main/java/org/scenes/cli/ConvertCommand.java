@@ -118,7 +118,7 @@ final class ConvertCommand implements Callable<Integer> {
             }
         }
         PrintWriter err = spec.commandLine().getErr();
-        GameLogConversion game = GameLogConversion.of(logs);
+        GameLogConversion game = GameLogConversion.of(logs, gameLogOptions.commands());
         if (game != null) {
             return game.run(this, grid, spec.commandLine().getOut(), err);
         }

@@ -26,10 +26,10 @@ final class GameLogConversion {
     }
 
     /** The server's logs among the inputs, null when they are players' logs. */
-    static GameLogConversion of(List<Path> inputs) throws IOException {
+    static GameLogConversion of(List<Path> inputs, GameLogs.Commands commands) throws IOException {
         GameLogs logs;
         try {
-            logs = GameLogs.among(inputs);
+            logs = GameLogs.among(inputs, commands);
         } catch (IllegalArgumentException e) {
             // the inputs named on the command line do not make one game (a game log and its command log)
             throw new UsageException(e.getMessage());
@@ -66,8 +66,7 @@ final class GameLogConversion {
             err.println("scenes: warning: " + warning);
         }
         if (written.scenes() == 0) {
-            err.printf("scenes: error: no scenes from %s and %s: no player sent a command after a see%n",
-                    logs.gameLog(), logs.commandLog());
+            err.printf("scenes: error: no scenes from %s: no player sent a command after a see%n", logs.source());
             err.flush();
             return ExitCodes.FAILURE;
         }
@@ -78,7 +77,8 @@ final class GameLogConversion {
 
     private void summary(PrintWriter out, GameLogConverter.Result result, List<Path> written, double seconds) {
         ConversionReport total = new ConversionReport();
-        out.printf(Locale.ROOT, "%-22s %s and %s (%d shows)%n", "Game read", logs.gameLog(), logs.commandLog(), result.frames());
+        out.printf(Locale.ROOT, "%-22s %s (%d shows)%n", "Game read", logs.inferred() ? logs.gameLog()
+                + ", commands inferred from it" : logs.gameLog() + " and " + logs.commandLog(), result.frames());
         out.printf(Locale.ROOT, "%-14s %8s %8s %8s %8s %8s%n", "Player", "sees", "scenes", "no see", "no act",
                 "cycles");
         for (GameLogConverter.PlayerResult player : result.players()) {

@@ -21,6 +21,7 @@ import org.scenes.api.Grid;
 import org.scenes.api.Observer;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.CommandLogReader;
+import org.scenes.internal.gamelog.CommandSource;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.GameLogException;
 import org.scenes.internal.gamelog.GameLogReader;
@@ -169,23 +170,31 @@ public final class GameLogConverter {
      */
     public Result convert(Path gameLog, Path commandLog, Output output) throws IOException {
         try (CommandLogReader commands = CommandLogReader.open(commandLog)) {
-            Run run = new Run(gameLog, commands, output);
+            return convert(gameLog, commands, output);
+        }
+    }
+
+    /**
+     * Converts one game whose commands come from {@code commands} (a command log, or those inferred
+     * from the game log); as {@link #convert(Path, Path, Output)}. The caller closes the source.
+     */
+    public Result convert(Path gameLog, CommandSource commands, Output output) throws IOException {
+        Run run = new Run(gameLog, commands, output);
+        try {
             try {
-                try {
-                    GameLogReader.forEach(gameLog, run::frame, run::parameters);
-                } catch (UncheckedIOException e) {
-                    throw e.getCause();
-                } catch (GameLogException e) {
-                    if (!run.truncated(e)) {
-                        throw e;
-                    }
-                    run.warnings.add(e.getMessage() + "; the game log is cut there: scenes up to cycle " + run.lastTime
-                            + " kept");
+                GameLogReader.forEach(gameLog, run::frame, run::parameters);
+            } catch (UncheckedIOException e) {
+                throw e.getCause();
+            } catch (GameLogException e) {
+                if (!run.truncated(e)) {
+                    throw e;
                 }
-                return run.finish();
-            } finally {
-                run.stopWorkers();
+                run.warnings.add(e.getMessage() + "; the game log is cut there: scenes up to cycle " + run.lastTime
+                        + " kept");
             }
+            return run.finish();
+        } finally {
+            run.stopWorkers();
         }
     }
 
@@ -558,7 +567,7 @@ public final class GameLogConverter {
 
     private final class Run {
         final Path gameLog;
-        final CommandLogReader commands;
+        final CommandSource commands;
         final Output output;
         final List<String> warnings = new ArrayList<>();
         final MessageParser parser = new MessageParser();
@@ -607,7 +616,7 @@ public final class GameLogConverter {
         long lastLine;
         int nextWorker;
 
-        Run(Path gameLog, CommandLogReader commands, Output output) {
+        Run(Path gameLog, CommandSource commands, Output output) {
             this.gameLog = gameLog;
             this.commands = commands;
             this.output = output;

@@ -9,14 +9,18 @@ import java.util.Map;
 import java.util.function.Function;
 import org.scenes.api.Grid;
 import org.scenes.api.Observer;
+import org.scenes.internal.gamelog.CommandLogReader;
+import org.scenes.internal.gamelog.CommandSource;
 import org.scenes.internal.gamelog.GameLogs;
+import org.scenes.internal.inference.InferredCommandLog;
 import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileWriter;
 import org.scenes.internal.scene.SceneSource;
 
 /**
  * A game's server logs into one scene file per converted player, as {@code scenes convert
- * GAME.rcg} and the Spark convert job write them. The files are committed together, and only
+ * GAME.rcg} and the Spark convert job write them, the commands from the command log or inferred
+ * from the game log alone ({@link GameLogs#inferred()}). The files are committed together, and only
  * when the game gave scenes: nothing appears for a game whose players sent no command after a see.
  */
 public final class GameSceneFiles {
@@ -44,7 +48,10 @@ public final class GameSceneFiles {
             throws IOException {
         Map<Path, SceneFileWriter> writers = new LinkedHashMap<>();
         try {
-            GameLogConverter.Result result = converter.convert(logs.gameLog(), logs.commandLog(),
+            InferredCommandLog inferred = logs.inferred() ? InferredCommandLog.of(logs.gameLog()) : null;
+            GameLogConverter.Result result;
+            try (CommandSource commands = inferred != null ? inferred : CommandLogReader.open(logs.commandLog())) {
+                result = converter.convert(logs.gameLog(), commands,
                     new GameLogConverter.Output() {
                         @Override
                         public SceneConverter.SceneSink open(Observer observer) throws IOException {
@@ -60,6 +67,12 @@ public final class GameSceneFiles {
                             return writer::write;
                         }
                     });
+            }
+            if (inferred != null && !inferred.warnings().isEmpty()) {
+                List<String> warnings = new ArrayList<>(inferred.warnings());
+                warnings.addAll(result.warnings());
+                result = new GameLogConverter.Result(result.frames(), result.players(), warnings);
+            }
             Written written = new Written(result, List.of());
             if (written.scenes() == 0) {
                 return written;

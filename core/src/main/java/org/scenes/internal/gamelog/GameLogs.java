@@ -7,9 +7,20 @@ import java.util.List;
 
 /**
  * The server's two logs of one game: the game log ({@code GAME.rcg}) and the command log
- * ({@code GAME.rcl}) whose commands the scenes pair with what each player saw.
+ * ({@code GAME.rcl}) whose commands the scenes pair with what each player saw; no command log
+ * (null) when the commands are inferred from the game log alone.
  */
 public record GameLogs(Path gameLog, Path commandLog) {
+    /** Where a game's commands come from. */
+    public enum Commands {
+        /** The command log: given, or the one beside the game log (required). */
+        RCL,
+        /** Inferred from the game log alone, whatever lies beside it. */
+        INFER,
+        /** The command log when there is one, else inferred. */
+        AUTO
+    }
+
     /** The command log's names beside a game log, in the order they are tried. */
     private static final String[] COMMAND_SUFFIXES = {".rcl", ".rcl.gz"};
 
@@ -21,6 +32,23 @@ public record GameLogs(Path gameLog, Path commandLog) {
      *                                  with other logs
      */
     public static GameLogs among(List<Path> inputs) throws IOException {
+        return among(inputs, Commands.RCL);
+    }
+
+    /**
+     * The game among {@code inputs}, as {@link #among(List)}, its commands from where {@code commands}
+     * says: with {@link Commands#INFER} a command log given is refused; with {@link Commands#AUTO} a
+     * game log without one beside it has its commands inferred.
+     */
+    public static GameLogs among(List<Path> inputs, Commands commands) throws IOException {
+        GameLogs logs = find(inputs, commands);
+        if (logs != null && commands == Commands.INFER && logs.commandLog() != null) {
+            throw new IllegalArgumentException("--commands infer takes the game log alone: leave out " + logs.commandLog());
+        }
+        return logs;
+    }
+
+    private static GameLogs find(List<Path> inputs, Commands choice) throws IOException {
         Path game = null;
         Path commands = null;
         for (Path log : inputs) {
@@ -48,7 +76,18 @@ public record GameLogs(Path gameLog, Path commandLog) {
         if (inputs.size() > (commands == null ? 1 : 2)) {
             throw new IllegalArgumentException("a game log is converted with its command log only, not with other logs");
         }
-        return new GameLogs(game, commands == null ? commandLogBeside(game) : commands);
+        if (commands != null || choice == Commands.RCL) {
+            return new GameLogs(game, commands == null ? commandLogBeside(game) : commands);
+        }
+        return new GameLogs(game, choice == Commands.AUTO ? commandLogBesideOrNull(game) : null);
+    }
+
+    private static Path commandLogBesideOrNull(Path gameLog) throws IOException {
+        try {
+            return commandLogBeside(gameLog);
+        } catch (IllegalArgumentException none) {
+            return null;
+        }
     }
 
     /**
@@ -73,8 +112,13 @@ public record GameLogs(Path gameLog, Path commandLog) {
         return gameLogName.replaceFirst("(\\.rcg)?(\\.gz)?$", "");
     }
 
+    /** Whether the commands are inferred from the game log alone. */
+    public boolean inferred() {
+        return commandLog == null;
+    }
+
     /** The names of the two logs, for a scene file's header. */
     public String source() {
-        return gameLog.getFileName() + " + " + commandLog.getFileName();
+        return gameLog.getFileName() + (commandLog == null ? " (commands inferred)" : " + " + commandLog.getFileName());
     }
 }

@@ -4,9 +4,11 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.CommandLogReader;
 import org.scenes.internal.gamelog.CommandSource;
@@ -49,12 +51,28 @@ public final class InferredCommandLog implements CommandSource {
     /** Reads the game log and infers its players' commands. */
     public static InferredCommandLog of(Path gameLog) throws IOException {
         List<CommandLogReader.Entry> entries = new ArrayList<>();
-        List<String> warnings = infer(gameLog, step -> {
+        Walk walk = new Walk(gameLog, step -> {
             String text = step.step().text();
             if (!text.isEmpty()) {
                 entries.add(new CommandLogReader.Entry(0, step.time(), step.stoppage(), step.team(), step.unum(), text));
             }
         });
+        List<String> warnings = walk.run();
+        if (walk.first != null) {
+            // a view only synchronous vision has: a client of version 18 or later (they see synchronously
+            // from their init on); the game log does not tell the version, 18 is the first such
+            int time = walk.first.time() == 0 ? 0 : walk.first.time() - 1;
+            int stoppage = walk.first.time() == 0 ? -1 : 0;
+            List<CommandLogReader.Entry> inits = new ArrayList<>();
+            for (PlayerState player : walk.first.players()) {
+                if (walk.synchronous.contains(Walk.slot(player))) {
+                    String team = player.side() == Side.LEFT ? walk.first.leftTeam() : walk.first.rightTeam();
+                    inits.add(new CommandLogReader.Entry(0, time, stoppage, team, player.unum(),
+                            "(init " + team + " (version 18))"));
+                }
+            }
+            entries.addAll(0, inits);
+        }
         return new InferredCommandLog(gameLog, entries, warnings);
     }
 
@@ -73,22 +91,7 @@ public final class InferredCommandLog implements CommandSource {
      * the warnings. A game log cut in its last line gives the steps up to there.
      */
     static List<String> infer(Path gameLog, Listener listener) throws IOException {
-        Walk walk = new Walk(gameLog, listener);
-        try {
-            GameLogReader.forEach(gameLog, walk::frame, walk.model::parameters);
-        } catch (GameLogException e) {
-            if (!e.cutOff() || walk.previous == null) {
-                throw e;
-            }
-            walk.warnings.add(e.getMessage() + "; the game log is cut there: commands up to cycle "
-                    + walk.previous.time() + " inferred");
-        }
-        if (walk.irregular > 0) {
-            walk.warnings.add(gameLog + ": " + walk.irregular + " player steps without inferred commands: counters"
-                    + " going back or jumping by more than one between two shows (steps the log does not show); the first "
-                    + walk.firstIrregular);
-        }
-        return walk.warnings;
+        return new Walk(gameLog, listener).run();
     }
 
     private static final class Walk {
@@ -97,15 +100,36 @@ public final class InferredCommandLog implements CommandSource {
         final ServerModel model = new ServerModel();
         final List<String> warnings = new ArrayList<>();
         CommandInference inference;
+        GameFrame first;
         GameFrame previous;
         int previousStoppage;
         final Map<Integer, PlayerState> before = new HashMap<>();
+        /** The players seen with a view cone only synchronous vision has (two or four thirds of the visible angle). */
+        final Set<Integer> synchronous = new HashSet<>();
         long irregular;
         String firstIrregular;
 
         Walk(Path gameLog, Listener listener) {
             this.gameLog = gameLog;
             this.listener = listener;
+        }
+
+        List<String> run() throws IOException {
+            try {
+                GameLogReader.forEach(gameLog, this::frame, model::parameters);
+            } catch (GameLogException e) {
+                if (!e.cutOff() || previous == null) {
+                    throw e;
+                }
+                warnings.add(e.getMessage() + "; the game log is cut there: commands up to cycle " + previous.time()
+                        + " inferred");
+            }
+            if (irregular > 0) {
+                warnings.add(gameLog + ": " + irregular + " player steps without inferred commands: counters going"
+                        + " back or jumping by more than one between two shows (steps the log does not show); the first "
+                        + firstIrregular);
+            }
+            return warnings;
         }
 
         void frame(GameFrame frame) {
@@ -132,14 +156,20 @@ public final class InferredCommandLog implements CommandSource {
                 }
             }
             before.clear();
+            double visibleAngle = model.get("visible_angle", 90);
             for (PlayerState state : frame.players()) {
                 before.put(slot(state), state);
+                double factor = state.viewWidth() / visibleAngle;
+                if (Math.abs(factor - 2.0 / 3) < 1e-6 || Math.abs(factor - 4.0 / 3) < 1e-6) {
+                    synchronous.add(slot(state));
+                }
             }
+            first = first == null ? frame : first;
             previous = frame;
             previousStoppage = stoppage;
         }
 
-        private static int slot(PlayerState state) {
+        static int slot(PlayerState state) {
             return (state.side() == Side.LEFT ? 0 : 1000) + state.unum();
         }
     }
