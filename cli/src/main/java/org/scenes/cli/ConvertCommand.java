@@ -76,6 +76,13 @@ final class ConvertCommand implements Callable<Integer> {
     @Mixin
     WorldOptions worldOptions;
 
+    @Option(names = "--commands", paramLabel = "rcl|infer|auto", defaultValue = "auto",
+            description = {"Game logs: where the players' commands come from: rcl (the command log, given or GAME.rcl"
+                    + " beside the game log), infer (from the game log alone: the shows' command counters and"
+                    + " rcssserver's turn, dash, kick and neck models; docs/conversion.md) or auto (the command log"
+                    + " when there is one, else inferred; default)."})
+    String commands;
+
     @Option(names = "--threads", paramLabel = "N", description = "Game logs: threads rebuilding the players."
             + " Default: the number of cores.")
     int threads = Runtime.getRuntime().availableProcessors();
@@ -118,7 +125,7 @@ final class ConvertCommand implements Callable<Integer> {
             }
         }
         PrintWriter err = spec.commandLine().getErr();
-        GameLogConversion game = GameLogConversion.of(logs, gameLogOptions.commands());
+        GameLogConversion game = GameLogConversion.of(logs, commands);
         if (game != null) {
             return game.run(this, grid, spec.commandLine().getOut(), err);
         }

@@ -26,10 +26,14 @@ final class GameLogConversion {
     }
 
     /** The server's logs among the inputs, null when they are players' logs. */
-    static GameLogConversion of(List<Path> inputs, GameLogs.Commands commands) throws IOException {
+    static GameLogConversion of(List<Path> inputs, String commands) throws IOException {
+        GameLogs.Commands source = GameLogs.Commands.named(commands);
+        if (source == null) {
+            throw new UsageException("--commands: expected rcl, infer or auto, not '" + commands + "'");
+        }
         GameLogs logs;
         try {
-            logs = GameLogs.among(inputs, commands);
+            logs = GameLogs.among(inputs, source);
         } catch (IllegalArgumentException e) {
             // the inputs named on the command line do not make one game (a game log and its command log)
             throw new UsageException(e.getMessage());

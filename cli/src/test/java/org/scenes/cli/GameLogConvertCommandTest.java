@@ -116,9 +116,22 @@ class GameLogConvertCommandTest {
         Path rcl = dir.resolve("g.rcl");
         assertEquals(2, run("convert", rcl, "--out-dir", dir.resolve("s")));
         assertTrue(err.contains("is a command log"), err);
+        assertEquals(2, run("convert", rcg, rcl, "--commands", "infer", "--out-dir", dir.resolve("s")));
+        assertTrue(err.contains("--commands infer takes the game log alone"), err);
+        assertEquals(2, run("convert", rcg, "--commands", "guess", "--out-dir", dir.resolve("s")));
+        assertTrue(err.contains("--commands: expected rcl, infer or auto"), err);
         Files.delete(rcl);
-        assertEquals(2, run("convert", rcg, "--out-dir", dir.resolve("s")));
+        assertEquals(2, run("convert", rcg, "--commands", "rcl", "--out-dir", dir.resolve("s")));
         assertTrue(err.contains("no command log beside"), err);
+    }
+
+    @Test
+    void aGameLogAloneHasItsCommandsInferred() throws IOException {
+        Path rcg = game();
+        Files.delete(dir.resolve("g.rcl"));
+        assertEquals(0, run("convert", rcg, "--out-dir", dir.resolve("s")), err);
+        assertTrue(out.contains("commands inferred from it"), out);
+        assertTrue(Files.isRegularFile(dir.resolve("s/My_Team_1.json.gz")));
     }
 
     @Test

@@ -3,7 +3,6 @@ package org.scenes.options;
 import java.util.function.Predicate;
 import org.scenes.api.Observer;
 import org.scenes.internal.convert.GameLogConverter;
-import org.scenes.internal.gamelog.GameLogs;
 import org.scenes.internal.vision.Fading;
 import picocli.CommandLine.Option;
 
@@ -36,23 +35,6 @@ public final class GameLogOptions {
                     + " first-step (multiples of the see period from the first step, as the project's simulator"
                     + " keeps it)."})
     private String seePhase;
-
-    @Option(names = "--commands", paramLabel = "rcl|infer|auto", defaultValue = "auto",
-            description = {"Game logs: where the players' commands come from: rcl (the command log, given or GAME.rcl"
-                    + " beside the game log), infer (from the game log alone: the shows' command counters and"
-                    + " rcssserver's turn, dash, kick and neck models; docs/conversion.md) or auto (the command log"
-                    + " when there is one, else inferred; default)."})
-    private String commands;
-
-    /** Where the commands come from. */
-    public GameLogs.Commands commands() {
-        return switch (commands) {
-            case "rcl" -> GameLogs.Commands.RCL;
-            case "infer" -> GameLogs.Commands.INFER;
-            case "auto" -> GameLogs.Commands.AUTO;
-            default -> throw new OptionException("--commands: expected rcl, infer or auto, not '" + commands + "'");
-        };
-    }
 
     /** The team chosen, null for both. */
     public String team() {
@@ -93,7 +75,6 @@ public final class GameLogOptions {
     public void check() {
         fading();
         seePhase();
-        commands();
         if (unum < 0 || unum > 11) {
             throw new OptionException("--unum: a uniform number from 1 to 11, not " + unum);
         }

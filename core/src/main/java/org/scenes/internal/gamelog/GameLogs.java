@@ -18,7 +18,17 @@ public record GameLogs(Path gameLog, Path commandLog) {
         /** Inferred from the game log alone, whatever lies beside it. */
         INFER,
         /** The command log when there is one, else inferred. */
-        AUTO
+        AUTO;
+
+        /** The choice of its lower-case name ({@code rcl}, {@code infer}, {@code auto}), null for another word. */
+        public static Commands named(String name) {
+            for (Commands commands : values()) {
+                if (commands.name().toLowerCase(java.util.Locale.ROOT).equals(name)) {
+                    return commands;
+                }
+            }
+            return null;
+        }
     }
 
     /** The command log's names beside a game log, in the order they are tried. */

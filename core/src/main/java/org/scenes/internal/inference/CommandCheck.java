@@ -21,7 +21,7 @@ import org.scenes.internal.protocol.ProtocolException;
  * The commands inferred from a game log alone set against its command log, per body command the
  * counters say was executed: whether the type agrees with the command log's first body command of
  * that player and step, and how far the arguments are from those sent (clamped to the server's
- * ranges: the server executes the clamped values).
+ * ranges and a dash's power to the stamina left: the server executes those values).
  */
 public final class CommandCheck {
     /**
@@ -103,7 +103,7 @@ public final class CommandCheck {
         Comparison comparison = new Comparison();
         List<String> warnings = InferredCommandLog.infer(gameLog, step -> {
             StringBuilder text = sent.get(key(step.time(), step.stoppage(), step.team(), step.unum()));
-            comparison.compare(step.step(), text == null ? "" : text.toString());
+            comparison.compare(step.step(), text == null ? "" : text.toString(), step.staminaLeft());
         });
         return comparison.result(warnings);
     }
@@ -124,7 +124,7 @@ public final class CommandCheck {
         final Errors kickPower = new Errors();
         final Errors neck = new Errors();
 
-        void compare(CommandInference.Step step, String sent) {
+        void compare(CommandInference.Step step, String sent, double staminaLeft) {
             List<PlayerCommand> commands = commands(sent);
             CommandInference.Command neckTurn = find(step.commands(), CommandType.TURN_NECK);
             PlayerCommand sentNeck = first(commands, CommandType.TURN_NECK);
@@ -152,7 +152,8 @@ public final class CommandCheck {
             switch (body) {
                 case TURN -> turn.add(Math.abs(inferred.first() - clamp(truth.first(), -180, 180)));
                 case DASH -> {
-                    double power = clamp(truth.first(), 0, 100);
+                    // the power executed: a tired player dashes with the stamina it has
+                    double power = Math.min(clamp(truth.first(), 0, 100), Math.max(0, staminaLeft));
                     dashPower.add(Math.abs(inferred.first() - power) / Math.max(power, 1));
                     double direction = Double.isNaN(truth.second()) ? 0 : truth.second();
                     dashDirection.add(Math.abs(CommandInference.normalize(inferred.second() - direction)));

@@ -15,7 +15,8 @@ import org.scenes.internal.protocol.CommandType;
  * <li>turn: the body turns by {@code moment (1 + r) / (1 + inertia_moment |v|)}, {@code r} uniform
  *     within {@code player_rand}: the moment is the turn times {@code 1 + inertia_moment |v|}, within
  *     {@code player_rand} of the moment;</li>
- * <li>dash: the stamina drops by the power (twice a negative one) and recovers by
+ * <li>dash (a player or ball that ran into another bounced back at a tenth of its speed: its velocity
+ *     is turned back first): the stamina drops by the power (twice a negative one) and recovers by
  *     {@code recovery stamina_inc_max} (at most the capacity left): the power exactly while the stamina
  *     stays below its maximum; the direction is that of the acceleration
  *     {@code v' / player_decay - v} relative to the body (the velocity's noise bounds it); at full
@@ -196,8 +197,10 @@ final class CommandInference {
 
     Command dash(PlayerState a, PlayerState b) {
         ServerModel.PlayerType type = model.type(a.type());
-        double accelX = b.vx() / type.decay() - a.vx();
-        double accelY = b.vy() / type.decay() - a.vy();
+        // a player that ran into another bounces back at a tenth of its speed
+        double bounce = bounced(a.x(), a.y(), b.x(), b.y(), b.vx(), b.vy()) ? -0.1 : 1;
+        double accelX = b.vx() / (type.decay() * bounce) - a.vx();
+        double accelY = b.vy() / (type.decay() * bounce) - a.vy();
         double accel = Math.hypot(accelX, accelY);
         double noise = playerRand * Math.hypot(a.vx() + accelX, a.vy() + accelY) * Math.sqrt(2);
         double direction = accel < 1e-4 ? 0 : normalize(Math.toDegrees(Math.atan2(accelY, accelX)) - a.body());
@@ -277,9 +280,14 @@ final class CommandInference {
 
     /** Whether the ball moved one way and ends the step going the other: it ran into a player. */
     static boolean bounced(GameFrame.BallState ball, GameFrame.BallState next) {
-        double dx = next.x() - ball.x();
-        double dy = next.y() - ball.y();
-        return Math.hypot(dx, dy) > 0.05 && dx * next.vx() + dy * next.vy() < 0;
+        return bounced(ball.x(), ball.y(), next.x(), next.y(), next.vx(), next.vy());
+    }
+
+    /** Whether an object moved from (x, y) to (x2, y2) and ends the step with velocity (vx2, vy2) against that. */
+    static boolean bounced(double x, double y, double x2, double y2, double vx2, double vy2) {
+        double dx = x2 - x;
+        double dy = y2 - y;
+        return Math.hypot(dx, dy) > 0.05 && dx * vx2 + dy * vy2 < 0;
     }
 
     Command catchBall(GameFrame before, PlayerState a) {

@@ -26,8 +26,12 @@ import org.scenes.internal.gamelog.PlayerState;
  * {@link #warnings()}, the first named.
  */
 public final class InferredCommandLog implements CommandSource {
-    /** What one player executed in one step. */
-    record PlayerStep(int time, int stoppage, String team, int unum, CommandInference.Step step) {
+    /**
+     * What one player executed in one step.
+     *
+     * @param staminaLeft the most a dash could spend: the stamina before it and the type's extra stamina
+     */
+    record PlayerStep(int time, int stoppage, String team, int unum, CommandInference.Step step, double staminaLeft) {
     }
 
     /** Receives the inferred steps in order. */
@@ -152,7 +156,8 @@ public final class InferredCommandLog implements CommandSource {
                         }
                         continue;
                     }
-                    listener.step(new PlayerStep(previous.time(), previousStoppage, team, a.unum(), step));
+                    listener.step(new PlayerStep(previous.time(), previousStoppage, team, a.unum(), step,
+                            a.stamina() + model.type(a.type()).extraStamina()));
                 }
             }
             before.clear();
