@@ -73,7 +73,7 @@ class InferredCommandsTest {
         SceneComparison.Result r = new SceneComparison().compare(a, b);
         assertTrue(r.scenesB() >= 0.98 * r.scenesA(), r.scenesB() + " of " + r.scenesA());
         assertTrue(r.paired() >= 0.5 * r.scenesA(), r.paired() + " of " + r.scenesA());
-        assertTrue(r.actionShare() >= 0.99, "actions " + r.actionShare());
+        assertTrue(r.actionTypeShare() >= 0.99, "action types " + r.actionTypeShare());
         assertTrue(r.matchedShare() >= 0.99, "objects in both " + r.matchedShare());
     }
 
