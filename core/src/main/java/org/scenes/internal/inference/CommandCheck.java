@@ -32,7 +32,7 @@ public final class CommandCheck {
      */
     public record Result(long executed, long agreed, Map<CommandType, Long> byType, double[] turnErrors,
                          double[] dashPowerErrors, double[] dashDirectionErrors, double[] kickDirectionErrors,
-                         double[] kickPowerErrors, double[] neckErrors, List<String> warnings) {
+                         double[] kickPowerErrors, double[] neckErrors, double[] kickBounds, List<String> warnings) {
         public double agreement() {
             return executed == 0 ? Double.NaN : (double) agreed / executed;
         }
@@ -60,7 +60,7 @@ public final class CommandCheck {
             return new Result(executed + other.executed, agreed + other.agreed, types, join(turnErrors, other.turnErrors),
                     join(dashPowerErrors, other.dashPowerErrors), join(dashDirectionErrors, other.dashDirectionErrors),
                     join(kickDirectionErrors, other.kickDirectionErrors), join(kickPowerErrors, other.kickPowerErrors),
-                    join(neckErrors, other.neckErrors), all);
+                    join(neckErrors, other.neckErrors), join(kickBounds, other.kickBounds), all);
         }
 
         /** The figures as a table, one row per measure. */
@@ -77,6 +77,19 @@ public final class CommandCheck {
                     100 * share(dashDirectionErrors, 10), quantile(dashDirectionErrors, 0.5)));
             out.append(String.format(Locale.ROOT, "%-40s %.2f %% (%d kicks), %.2f deg median%n", "Kick direction within 5 deg",
                     100 * kickDirectionWithin5(), kickDirectionErrors.length, quantile(kickDirectionErrors, 0.5)));
+            long tight = 0;
+            long tightWithin = 0;
+            long withinBound = 0;
+            for (int i = 0; i < kickDirectionErrors.length; i++) {
+                withinBound += kickDirectionErrors[i] <= kickBounds[i] ? 1 : 0;
+                if (kickBounds[i] <= 5) {
+                    tight++;
+                    tightWithin += kickDirectionErrors[i] <= 5 ? 1 : 0;
+                }
+            }
+            out.append(String.format(Locale.ROOT, "%-40s %.2f %% within their bound; of the %d bound to 5 deg,"
+                    + " %.2f %% within 5 deg%n", "Kick direction and its bound", 100.0 * withinBound
+                    / Math.max(1, kickBounds.length), tight, 100.0 * tightWithin / Math.max(1, tight)));
             out.append(String.format(Locale.ROOT, "%-40s %.2f %%%n", "Kick power within 10 %",
                     100 * share(kickPowerErrors, 0.10)));
             out.append(String.format(Locale.ROOT, "%-40s %.2f %% within 1 deg (%d)%n", "Neck turn (turn_neck)",
@@ -123,6 +136,7 @@ public final class CommandCheck {
         final Errors kickDirection = new Errors();
         final Errors kickPower = new Errors();
         final Errors neck = new Errors();
+        final Errors kickBound = new Errors();
 
         void compare(CommandInference.Step step, String sent, double staminaLeft) {
             List<PlayerCommand> commands = commands(sent);
@@ -161,6 +175,7 @@ public final class CommandCheck {
                 case KICK -> {
                     double direction = clamp(truth.second(), -180, 180);
                     kickDirection.add(Math.abs(CommandInference.normalize(inferred.second() - direction)));
+                    kickBound.add(inferred.secondBound());
                     double power = clamp(truth.first(), 0, 100);
                     kickPower.add(Math.abs(inferred.first() - power) / Math.max(power, 1));
                 }
@@ -209,7 +224,7 @@ public final class CommandCheck {
 
         Result result(List<String> warnings) {
             return new Result(executed, agreed, byType, turn.values(), dashPower.values(), dashDirection.values(),
-                    kickDirection.values(), kickPower.values(), neck.values(), warnings);
+                    kickDirection.values(), kickPower.values(), neck.values(), kickBound.values(), warnings);
         }
     }
 

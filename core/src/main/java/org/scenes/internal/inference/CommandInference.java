@@ -124,6 +124,15 @@ final class CommandInference {
      * {@code after}, where it is {@code b}.
      */
     Step infer(GameFrame before, PlayerState a, GameFrame after, PlayerState b) {
+        return infer(before, a, after, b, false);
+    }
+
+    /**
+     * As {@link #infer(GameFrame, PlayerState, GameFrame, PlayerState)}; {@code shared} when another
+     * player kicked or tackled in the same step: the ball's acceleration is the sum of theirs, a kick's
+     * arguments are then bound by nothing.
+     */
+    Step infer(GameFrame before, PlayerState a, GameFrame after, PlayerState b, boolean shared) {
         PlayerState.Counts x = a.counts();
         PlayerState.Counts y = b.counts();
         int[] deltas = {y.kick() - x.kick(), y.dash() - x.dash(), y.turn() - x.turn(), y.catches() - x.catches(),
@@ -144,7 +153,9 @@ final class CommandInference {
         }
         List<Command> commands = new ArrayList<>(3);
         if (deltas[0] == 1) {
-            commands.add(kick(before, a, after));
+            Command kick = kick(before, a, after);
+            commands.add(shared ? new Command(CommandType.KICK, kick.first(), kick.second(), Double.POSITIVE_INFINITY,
+                    180) : kick);
         } else if (deltas[1] == 1) {
             commands.add(dash(a, b));
         } else if (deltas[2] == 1) {

@@ -142,12 +142,19 @@ public final class InferredCommandLog implements CommandSource {
             }
             int stoppage = previous != null && previous.time() == frame.time() ? previousStoppage + 1 : 0;
             if (previous != null) {
+                int ballMovers = 0;
+                for (PlayerState b : frame.players()) {
+                    PlayerState a = before.get(slot(b));
+                    if (a != null && (b.counts().kick() > a.counts().kick() || b.counts().tackle() > a.counts().tackle())) {
+                        ballMovers++;
+                    }
+                }
                 for (PlayerState b : frame.players()) {
                     PlayerState a = before.get(slot(b));
                     if (a == null) {
                         continue;
                     }
-                    CommandInference.Step step = inference.infer(previous, a, frame, b);
+                    CommandInference.Step step = inference.infer(previous, a, frame, b, ballMovers > 1);
                     String team = a.side() == Side.LEFT ? previous.leftTeam() : previous.rightTeam();
                     if (step.irregular() != null) {
                         if (irregular++ == 0) {
