@@ -6,6 +6,7 @@ import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.PlayerState;
 import org.scenes.internal.protocol.CommandType;
 import org.scenes.internal.protocol.PlayerCommand;
+import org.scenes.internal.world.ServerDefaults;
 
 /**
  * The behaviour figures of one team in one game. Counted while the game is not paused
@@ -31,7 +32,7 @@ public record GameFigures(int dashes, int turns, int kicks, double answered, dou
     /** Answered sees of one action on one view that make a player stuck. */
     public static final int STUCK_RUN = 20;
     /** Player size plus ball size plus kickable margin, metres (server defaults). */
-    static final double KICKABLE = 1.085;
+    static final double KICKABLE = ServerDefaults.KICKABLE_AREA;
 
     public static GameFigures of(PlayedGame game) {
         int dashes = 0;
