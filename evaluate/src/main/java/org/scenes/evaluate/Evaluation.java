@@ -125,6 +125,9 @@ public final class Evaluation {
         long before = done[0];
         GameResult result;
         try {
+            if (shadow != null && plan.shadow() instanceof ExternalShadow external) {
+                external.startGame(team.name(), team.players());
+            }
             result = arena.play(setup, time -> progress.accept(before + time), frames::add);
         } finally {
             if (plan.shadow() instanceof ExternalShadow external) {
@@ -168,12 +171,15 @@ public final class Evaluation {
      */
     static BrainFactory traced(BrainFactory driver, BrainFactory shadow, long seed, List<PlayerTrace> traces) {
         return (team, random) -> {
-            PlayerTrace trace = new PlayerTrace(traces.size() + 1);
-            traces.add(trace);
-            Brain driving = driver.create(team, random);
-            // the shadow's own random source: it must not draw from the driver's
-            Brain shadowBrain = shadow == null ? null : shadow.create(team, new Random(seed * 31 + traces.size()));
-            return new TracedBrain(driving, shadowBrain, trace);
+            // on a live server each player's brain is made on its own thread: a player's driver and shadow together
+            synchronized (traces) {
+                PlayerTrace trace = new PlayerTrace(traces.size() + 1);
+                traces.add(trace);
+                Brain driving = driver.create(team, random);
+                // the shadow's own random source: it must not draw from the driver's
+                Brain shadowBrain = shadow == null ? null : shadow.create(team, new Random(seed * 31 + traces.size()));
+                return new TracedBrain(driving, shadowBrain, trace);
+            }
         };
     }
 

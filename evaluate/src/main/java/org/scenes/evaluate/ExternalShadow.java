@@ -6,7 +6,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.Random;
 import java.util.function.Consumer;
@@ -57,6 +59,8 @@ public final class ExternalShadow implements BrainFactory {
     private final Pacing pacing;
     private final Duration initWait;
     private final List<Player> players = new ArrayList<>();
+    /** Programs started by {@link #startGame}, waiting for their players, by uniform number. */
+    private final Map<Integer, Program> waiting = new HashMap<>();
 
     /**
      * @param command the template
@@ -75,6 +79,10 @@ public final class ExternalShadow implements BrainFactory {
         return command;
     }
 
+    public Pacing pacing() {
+        return pacing;
+    }
+
     @Override
     public Brain create(String team, Random random) {
         Player player = new Player(team);
@@ -90,14 +98,45 @@ public final class ExternalShadow implements BrainFactory {
                 .replace("{players}", "1").replace("{unum}", Integer.toString(unum));
     }
 
+    /**
+     * Starts the programs of a team of {@code count} players before its game, all at once, and
+     * waits until each has sent its init (which is answered when its player's is): a program that
+     * starts slowly keeps no player of the game waiting, and none hears nothing for long. Player
+     * {@code n}'s program is started with {@code {unum}} n; a player given another number by the
+     * server gets a program started then.
+     */
+    public void startGame(String team, int count) throws IOException {
+        List<Program> started = new ArrayList<>();
+        try {
+            for (int unum = 1; unum <= count; unum++) {
+                Program program = Program.launch(this, team, unum);
+                started.add(program);
+                synchronized (players) {
+                    waiting.put(unum, program);
+                }
+            }
+            long deadline = System.nanoTime() + initWait.toNanos();
+            for (Program program : started) {
+                program.awaitInit(deadline, initWait);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted while the shadows of " + team + " started");
+        }
+    }
+
     /** Ends the process groups of the game's shadows; the next game starts new ones. */
     public void endGame() {
         List<Player> ending;
+        List<Program> unused;
         synchronized (players) {
             ending = List.copyOf(players);
             players.clear();
+            unused = List.copyOf(waiting.values());
+            waiting.clear();
         }
         ending.forEach(Player::close);
+        unused.forEach(Program::close);
     }
 
     /** The shadows of the game under way, in the order they were made. */
@@ -111,15 +150,82 @@ public final class ExternalShadow implements BrainFactory {
     record Sent(int time, String command) {
     }
 
-    /** One imitating player's shadow: its process, endpoint and record. */
+    /** One started program: its endpoint, its process group and where its output goes. */
+    private static final class Program {
+        final String name;
+        final String command;
+        final ShadowEndpoint endpoint;
+        final Path output;
+        final ExternalTeam.Running running;
+
+        private Program(String name, String command, ShadowEndpoint endpoint, Path output,
+                        ExternalTeam.Running running) {
+            this.name = name;
+            this.command = command;
+            this.endpoint = endpoint;
+            this.output = output;
+            this.running = running;
+        }
+
+        /** Starts player {@code unum}'s program on an endpoint of its own. */
+        static Program launch(ExternalShadow shadow, String team, int unum) throws IOException {
+            ShadowEndpoint endpoint = new ShadowEndpoint();
+            Path output = null;
+            try {
+                output = Files.createTempFile("scenes-shadow-" + team + "-" + unum + "-", ".log");
+                String expanded = shadow.expand(endpoint.host(), endpoint.port(), team, unum);
+                return new Program(team + " player " + unum + "'s shadow", expanded, endpoint, output,
+                        ExternalTeam.launch(expanded, output));
+            } catch (IOException | RuntimeException e) {
+                endpoint.close();
+                if (output != null) {
+                    Files.deleteIfExists(output);
+                }
+                throw e;
+            }
+        }
+
+        /** Waits until the program sent its init (left unanswered), or fails when it ended or {@code deadline} passed. */
+        void awaitInit(long deadline, Duration wait) throws IOException, InterruptedException {
+            while (true) {
+                String datagram = endpoint.take(POLL_MILLIS);
+                if (datagram != null && datagram.startsWith("(init")) {
+                    return;
+                }
+                if (datagram == null && !running.alive()) {
+                    throw new IOException(name + ": the command '" + command + "' ended (exit " + running.exitCode()
+                            + ") before it sent its init" + quoted());
+                }
+                if (System.nanoTime() > deadline) {
+                    throw new IOException(name + ": the command '" + command + "' sent no init to " + endpoint.host()
+                            + ":" + endpoint.port() + " within " + wait.toSeconds() + " s"
+                            + quoted());
+                }
+            }
+        }
+
+        String quoted() {
+            String words = running.lastWords();
+            return words.isEmpty() ? "" : " (it said: " + words + ")";
+        }
+
+        void close() {
+            running.close();
+            endpoint.close();
+            try {
+                Files.deleteIfExists(output);
+            } catch (IOException e) {
+                // a temporary file left in the temporary directory
+            }
+        }
+    }
+
+    /** One imitating player's shadow: its program and the record of what it sent. */
     final class Player implements Brain, LateShadow {
         private final String team;
         private final MessageParser parser = new MessageParser();
         private final List<Sent> sent = new ArrayList<>();
-        private ShadowEndpoint endpoint;
-        private ExternalTeam.Running running;
-        private Path output;
-        private String name;
+        private Program program;
         private int time;
         /** A {@code (think)} came from the server: synchronous mode. */
         private boolean synchronous;
@@ -134,7 +240,7 @@ public final class ExternalShadow implements BrainFactory {
         @Override
         public void receive(String message, Consumer<String> send) {
             try {
-                if (running == null) {
+                if (program == null) {
                     start(message);
                     return;
                 }
@@ -146,33 +252,33 @@ public final class ExternalShadow implements BrainFactory {
                     return;
                 }
                 timeOver = message.startsWith("(hear ") && message.endsWith(" referee time_over)");
-                endpoint.send(message);
+                program.endpoint.send(message);
                 if (timeOver) {
                     return;
                 }
                 if (pacing == Pacing.EACH_MESSAGE) {
-                    endpoint.send("(think)");
+                    program.endpoint.send("(think)");
                     awaitDone(send);
                 } else if (message.equals("(think)")) {
                     synchronous = true;
                     awaitDone(send);
-                } else if (senseBody && ++senses % HEALTH_EVERY == 0 && !running.alive()) {
+                } else if (senseBody && ++senses % HEALTH_EVERY == 0 && !program.running.alive()) {
                     throw ended();
                 }
             } catch (IOException e) {
                 throw new UncheckedIOException(e);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
-                throw new UncheckedIOException(new IOException(name + ": interrupted"));
+                throw new UncheckedIOException(new IOException(program.name + ": interrupted"));
             }
         }
 
         @Override
         public void collect(Consumer<String> send) {
-            if (endpoint == null || pacing == Pacing.EACH_MESSAGE || synchronous) {
+            if (program == null || pacing == Pacing.EACH_MESSAGE || synchronous) {
                 return; // all handed on at the (done)
             }
-            for (String datagram = endpoint.poll(); datagram != null; datagram = endpoint.poll()) {
+            for (String datagram = program.endpoint.poll(); datagram != null; datagram = program.endpoint.poll()) {
                 handOn(datagram, send);
             }
         }
@@ -182,7 +288,10 @@ public final class ExternalShadow implements BrainFactory {
             return sent;
         }
 
-        /** On the server's answer to the imitator's init: starts the program and answers its init alike. */
+        /**
+         * On the server's answer to the imitator's init: takes the program started for this
+         * number (or starts one) and answers its init alike.
+         */
         private void start(String message) throws IOException, InterruptedException {
             InitReply init;
             try {
@@ -193,48 +302,35 @@ public final class ExternalShadow implements BrainFactory {
             } catch (ProtocolException e) {
                 return;
             }
-            name = team + " player " + init.uniformNumber() + "'s shadow";
-            endpoint = new ShadowEndpoint();
-            output = Files.createTempFile("scenes-shadow-" + team + "-" + init.uniformNumber() + "-", ".log");
-            String expanded = expand(endpoint.host(), endpoint.port(), team, init.uniformNumber());
-            running = ExternalTeam.launch(expanded, output);
-            long deadline = System.nanoTime() + initWait.toNanos();
-            while (true) {
-                String datagram = endpoint.take(POLL_MILLIS);
-                if (datagram != null && datagram.startsWith("(init")) {
-                    endpoint.send(message);
-                    return;
-                }
-                if (datagram == null && !running.alive()) {
-                    throw new IOException(name + ": the command '" + expanded + "' ended (exit " + running.exitCode()
-                            + ") before it sent its init" + quoted());
-                }
-                if (System.nanoTime() > deadline) {
-                    throw new IOException(name + ": the command '" + expanded + "' sent no init to " + endpoint.host()
-                            + ":" + endpoint.port() + " within " + initWait.toSeconds() + " s" + quoted());
-                }
+            synchronized (players) {
+                program = waiting.remove(init.uniformNumber());
             }
+            if (program == null) {
+                program = Program.launch(ExternalShadow.this, team, init.uniformNumber());
+                program.awaitInit(System.nanoTime() + initWait.toNanos(), initWait);
+            }
+            program.endpoint.send(message);
         }
 
         private void awaitDone(Consumer<String> send) throws IOException, InterruptedException {
             long deadline = System.nanoTime() + DONE_WAIT.toNanos();
             while (true) {
-                String datagram = endpoint.take(POLL_MILLIS);
+                String datagram = program.endpoint.take(POLL_MILLIS);
                 if (datagram != null) {
                     if (handOn(datagram, send)) {
                         return;
                     }
                     continue;
                 }
-                if (!running.alive()) {
+                if (!program.running.alive()) {
                     throw ended();
                 }
                 if (System.nanoTime() > deadline) {
-                    throw new IOException(name + ": the command '" + running.command() + "' sent no (done) within "
-                            + DONE_WAIT.toSeconds() + " s of a (think) at cycle " + time
+                    throw new IOException(program.name + ": the command '" + program.command + "' sent no (done)"
+                            + " within " + DONE_WAIT.toSeconds() + " s of a (think) at cycle " + time
                             + (pacing == Pacing.EACH_MESSAGE ? " (in the embedded simulator a shadow must answer"
                                     + " (think); shadow a real-time client on a real-time server, --server)" : "")
-                            + quoted());
+                            + program.quoted());
                 }
             }
         }
@@ -254,28 +350,13 @@ public final class ExternalShadow implements BrainFactory {
         }
 
         private IOException ended() {
-            return new IOException(name + ": the command '" + running.command() + "' ended (exit "
-                    + running.exitCode() + ") at cycle " + time + ", before time over" + quoted());
-        }
-
-        private String quoted() {
-            String words = running == null ? "" : running.lastWords();
-            return words.isEmpty() ? "" : " (it said: " + words + ")";
+            return new IOException(program.name + ": the command '" + program.command + "' ended (exit "
+                    + program.running.exitCode() + ") at cycle " + time + ", before time over" + program.quoted());
         }
 
         private void close() {
-            if (running != null) {
-                running.close();
-            }
-            if (endpoint != null) {
-                endpoint.close();
-            }
-            if (output != null) {
-                try {
-                    Files.deleteIfExists(output);
-                } catch (IOException e) {
-                    // a temporary file left in the temporary directory
-                }
+            if (program != null) {
+                program.close();
             }
         }
     }
