@@ -176,6 +176,11 @@ final class EvaluateCommand implements Callable<Integer> {
                 throw new UsageException("--dagger: plays and corrects the imitator; not with --teacher-games (the"
                         + " figures of existing game logs)");
             }
+            if (shadowCommand != null || disagreements != null) {
+                throw new UsageException((shadowCommand != null ? "--shadow-command" : "--disagreements")
+                        + ": a shadow plays beside the imitator's games; not with --teacher-games (the figures of"
+                        + " existing game logs)");
+            }
             return fromGameLogs();
         }
         Setup setup = setup();

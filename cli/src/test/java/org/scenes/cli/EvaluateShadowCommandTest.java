@@ -95,6 +95,9 @@ class EvaluateShadowCommandTest {
         CommandRunner usage = new CommandRunner();
         assertEquals(ExitCodes.USAGE, usage.run("evaluate", "--shadow-command", " "));
         assertTrue(usage.err().contains("--shadow-command: an empty command"), usage.err());
+        assertEquals(ExitCodes.USAGE, usage.run("evaluate", "--shadow-command", "x", "--teacher-games", dir,
+                "--imitator-games", dir));
+        assertTrue(usage.err().contains("--shadow-command: a shadow plays beside the imitator's games"), usage.err());
     }
 
     private static void assertNothingLeft(String marker) throws IOException, InterruptedException {
