@@ -105,9 +105,9 @@ final class EvaluateCommand implements Callable<Integer> {
 
     @Option(names = "--shadow-command", paramLabel = "CMD",
             description = "A shadow teacher that is a program (HELIOS base's player, the classic Krislet): a process"
-                    + " per imitating player, started (bash -c, in its own session) when the server answers that"
-                    + " player's init; {host} and {port} are replaced by a loopback endpoint of its own that answers"
-                    + " its init as the server answered the imitator's, {team} by the team's name, {players} by 1,"
+                    + " per imitating player, started (bash -c, in its own session) before each imitator game and"
+                    + " ended after it; {host} and {port} are replaced by a loopback endpoint of its own that answers"
+                    + " its init as the server answered its player's, {team} by the team's name, {players} by 1,"
                     + " {unum} by the player's number. It is sent every message the imitator receives; its commands"
                     + " are recorded (agreement, --disagreements, --dagger's labels), never executed. In the embedded"
                     + " simulator each message is followed by (think) and the program must answer (done); on --server"
