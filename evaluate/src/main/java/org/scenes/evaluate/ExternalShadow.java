@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Random;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import org.scenes.agent.Brain;
 import org.scenes.agent.BrainFactory;
@@ -61,6 +62,8 @@ public final class ExternalShadow implements BrainFactory {
     private final List<Player> players = new ArrayList<>();
     /** Programs started by {@link #startGame}, waiting for their players, by uniform number. */
     private final Map<Integer, Program> waiting = new HashMap<>();
+    /** The {@code (done)}s the programs sent, over all games. */
+    private final AtomicLong dones = new AtomicLong();
 
     /**
      * @param command the template
@@ -137,6 +140,11 @@ public final class ExternalShadow implements BrainFactory {
         }
         ending.forEach(Player::close);
         unused.forEach(Program::close);
+    }
+
+    /** The {@code (done)}s the programs sent so far, over all games. */
+    long dones() {
+        return dones.get();
     }
 
     /** The shadows of the game under way, in the order they were made. */
@@ -341,6 +349,7 @@ public final class ExternalShadow implements BrainFactory {
             for (String text : parser.texts(datagram)) {
                 if (text.startsWith("(done")) {
                     done = true;
+                    dones.incrementAndGet();
                 } else {
                     sent.add(new Sent(time, text));
                     send.accept(text);

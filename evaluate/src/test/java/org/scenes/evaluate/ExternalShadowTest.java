@@ -12,10 +12,20 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.scenes.agent.Brain;
 import org.scenes.agent.BrainFactory;
+import org.scenes.agent.net.ClientOptions;
+import org.scenes.agent.net.ServerAddress;
+import org.scenes.agent.server.GameSeries;
+import org.scenes.agent.server.ServerConfig;
+import org.scenes.agent.server.ServerResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
@@ -102,6 +112,46 @@ class ExternalShadowTest {
                 .count() > 20);
         assertTrue(external.players().isEmpty(), "ended after the game");
         assertNothingLeft("-Dmarker=7362");
+    }
+
+    @Test
+    void onASynchronousServerTheProgramAnswersTheServersThink() throws Exception {
+        ExternalShadow external = new ExternalShadow(program("krislet", Integer.MAX_VALUE, "7366"),
+                ExternalShadow.Pacing.AS_THE_SERVER, Duration.ofSeconds(60));
+        GameSetup.Team teacher = new GameSetup.Team("Teal", 2, Teachers.byName("krislet"));
+        Evaluation.Plan plan = new Evaluation.Plan(teacher, Teachers.byName("krislet"), AMBER, 100, List.of(1L))
+                .withShadow(external);
+        ServerConfig config = ServerConfig.defaults().withPort(0).withSynch(true).withGame(100, 1)
+                .withTimings(Duration.ofSeconds(1), Duration.ofSeconds(5));
+        GameSeries series = new GameSeries(config, 2, 2, line -> { });
+        CompletableFuture<Integer> port = new CompletableFuture<>();
+        ExecutorService executor = Executors.newSingleThreadExecutor();
+        Evaluation.Results results;
+        try {
+            Future<List<ServerResult>> serving = executor.submit(
+                    () -> series.run(started -> port.complete(started[1]), result -> { }, frame -> { }));
+            LiveArena arena = new LiveArena(ClientOptions.of(new ServerAddress("127.0.0.1", port.get(30,
+                    TimeUnit.SECONDS)), "Teal").withTimeouts(Duration.ofSeconds(5), Duration.ofSeconds(10)), null,
+                    Duration.ofSeconds(30), notice -> { });
+            results = Evaluation.run(plan, arena, done -> { });
+            assertEquals(2, serving.get(60, TimeUnit.SECONDS).size());
+        } finally {
+            series.stop();
+            executor.shutdownNow();
+        }
+        // each program answered the server's (think) of every step (100 cycles and the pauses)
+        assertTrue(external.dones() >= 2 * 100, "(done)s: " + external.dones());
+        PlayedGame game = results.imitator().get(0);
+        for (PlayerTrace trace : game.traces()) {
+            // the cycle's commands come at the server's (think): Krislet's replies to a cycle's sense_body
+            // count for that cycle's see here, for the see before in process
+            long answered = trace.decisions().stream().filter(d -> d.shadow() != null).count();
+            assertTrue(answered > 20, "the shadow answered " + answered + " sees");
+        }
+        double agreement = GameFigures.of(game).agreement();
+        assertTrue(agreement > 0.8, "the teacher beside itself agrees on " + agreement);
+        assertTrue(external.players().isEmpty(), "ended after the game");
+        assertNothingLeft("-Dmarker=7366");
     }
 
     @Test
