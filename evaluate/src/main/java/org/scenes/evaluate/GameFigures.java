@@ -78,8 +78,7 @@ public record GameFigures(int dashes, int turns, int kicks, double answered, dou
                     compared++;
                     if (decision.shadow().type() == command.type()) {
                         agreedType++;
-                        if (command.type() != CommandType.TURN
-                                || Math.signum(command.first()) == Math.signum(decision.shadow().first())) {
+                        if (agree(command, decision.shadow())) {
                             agreed++;
                         }
                     }
@@ -99,6 +98,11 @@ public record GameFigures(int dashes, int turns, int kicks, double answered, dou
     public double[] mix() {
         double total = Math.max(1, dashes + turns + kicks);
         return new double[] {dashes / total, turns / total, kicks / total};
+    }
+
+    /** Whether two body commands agree: the same type, and for a turn the same way round. */
+    static boolean agree(PlayerCommand a, PlayerCommand b) {
+        return a.type() == b.type() && (a.type() != CommandType.TURN || Math.signum(a.first()) == Math.signum(b.first()));
     }
 
     private static double share(long part, long whole) {
