@@ -236,6 +236,12 @@ final class EvaluateCommand implements Callable<Integer> {
         long started = System.nanoTime();
         List<Path> teacherLogs = gameLogs("--teacher-games", teacherGames);
         List<Path> imitatorLogs = gameLogs("--imitator-games", imitatorGames);
+        if (teacherLogs.size() != imitatorLogs.size()) {
+            // the divergences and the Turing folds pair game i of one side with game i of the other
+            throw new UsageException("--teacher-games " + teacherGames + " holds " + teacherLogs.size()
+                    + " game logs and --imitator-games " + imitatorGames + " " + imitatorLogs.size()
+                    + ": give as many of each (game i of one side is compared with game i of the other)");
+        }
         ServerLogGames.Read read;
         try (TerminalProgress bar = TerminalProgress.start("Reading games", teacherLogs.size() + imitatorLogs.size(),
                 " games", 1)) {
