@@ -15,8 +15,8 @@ import org.scenes.api.Scene;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.target.Destinations;
-import org.scenes.internal.target.Steering;
 import org.scenes.internal.target.Replay;
+import org.scenes.internal.target.Steering;
 import org.scenes.internal.target.Targets;
 
 /**
