@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.scenes.testing.Processes;
 
 /**
  * {@code scenes evaluate --shadow-command}: the built-in teacher started as a program
@@ -70,7 +71,7 @@ class EvaluateShadowCommandTest {
         assertEquals(Files.readAllLines(partedHere).stream().filter(l -> !l.startsWith("1,")).toList(),
                 lines.stream().filter(l -> !l.startsWith("1,")).toList());
         assertTrue(lines.stream().anyMatch(l -> l.startsWith("1,")), "round 1's partings too");
-        assertNothingLeft("--seed 7371");
+        Processes.assertNoneRunning("--seed 7371");
     }
 
     @Test
@@ -89,9 +90,9 @@ class EvaluateShadowCommandTest {
         assertEquals(1, silent.err().strip().lines().count(), silent.err());
         assertTrue(silent.err().matches("scenes: Teal player 1's shadow: the command 'sleep 7373 # \\d+' sent no init"
                 + " to 127\\.0\\.0\\.1:\\d+ within 1 s\\s*"), silent.err());
-        assertNothingLeft("sleep 7373");
+        Processes.assertNoneRunning("sleep 7373");
         // a program that dies mid-game: ExternalShadowTest (its teacher program exits at a given cycle)
-        assertNothingLeft("--seed 7373");
+        Processes.assertNoneRunning("--seed 7373");
         CommandRunner usage = new CommandRunner();
         assertEquals(ExitCodes.USAGE, usage.run("evaluate", "--shadow-command", " "));
         assertTrue(usage.err().contains("--shadow-command: an empty command"), usage.err());
@@ -100,23 +101,4 @@ class EvaluateShadowCommandTest {
         assertTrue(usage.err().contains("--shadow-command: a shadow plays beside the imitator's games"), usage.err());
     }
 
-    private static void assertNothingLeft(String marker) throws IOException, InterruptedException {
-        Thread.sleep(300);
-        List<String> left = new ArrayList<>();
-        try (Stream<Path> entries = Files.list(Path.of("/proc"))) {
-            for (Path entry : entries.filter(e -> e.getFileName().toString().matches("\\d+")).toList()) {
-                try {
-                    String line = new String(Files.readAllBytes(entry.resolve("cmdline")), StandardCharsets.UTF_8)
-                            .replace('\0', ' ');
-                    if (line.contains(marker) && !entry.getFileName().toString()
-                            .equals(Long.toString(ProcessHandle.current().pid()))) {
-                        left.add(entry.getFileName() + ": " + line);
-                    }
-                } catch (IOException gone) {
-                    // ended while listed
-                }
-            }
-        }
-        assertTrue(left.isEmpty(), "still running: " + left);
-    }
 }

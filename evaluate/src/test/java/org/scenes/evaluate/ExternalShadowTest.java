@@ -29,6 +29,7 @@ import org.scenes.agent.server.ServerResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
+import org.scenes.testing.Processes;
 
 /**
  * A shadow teacher that is a program: the built-in Krislet as a process of its own
@@ -45,7 +46,7 @@ class ExternalShadowTest {
     }
 
     @Test
-    void theProgramsCommandsAreTheTeachersRepliesToTheImitatorsPercepts() throws IOException {
+    void theProgramsCommandsAreTheTeachersRepliesToTheImitatorsPercepts() throws Exception {
         ExternalShadow external = new ExternalShadow(program("krislet", Integer.MAX_VALUE, "7361"),
                 ExternalShadow.Pacing.EACH_MESSAGE, Duration.ofSeconds(60));
         BrainFactory driver = Teachers.byName("statebased");
@@ -94,11 +95,11 @@ class ExternalShadowTest {
             }
             assertTrue(here.stream().filter(d -> d.shadow() != null).count() > 40);
         }
-        assertNothingLeft("-Dmarker=7361");
+        Processes.assertNoneRunning("-Dmarker=7361");
     }
 
     @Test
-    void anEvaluationsExternalShadowGivesAgreementAndIsEndedAfterEachGame() throws IOException {
+    void anEvaluationsExternalShadowGivesAgreementAndIsEndedAfterEachGame() throws Exception {
         ExternalShadow external = new ExternalShadow(program("krislet", Integer.MAX_VALUE, "7362"),
                 ExternalShadow.Pacing.EACH_MESSAGE, Duration.ofSeconds(60));
         GameSetup.Team teacher = new GameSetup.Team("Teal", 2, Teachers.byName("krislet"));
@@ -111,7 +112,7 @@ class ExternalShadowTest {
         assertTrue(results.imitator().get(0).traces().get(0).decisions().stream().filter(d -> d.shadow() != null)
                 .count() > 20);
         assertTrue(external.players().isEmpty(), "ended after the game");
-        assertNothingLeft("-Dmarker=7362");
+        Processes.assertNoneRunning("-Dmarker=7362");
     }
 
     @Test
@@ -151,11 +152,11 @@ class ExternalShadowTest {
         double agreement = GameFigures.of(game).agreement();
         assertTrue(agreement > 0.8, "the teacher beside itself agrees on " + agreement);
         assertTrue(external.players().isEmpty(), "ended after the game");
-        assertNothingLeft("-Dmarker=7366");
+        Processes.assertNoneRunning("-Dmarker=7366");
     }
 
     @Test
-    void aProgramThatCannotStartSendsNoInitOrDiesFailsTheGameAndIsEnded() throws IOException {
+    void aProgramThatCannotStartSendsNoInitOrDiesFailsTheGameAndIsEnded() throws Exception {
         IOException missing = failure("no-such-program-7363 {host} {port}", Duration.ofSeconds(30));
         assertTrue(missing.getMessage().startsWith("Teal player 1's shadow: the command 'no-such-program-7363 127.0.0.1 ")
                 && missing.getMessage().contains("' ended (exit 127) before it sent its init (it said: ")
@@ -163,11 +164,11 @@ class ExternalShadowTest {
         IOException silent = failure("sleep 7364; echo {port}", Duration.ofSeconds(1));
         assertTrue(silent.getMessage().matches("Teal player 1's shadow: the command 'sleep 7364; echo \\d+' sent no"
                 + " init to 127\\.0\\.0\\.1:\\d+ within 1 s"), silent.getMessage());
-        assertNothingLeft("sleep 7364");
+        Processes.assertNoneRunning("sleep 7364");
         IOException dying = failure(program("krislet", 40, "7365"), Duration.ofSeconds(60));
         assertTrue(dying.getMessage().matches("Teal player 1's shadow: the command '.*' ended \\(exit 3\\) at cycle"
                 + " 40, before time over \\(it said: dying at 40\\)"), dying.getMessage());
-        assertNothingLeft("-Dmarker=7365");
+        Processes.assertNoneRunning("-Dmarker=7365");
     }
 
     private static IOException failure(String command, Duration wait) {
@@ -180,22 +181,4 @@ class ExternalShadowTest {
         return failed;
     }
 
-    private static void assertNothingLeft(String marker) throws IOException {
-        List<String> left = new ArrayList<>();
-        try (Stream<Path> entries = Files.list(Path.of("/proc"))) {
-            for (Path entry : entries.filter(e -> e.getFileName().toString().matches("\\d+")).toList()) {
-                try {
-                    String line = new String(Files.readAllBytes(entry.resolve("cmdline")), StandardCharsets.UTF_8)
-                            .replace('\0', ' ');
-                    if (line.contains(marker) && !entry.getFileName().toString()
-                            .equals(Long.toString(ProcessHandle.current().pid()))) {
-                        left.add(entry.getFileName() + ": " + line);
-                    }
-                } catch (IOException gone) {
-                    // ended while listed
-                }
-            }
-        }
-        assertTrue(left.isEmpty(), "still running: " + left);
-    }
 }
