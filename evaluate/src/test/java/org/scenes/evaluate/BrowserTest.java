@@ -16,6 +16,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.agent.sim.GameSetup;
@@ -26,6 +27,7 @@ import org.scenes.agent.teacher.Teachers;
  * a console message, the script draws every replay, and a screenshot is taken
  * ({@code evaluate/build/screenshots/}, to look at). Skipped when Chromium is not installed.
  */
+@Tag("slow")
 class BrowserTest {
     private static String chromium;
 
