@@ -53,7 +53,7 @@ class ScenesCommandTest {
     void versionNamesTheReleaseAndTheCommitItWasBuiltFrom() throws IOException, InterruptedException {
         assertEquals(ExitCodes.OK, run("--version"));
         String first = cli.out().lines().findFirst().orElse("");
-        assertTrue(first.matches("scenes [0-9]+\\.[0-9]+\\.[0-9]+, commit ([0-9a-f]{40}|unknown)"), first);
+        assertTrue(first.matches("scenes [0-9]+\\.[0-9]+\\.[0-9]+(-SNAPSHOT)?, commit ([0-9a-f]{40}|unknown)"), first);
         // built from this clone: the commit is the clone's HEAD, wherever git can tell it
         Process git;
         try {
