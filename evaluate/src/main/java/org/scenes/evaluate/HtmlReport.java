@@ -41,7 +41,8 @@ public final class HtmlReport {
                         + "padding:.25em .6em;text-align:right}th:first-child,td:first-child{text-align:left}"
                         + ".met{color:#186018;font-weight:bold}.missed{color:#a01010;font-weight:bold}"
                         + ".row{display:flex;flex-wrap:wrap;gap:1em}.note{color:#555;max-width:60em}"
-                        + "table.about td{text-align:left;max-width:70em}.path{white-space:nowrap}\n")
+                        + "table.about td{text-align:left;max-width:70em}table.about th{white-space:nowrap}"
+                        + ".path{white-space:nowrap}\n")
                 .append("</style>\n</head>\n<body>\n<h1>").append(ReplayPage.escape(title)).append("</h1>\n");
         html.append(aboutTable(about));
         html.append("<h2>Targets</h2>\n<table>\n<tr><th>target</th><th>reached</th><th></th></tr>\n");
