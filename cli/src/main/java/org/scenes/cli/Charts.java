@@ -60,7 +60,8 @@ final class Charts {
 
     /** Room for every bar: rows of categories times series, plus titles and legend. */
     static int height(int categories, int series) {
-        return Math.max(320, 170 + categories * (16 * series + 14));
+        // bars thick enough for their value label inside (JFreeChart drops a label that does not fit)
+        return Math.max(320, 170 + categories * (22 * series + 14));
     }
 
     /** Writes a chart as PNG or SVG by the file name's ending, atomically. */

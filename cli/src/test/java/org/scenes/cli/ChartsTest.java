@@ -3,6 +3,9 @@ package org.scenes.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.axis.ValueAxis;
@@ -10,6 +13,7 @@ import org.jfree.chart.labels.CategoryItemLabelGenerator;
 import org.jfree.chart.plot.CategoryPlot;
 import org.jfree.data.category.DefaultCategoryDataset;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 class ChartsTest {
     @Test
@@ -55,5 +59,31 @@ class ChartsTest {
         CategoryItemLabelGenerator two = ((CategoryPlot) Charts.bars("t", "", "share", apart, 1).getPlot()).getRenderer()
                 .getDefaultItemLabelGenerator();
         assertEquals("0.91", two.generateLabel(apart, 0, 0));
+    }
+
+    @Test
+    void aSweepChartOfManyBarsDrawsEveryBarsLabel(@TempDir Path directory) throws Exception {
+        // 4 groups of 6 bars, as the k-selectors sweep draws: JFreeChart drops a label its bar is too thin for
+        DefaultCategoryDataset data = new DefaultCategoryDataset();
+        for (int row = 0; row < 4; row++) {
+            for (int k = 0; k < 6; k++) {
+                data.addValue(0.88 + 0.0123 * row + 0.0017 * k, "k " + k, "selector " + row);
+            }
+        }
+        JFreeChart chart = Charts.bars("t", "rows: selector", "accuracy", data, Double.NaN);
+        Path svg = directory.resolve("chart.svg");
+        Charts.write(svg, chart, 900, Charts.height(4, 6));
+        String text = Files.readString(svg);
+        CategoryItemLabelGenerator labels = ((CategoryPlot) chart.getPlot()).getRenderer().getDefaultItemLabelGenerator();
+        List<String> missing = new ArrayList<>();
+        for (int series = 0; series < 6; series++) {
+            for (int row = 0; row < 4; row++) {
+                String label = labels.generateLabel(data, series, row);
+                if (!text.contains(">" + label + "<")) {
+                    missing.add(label);
+                }
+            }
+        }
+        assertEquals(List.of(), missing, "labels not drawn");
     }
 }
