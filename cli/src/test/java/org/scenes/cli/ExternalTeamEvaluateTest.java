@@ -15,6 +15,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.agent.server.GameSeries;
@@ -27,6 +28,7 @@ import org.scenes.testing.Processes;
  * ({@code java ... org.scenes.cli.Main team}) on the project's server, measured from the server's
  * logs; commands that fail leave nothing running. Short games of two players a side.
  */
+@Tag("slow")
 class ExternalTeamEvaluateTest {
     @TempDir
     static Path shared;
