@@ -54,6 +54,9 @@ final class ConvertArchive {
         ArchiveConversion.Result result;
         try {
             result = conversion.run(TerminalProgress.reporter());
+        } catch (IllegalArgumentException e) {
+            // no game log in the directory, or two of one name: nothing was converted
+            throw new UsageException(e.getMessage());
         } finally {
             try {
                 Runtime.getRuntime().removeShutdownHook(interrupted);

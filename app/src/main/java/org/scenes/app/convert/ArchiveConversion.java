@@ -35,7 +35,7 @@ public final class ArchiveConversion {
     /** The manifest of an archive's output directory. */
     public static final String MANIFEST = "manifest.csv";
     /** The directory of the games' records, the run's memory of what is done. */
-    static final String RECORDS = ".games";
+    public static final String RECORDS = ".games";
 
     private static final Pattern GAME_LOG = Pattern.compile(".+\\.rcg(\\.gz)?");
     /** The characters rcssserver allows in a team name: safe as a directory name. */
@@ -87,6 +87,19 @@ public final class ArchiveConversion {
         return games;
     }
 
+    /** Whether a file of the archive is a game log, by its name: {@code *.rcg} or {@code *.rcg.gz}. */
+    public static boolean isGameLog(String fileName) {
+        return GAME_LOG.matcher(fileName).matches();
+    }
+
+    /**
+     * A game's name from its game log's path in the archive ({@code day1/late/A-vs-B.rcg.gz}):
+     * without {@code .rcg[.gz]}, directories joined by '-' ({@code day1-late-A-vs-B}).
+     */
+    public static String gameName(String path) {
+        return GameLogs.baseName(path).replace('/', '-');
+    }
+
     /** A game log in the archive and its name. */
     record Game(String name, Path gameLog, String path) {
     }
@@ -103,9 +116,9 @@ public final class ArchiveConversion {
         Map<String, Path> names = new HashMap<>();
         try (Stream<Path> files = Files.walk(root)) {
             for (Path file : files.filter(f -> !f.startsWith(out) && Files.isRegularFile(f)
-                    && GAME_LOG.matcher(f.getFileName().toString()).matches()).sorted().toList()) {
+                    && isGameLog(f.getFileName().toString())).sorted().toList()) {
                 String path = root.relativize(file).toString().replace(file.getFileSystem().getSeparator(), "/");
-                String name = GameLogs.baseName(path).replace('/', '-');
+                String name = gameName(path);
                 Path before = names.put(name, file);
                 if (before != null) {
                     throw new IllegalArgumentException(before + " and " + file + " would both be game " + name
@@ -117,9 +130,13 @@ public final class ArchiveConversion {
         return games;
     }
 
+    /** @throws IllegalArgumentException when the archive holds no game log, or two of one name */
     public Result run(Progress progress) throws IOException {
         long started = System.nanoTime();
         List<Game> found = games(request.archive(), request.outDir());
+        if (found.isEmpty()) {
+            throw new IllegalArgumentException("no game logs (.rcg, .rcg.gz) under " + request.archive());
+        }
         games = found.size();
         Path records = request.outDir().resolve(RECORDS);
         Files.createDirectories(records);
@@ -132,7 +149,8 @@ public final class ArchiveConversion {
                 if (row != null) {
                     resumed++;
                 } else {
-                    row = convert(game);
+                    row = convertGame(request.settings(), game.name(), game.path(), game.gameLog(),
+                            commandLog(game.gameLog()), request.outDir());
                     if (row.status() == ManifestRow.Status.converted) {
                         writeRecord(records, row);
                     }
@@ -145,7 +163,7 @@ public final class ArchiveConversion {
             progress.end();
         }
         Path manifest = request.outDir().resolve(MANIFEST);
-        CsvTables.write(manifest, ManifestRow.COLUMNS, rows.stream().map(ManifestRow::cells).toList());
+        writeManifest(manifest, rows);
         return new Result(List.copyOf(rows), resumed, manifest, (System.nanoTime() - started) / 1e9);
     }
 
@@ -155,11 +173,27 @@ public final class ArchiveConversion {
         if (!Files.isRegularFile(file)) {
             return null;
         }
-        ManifestRow row = JSON.readValue(file.toFile(), ManifestRow.class);
+        ManifestRow row = readRecord(file);
         return row.status() == ManifestRow.Status.converted ? row : null;
     }
 
-    private static void writeRecord(Path records, ManifestRow row) throws IOException {
+    /** A game's record, {@code DIR/.games/GAME.json}: its manifest row, warnings in full. */
+    public static ManifestRow readRecord(Path file) throws IOException {
+        return JSON.readValue(file.toFile(), ManifestRow.class);
+    }
+
+    /** The same from the record's bytes (read from another file system). */
+    public static ManifestRow readRecord(byte[] json) throws IOException {
+        return JSON.readValue(json, ManifestRow.class);
+    }
+
+    /** The manifest, a row per game, written complete or not at all. */
+    public static void writeManifest(Path file, List<ManifestRow> rows) throws IOException {
+        CsvTables.write(file, ManifestRow.COLUMNS, rows.stream().map(ManifestRow::cells).toList());
+    }
+
+    /** Writes a game's record into {@code records} ({@code DIR/.games}), complete or not at all. */
+    public static void writeRecord(Path records, ManifestRow row) throws IOException {
         try (AtomicOutput output = AtomicOutput.create(records.resolve(row.game() + ".json"))) {
             JSON.writerWithDefaultPrettyPrinter().writeValue(output.stream(), row);
             output.commit();
@@ -167,11 +201,18 @@ public final class ArchiveConversion {
     }
 
     /**
-     * One game, its failure a row with the reason. A game that fails while its files are committed
-     * (an output error) has those already in place removed: a game is in the output whole or not at all.
+     * One game of an archive into {@code outDir/TEAM/GAME_UNUM.json.gz}, its failure a row with the
+     * reason; the step {@link #run} takes for each game, and the Spark job's task (into a scratch
+     * directory it then publishes). A game that fails while its files are committed (an output
+     * error) has those already in place removed: a game is in the output whole or not at all.
+     *
+     * @param name the game's name ({@link #gameName})
+     * @param path the game log's path in the archive, for the manifest
+     * @param commandLog the command log beside the game log, null when there is none
      */
-    private ManifestRow convert(Game game) {
-        Path commandLog = commandLog(game.gameLog());
+    public static ManifestRow convertGame(ConvertSettings settings, String name, String path, Path gameLog,
+                                          Path commandLog, Path outDir) {
+        Game game = new Game(name, gameLog, path);
         if (commandLog == null) {
             return ManifestRow.notConverted(game.name(), game.path(), ManifestRow.Status.skipped,
                     "no command log beside it (" + GameLogs.baseName(game.gameLog().getFileName().toString())
@@ -179,7 +220,7 @@ public final class ArchiveConversion {
         }
         List<Path> targets = new ArrayList<>();
         try {
-            return convert(game, new GameLogs(game.gameLog(), commandLog), targets);
+            return convert(settings, game, new GameLogs(game.gameLog(), commandLog), outDir, targets);
         } catch (IOException | RuntimeException e) {
             // a game log cut off, shuffled or of another game than its command log (the file and line
             // named), or an output that could not be written
@@ -209,10 +250,10 @@ public final class ArchiveConversion {
         }
     }
 
-    private ManifestRow convert(Game game, GameLogs logs, List<Path> targets) throws IOException {
-        Path outDir = request.outDir();
-        GameSceneFiles.Written written = GameSceneFiles.write(request.settings().gameLogConverter(),
-                request.settings().grid(), logs, key -> {
+    private static ManifestRow convert(ConvertSettings settings, Game game, GameLogs logs, Path outDir,
+                                       List<Path> targets) throws IOException {
+        GameSceneFiles.Written written = GameSceneFiles.write(settings.gameLogConverter(), settings.grid(), logs,
+                key -> {
                     int cut = key.lastIndexOf('_');
                     String team = key.substring(0, cut);
                     if (!TEAM_NAME.matcher(team).matches()) {

@@ -1,5 +1,6 @@
 package org.scenes.app.convert;
 
+import java.io.Serializable;
 import java.util.List;
 
 /**
@@ -20,7 +21,7 @@ import java.util.List;
  */
 public record ManifestRow(String game, String path, Status status, String leftTeam, String rightTeam, int leftScore,
                           int rightScore, int players, long scenes, List<String> warnings, String commands,
-                          String reason) {
+                          String reason) implements Serializable {
     /** What became of a game. */
     public enum Status { converted, failed, skipped }
 
