@@ -295,4 +295,71 @@ class ConvertArchiveTest {
         assertTrue(cli.out().contains("Converted              3 (2 of them by an earlier run"), cli.out());
         assertEquals(12, files(out.resolve("Ants")).size() + files(out.resolve("Bees")).size());
     }
+
+    /**
+     * A child JVM converting an archive of 40 games, stopped by SIGTERM once its first game is
+     * recorded: it says how far it got, leaves no temporary file and no broken scene file, and
+     * the next run converts the rest into what an uninterrupted run writes.
+     */
+    @Test
+    void aConvertStoppedBySigtermResumesIntoTheFilesOfAnUninterruptedRun() throws Exception {
+        Path many = dir.resolve("many");
+        for (int copy = 0; copy < 10; copy++) {
+            try (Stream<Path> files = Files.walk(archive)) {
+                for (Path file : files.filter(Files::isRegularFile).toList()) {
+                    Path target = many.resolve("copy" + copy).resolve(archive.relativize(file).toString());
+                    Files.createDirectories(target.getParent());
+                    Files.copy(file, target);
+                }
+            }
+        }
+        Path out = dir.resolve("stopped");
+        Path records = out.resolve(".games");
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Xmx256m", "-cp", System.getProperty("java.class.path"), "org.scenes.cli.Main", "convert",
+                many.toString(), "--out-dir", out.toString(), "--threads", "1"));
+        Path childOut = dir.resolve("child.out");
+        Process child = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(childOut.toFile()).start();
+        // the condition: a game recorded (polled; the child needs seconds for 30 games)
+        while (child.isAlive() && !(Files.isDirectory(records) && hasFile(records))) {
+            Thread.sleep(20);
+        }
+        child.destroy();
+        assertTrue(child.waitFor(120, java.util.concurrent.TimeUnit.SECONDS));
+        String said = Files.readString(childOut);
+        assertTrue(said.contains("scenes: interrupted: ") && said.contains(" of 40 games done; run the same command again"),
+                said);
+        assertFalse(Files.exists(out.resolve("manifest.csv")), said);
+        for (Path file : files(out)) {
+            assertFalse(file.getFileName().toString().endsWith(".tmp"), file.toString());
+            if (file.getFileName().toString().endsWith(".json.gz")) {
+                assertTrue(scenes(file) > 0, file.toString());
+            }
+        }
+
+        assertEquals(0, cli.run("convert", many, "--out-dir", out, "--threads", 1), cli.err());
+        Matcher resumed = Pattern.compile("Converted +30 \\((\\d+) of them by an earlier run").matcher(cli.out());
+        assertTrue(resumed.find() && Integer.parseInt(resumed.group(1)) >= 1, cli.out());
+        Path whole = dir.resolve("whole");
+        assertEquals(0, cli.run("convert", many, "--out-dir", whole, "--threads", 1), cli.err());
+        List<Path> expected = files(whole);
+        assertEquals(expected.stream().map(whole::relativize).toList(), files(out).stream().map(out::relativize).toList());
+        for (Path file : expected) {
+            assertEquals(text(file), text(out.resolve(whole.relativize(file).toString())), file.toString());
+        }
+        assertEquals(Files.readString(whole.resolve("manifest.csv")), Files.readString(out.resolve("manifest.csv")));
+    }
+
+    /** A file's text, gunzipped when gzipped. */
+    private static String text(Path file) throws IOException {
+        try (InputStream in = org.scenes.internal.files.Inputs.open(file)) {
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+    }
+
+    private static boolean hasFile(Path directory) throws IOException {
+        try (Stream<Path> files = Files.list(directory)) {
+            return files.anyMatch(f -> f.getFileName().toString().endsWith(".json"));
+        }
+    }
 }
