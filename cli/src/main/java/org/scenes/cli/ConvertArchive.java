@@ -4,6 +4,8 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import org.scenes.api.Grid;
@@ -16,6 +18,9 @@ import org.scenes.internal.files.AtomicOutput;
  * service, a word on what was done when interrupted, and its summary printed.
  */
 final class ConvertArchive {
+    /** How long Ctrl-C waits for the game under way to give up its files (a game opens them in its first cycles). */
+    private static final Duration STOP_WAIT = Duration.ofSeconds(2);
+
     private final ConvertCommand options;
 
     ConvertArchive(ConvertCommand options) {
@@ -43,8 +48,16 @@ final class ConvertArchive {
         ArchiveConversion conversion = new ArchiveConversion(new ArchiveConversion.Request(archive, outDir,
                 options.settings(grid)));
         Thread interrupted = new Thread(() -> {
-            // Ctrl-C or SIGTERM: the game under way leaves no file and no record, so a new run converts it
-            List<Path> abandoned = AtomicOutput.abandonAll();
+            // Ctrl-C or SIGTERM: the game under way leaves no file and no record, so a new run converts it.
+            // Stopped first, so that no output opens after its temporary files are removed
+            conversion.cancel();
+            List<Path> abandoned = new ArrayList<>(AtomicOutput.abandonAll());
+            try {
+                conversion.awaitStop(STOP_WAIT);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            abandoned.addAll(AtomicOutput.abandonAll());
             err.printf("%nscenes: interrupted: %d of %d games done; run the same command again to convert the rest%s%n",
                     conversion.done(), conversion.games(),
                     abandoned.isEmpty() ? "" : " (not written, temporary files removed: " + abandoned + ")");

@@ -350,6 +350,21 @@ class ConvertArchiveTest {
         assertEquals(Files.readString(whole.resolve("manifest.csv")), Files.readString(out.resolve("manifest.csv")));
     }
 
+    @Test
+    void badArchivesAndOutputsAreUsageErrorsBeforeAnyWork() throws IOException {
+        Path empty = Files.createDirectories(dir.resolve("empty"));
+        assertEquals(2, cli.run("convert", empty, "--out-dir", dir.resolve("out")));
+        assertTrue(cli.err().contains("no game logs (.rcg, .rcg.gz) under " + empty), cli.err());
+        assertFalse(Files.exists(dir.resolve("out")));
+        assertEquals(2, cli.run("convert", archive, "-o", dir.resolve("all.json")));
+        assertTrue(cli.err().contains("is converted into --out-dir DIR"), cli.err());
+        Path copy = copy();
+        assertEquals(2, cli.run("convert", copy, "--out-dir", copy));
+        assertTrue(cli.err().contains("is the archive"), cli.err());
+        assertEquals(2, cli.run("stats", empty));
+        assertTrue(cli.err().contains("a directory without manifest.csv"), cli.err());
+    }
+
     /** A file's text, gunzipped when gzipped. */
     private static String text(Path file) throws IOException {
         try (InputStream in = org.scenes.internal.files.Inputs.open(file)) {

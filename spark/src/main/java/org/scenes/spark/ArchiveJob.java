@@ -168,7 +168,7 @@ final class ArchiveJob {
             Path commandLog = game.commandLog() == null ? null : hadoop.local(game.commandLog(), scratch.resolve("logs"));
             Path files = scratch.resolve("scenes");
             ManifestRow row = ArchiveConversion.convertGame(settings.convertSettings(), game.name(), game.path(),
-                    gameLog, commandLog, files);
+                    gameLog, commandLog, files, () -> false);
             if (row.status() != ManifestRow.Status.converted) {
                 return row;
             }

@@ -9,7 +9,12 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.time.Duration;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.BooleanSupplier;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.scenes.app.Progress;
@@ -67,6 +72,8 @@ public final class ArchiveConversion {
     private final Request request;
     private final AtomicInteger done = new AtomicInteger();
     private volatile int games;
+    private volatile boolean cancelled;
+    private final CountDownLatch stopped = new CountDownLatch(1);
 
     public ArchiveConversion(Request request) {
         this.request = request;
@@ -80,6 +87,20 @@ public final class ArchiveConversion {
     /** Games done so far (converted, resumed, failed or skipped); read from any thread. */
     public int done() {
         return done.get();
+    }
+
+    /**
+     * Stops the run (from any thread: a shutdown hook): no game starts and no file is opened
+     * after this, the game under way is abandoned, and {@link #run} ends with a
+     * {@link CancellationException}.
+     */
+    public void cancel() {
+        cancelled = true;
+    }
+
+    /** Waits until {@link #run} has returned or thrown, at most {@code timeout}; whether it has. */
+    public boolean awaitStop(Duration timeout) throws InterruptedException {
+        return stopped.await(timeout.toMillis(), TimeUnit.MILLISECONDS);
     }
 
     /** Games in the archive, known once {@link #run} has walked it. */
@@ -132,6 +153,14 @@ public final class ArchiveConversion {
 
     /** @throws IllegalArgumentException when the archive holds no game log, or two of one name */
     public Result run(Progress progress) throws IOException {
+        try {
+            return runGames(progress);
+        } finally {
+            stopped.countDown();
+        }
+    }
+
+    private Result runGames(Progress progress) throws IOException {
         long started = System.nanoTime();
         List<Game> found = games(request.archive(), request.outDir());
         if (found.isEmpty()) {
@@ -145,12 +174,15 @@ public final class ArchiveConversion {
         progress.begin("Converting", found.size());
         try {
             for (Game game : found) {
+                stopIfCancelled();
                 ManifestRow row = record(records, game);
                 if (row != null) {
                     resumed++;
                 } else {
                     row = convertGame(request.settings(), game.name(), game.path(), game.gameLog(),
-                            commandLog(game.gameLog()), request.outDir());
+                            commandLog(game.gameLog()), request.outDir(), () -> cancelled);
+                    // a game finished as the run was stopped has no record: the next run converts it again
+                    stopIfCancelled();
                     if (row.status() == ManifestRow.Status.converted) {
                         writeRecord(records, row);
                     }
@@ -162,9 +194,16 @@ public final class ArchiveConversion {
         } finally {
             progress.end();
         }
+        stopIfCancelled();
         Path manifest = request.outDir().resolve(MANIFEST);
         writeManifest(manifest, rows);
         return new Result(List.copyOf(rows), resumed, manifest, (System.nanoTime() - started) / 1e9);
+    }
+
+    private void stopIfCancelled() {
+        if (cancelled) {
+            throw new CancellationException("stopped: " + done.get() + " of " + games + " games done");
+        }
     }
 
     /** The game's record from an earlier run, null when it was not converted. */
@@ -209,9 +248,10 @@ public final class ArchiveConversion {
      * @param name the game's name ({@link #gameName})
      * @param path the game log's path in the archive, for the manifest
      * @param commandLog the command log beside the game log, null when there is none
+     * @param cancelled whether the run was stopped: then no scene file is opened and the game fails
      */
     public static ManifestRow convertGame(ConvertSettings settings, String name, String path, Path gameLog,
-                                          Path commandLog, Path outDir) {
+                                          Path commandLog, Path outDir, BooleanSupplier cancelled) {
         Game game = new Game(name, gameLog, path);
         if (commandLog == null) {
             return ManifestRow.notConverted(game.name(), game.path(), ManifestRow.Status.skipped,
@@ -220,7 +260,7 @@ public final class ArchiveConversion {
         }
         List<Path> targets = new ArrayList<>();
         try {
-            return convert(settings, game, new GameLogs(game.gameLog(), commandLog), outDir, targets);
+            return convert(settings, game, new GameLogs(game.gameLog(), commandLog), outDir, targets, cancelled);
         } catch (IOException | RuntimeException e) {
             // a game log cut off, shuffled or of another game than its command log (the file and line
             // named), or an output that could not be written
@@ -251,9 +291,12 @@ public final class ArchiveConversion {
     }
 
     private static ManifestRow convert(ConvertSettings settings, Game game, GameLogs logs, Path outDir,
-                                       List<Path> targets) throws IOException {
+                                       List<Path> targets, BooleanSupplier cancelled) throws IOException {
         GameSceneFiles.Written written = GameSceneFiles.write(settings.gameLogConverter(), settings.grid(), logs,
                 key -> {
+                    if (cancelled.getAsBoolean()) {
+                        throw new CancellationException("stopped");
+                    }
                     int cut = key.lastIndexOf('_');
                     String team = key.substring(0, cut);
                     if (!TEAM_NAME.matcher(team).matches()) {
