@@ -24,6 +24,7 @@ import java.util.zip.GZIPOutputStream;
 import org.apache.commons.csv.CSVFormat;
 import org.apache.commons.csv.CSVRecord;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.api.Grid;
@@ -39,6 +40,7 @@ import org.scenes.internal.vision.Fading;
  * {@code scenes convert ARCHIVE_DIR --out-dir DIR} over an archive of the simulator's own games
  * (nested directories, some gzipped, one without its command log), and {@code scenes stats DIR}.
  */
+@Tag("slow")
 class ConvertArchiveTest {
     /** The simulator's recorded name: {@code Ants_2-vs-Bees_1.rcg}. */
     private static final Pattern SCORE = Pattern.compile("Ants_(\\d+)-vs-Bees_(\\d+)");

@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.testing.Processes;
@@ -20,6 +21,7 @@ import org.scenes.testing.Processes;
  * ({@code java ... org.scenes.cli.Main team}) beside each imitating player in the embedded
  * simulator; its commands label DAgger's scenes as the teacher in process does. Two players, short games.
  */
+@Tag("slow")
 class EvaluateShadowCommandTest {
     @TempDir
     Path dir;

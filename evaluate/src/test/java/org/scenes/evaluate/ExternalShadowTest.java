@@ -18,6 +18,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.scenes.agent.Brain;
 import org.scenes.agent.BrainFactory;
@@ -35,6 +36,7 @@ import org.scenes.testing.Processes;
  * A shadow teacher that is a program: the built-in Krislet as a process of its own
  * ({@link TeacherProgram}) beside each imitating player, over UDP. Short games, two players.
  */
+@Tag("slow")
 class ExternalShadowTest {
     private static final GameSetup.Team AMBER = new GameSetup.Team("Amber", 2, Teachers.byName("krislet"));
 
