@@ -31,6 +31,17 @@ public interface Progress {
     /** One step is done; called from any thread. */
     void step();
 
+    /** {@code steps} steps are done (bytes of a log read); called from any thread. */
+    default void stepBy(long steps) {
+        for (long i = 0; i < steps; i++) {
+            step();
+        }
+    }
+
+    /** A new estimate of the total steps, for work whose size shows only as it is done. */
+    default void total(long total) {
+    }
+
     /** The work is over, done or failed. */
     void end();
 }

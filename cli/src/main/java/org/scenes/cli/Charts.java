@@ -7,12 +7,15 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.text.DecimalFormat;
+import java.text.DecimalFormatSymbols;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
+import java.util.TreeSet;
 import java.util.function.ToDoubleFunction;
 import org.jfree.chart.ChartUtils;
 import org.jfree.chart.JFreeChart;
@@ -57,7 +60,8 @@ final class Charts {
 
     /** Room for every bar: rows of categories times series, plus titles and legend. */
     static int height(int categories, int series) {
-        return Math.max(320, 170 + categories * (16 * series + 14));
+        // bars thick enough for their value label inside (JFreeChart drops a label that does not fit)
+        return Math.max(320, 170 + categories * (22 * series + 14));
     }
 
     /** Writes a chart as PNG or SVG by the file name's ending, atomically. */
@@ -144,7 +148,7 @@ final class Charts {
             renderer.setSeriesPaint(i, SERIES[i]);
         }
         renderer.setDefaultItemLabelGenerator(new StandardCategoryItemLabelGenerator("{2}",
-                new DecimalFormat(max - min < 10 ? "0.00" : "0.0")));
+                labelFormat(data, max - min < 10 ? 2 : 1)));
         renderer.setDefaultItemLabelsVisible(true);
         renderer.setDefaultItemLabelFont(new Font(Font.SANS_SERIF, Font.BOLD, 11));
         // inside the bar's end: the zoomed axis leaves no room beyond the longest bar
@@ -160,6 +164,34 @@ final class Charts {
         }
         chart.setBackgroundPaint(Color.WHITE);
         return chart;
+    }
+
+    /** Most decimals a bar label gets: figures closer than this are equal for the chart. */
+    static final int MAX_LABEL_DECIMALS = 6;
+
+    /**
+     * The format of the bar labels: at least {@code decimals} decimals, more until bars of different
+     * values read differently (0.9512 and 0.9548 are 0.951 and 0.955, not both 0.95).
+     */
+    static DecimalFormat labelFormat(DefaultCategoryDataset data, int decimals) {
+        Set<Double> values = new TreeSet<>();
+        for (int r = 0; r < data.getRowCount(); r++) {
+            for (int c = 0; c < data.getColumnCount(); c++) {
+                Number value = data.getValue(r, c);
+                if (value != null) {
+                    values.add(value.doubleValue());
+                }
+            }
+        }
+        for (int d = decimals; ; d++) {
+            DecimalFormat format = new DecimalFormat("0." + "0".repeat(d),
+                    DecimalFormatSymbols.getInstance(Locale.ROOT));
+            Set<String> labels = new HashSet<>();
+            values.forEach(v -> labels.add(format.format(v)));
+            if (labels.size() == values.size() || d >= MAX_LABEL_DECIMALS) {
+                return format;
+            }
+        }
     }
 
     private static double niceFloor(double value, double span) {

@@ -2,21 +2,19 @@ package org.scenes.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 import org.scenes.api.Grid;
+import org.scenes.app.convert.ConvertSettings;
+import org.scenes.app.convert.PlayerLogConversion;
 import org.scenes.internal.convert.ConversionReport;
 import org.scenes.internal.convert.DropReason;
 import org.scenes.internal.convert.MalformedLine;
-import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.files.AtomicOutput;
-import org.scenes.internal.scene.LazySceneFileWriter;
 import org.scenes.options.GameLogOptions;
 import org.scenes.options.GridOptions;
 import org.scenes.options.PairingOptions;
@@ -36,11 +34,13 @@ import picocli.CommandLine.Spec;
                 + " into scenes: each see with the actions sent after it (or, under synchronous vision, each cycle"
                 + " with the latest see). Rules: docs/conversion.md.",
                 "Or the server's logs of a game (GAME.rcg [GAME.rcl], told apart by content): scenes for every"
-                        + " player, each see rebuilt with the server's vision model, paired with the player's commands."})
+                        + " player, each see rebuilt with the server's vision model, paired with the player's commands.",
+                "Or an archive: a directory tree of game logs (.rcg[.gz], the .rcl[.gz] beside), every player of every"
+                        + " game into --out-dir DIR/TEAM/GAME_UNUM.json.gz with DIR/manifest.csv; games converted by an"
+                        + " earlier run are skipped (docs/scale.md, archives)."})
 final class ConvertCommand implements Callable<Integer> {
     /** Malformed-line warnings printed; the rest are only counted. */
     private static final int WARNINGS_SHOWN = 50;
-    private static final long LARGE_INPUT = 32L << 20;
 
     @Spec
     CommandSpec spec;
@@ -48,7 +48,7 @@ final class ConvertCommand implements Callable<Integer> {
     @ParentCommand
     ScenesCommand top;
 
-    @Parameters(paramLabel = "LOG", arity = "1..*", description = "Player logs to convert, or a game's .rcg and .rcl.")
+    @Parameters(paramLabel = "LOG", arity = "1..*", description = "Player logs to convert, or a game's .rcg and .rcl, or an archive directory.")
     List<Path> logs;
 
     @ArgGroup(exclusive = true, multiplicity = "1")
@@ -60,7 +60,8 @@ final class ConvertCommand implements Callable<Integer> {
         Path file;
 
         @Option(names = "--out-dir", paramLabel = "DIR",
-                description = "One scene file per log: DIR/<log name>.json.gz.")
+                description = "One scene file per log: DIR/<log name>.json.gz (game logs: DIR/TEAM_UNUM.json.gz;"
+                        + " an archive: DIR/TEAM/GAME_UNUM.json.gz).")
         Path directory;
     }
 
@@ -111,16 +112,26 @@ final class ConvertCommand implements Callable<Integer> {
 
     private int warningsShown;
 
+    /** The options as the convert services take them. */
+    ConvertSettings settings(Grid grid) {
+        gameLogOptions.check();
+        return new ConvertSettings(grid, pairingOptions.pairing(), pairingOptions.strict(), worldOptions.world(),
+                unanswered == Unanswered.KEEP, gameLogOptions.fading(), gameLogOptions.selected(),
+                gameLogOptions.commandsFirst(), gameLogOptions.seePhase(), threads);
+    }
+
     @Override
     public Integer call() throws IOException {
         Grid grid = gridOptions.grid();
         Limits.threads("--threads", threads);
+        if (ConvertArchive.isArchive(logs)) {
+            return new ConvertArchive(this).run(grid);
+        }
         if (output.file != null) {
             OutputPaths.checkFile("-o", output.file, logs);
         } else {
             OutputPaths.checkDirectory("--out-dir", output.directory);
-            List<String> names = outputNames(logs);
-            for (String name : names) {
+            for (String name : outputNames(logs)) {
                 OutputPaths.checkNotInput("--out-dir", output.directory.resolve(name + ".json.gz"), logs);
             }
         }
@@ -129,67 +140,38 @@ final class ConvertCommand implements Callable<Integer> {
         if (game != null) {
             return game.run(this, grid, spec.commandLine().getOut(), err);
         }
-        SceneConverter converter = SceneConverter.with(grid)
-                .pairing(pairingOptions.pairing())
-                .strict(pairingOptions.strict())
-                .warnings(line -> warn(err, line))
-                .world(worldOptions.world())
-                .keepUnanswered(unanswered == Unanswered.KEEP)
-                .build();
-        ConversionReport total = new ConversionReport();
-        List<Path> written = new java.util.concurrent.CopyOnWriteArrayList<>();
-        int failed = 0;
-        long started = System.nanoTime();
+        PlayerLogConversion conversion = new PlayerLogConversion(new PlayerLogConversion.Request(logs, output.file,
+                output.directory, settings(grid)));
         Thread interrupted = new Thread(() -> {
             // Ctrl-C or SIGTERM: no half-written scene file, and a word on what is complete
             List<Path> abandoned = AtomicOutput.abandonAll();
+            List<Path> written = conversion.written();
             err.printf("%nscenes: interrupted: %d of %d scene files written%s%s%n", written.size(),
-                    output.file != null ? 1 : logs.size(), written.isEmpty() ? "" : " (" + written + ")",
+                    conversion.expected(), written.isEmpty() ? "" : " (" + written + ")",
                     abandoned.isEmpty() ? "" : "; not written (its temporary file removed): " + abandoned);
             err.flush();
         }, "scenes-convert-interrupted");
         Runtime.getRuntime().addShutdownHook(interrupted);
+        PlayerLogConversion.Result result;
         try {
-            try (Progress progress = Progress.start(logs)) {
-                if (output.file != null) {
-                    try (LazySceneFileWriter writer = new LazySceneFileWriter(output.file, grid, sourceName(logs))) {
-                        for (Path log : logs) {
-                            ConversionReport report = converter.convert(log, SceneConverter.SceneSink.of(writer::write, writer::goalie), progress::step);
-                            total.add(report);
-                            failed += noScenes(err, log, report) ? 1 : 0;
-                            progress.logDone(log);
-                        }
-                        if (failed == 0) {
-                            writer.commit();
-                            written.add(output.file);
-                        }
-                    }
-                } else {
-                    Files.createDirectories(output.directory);
-                    List<String> names = outputNames(logs);
-                    for (int i = 0; i < logs.size(); i++) {
-                        Path log = logs.get(i);
-                        Path target = output.directory.resolve(names.get(i) + ".json.gz");
-                        try (LazySceneFileWriter writer = new LazySceneFileWriter(target, grid, log.getFileName().toString())) {
-                            ConversionReport report = converter.convert(log, SceneConverter.SceneSink.of(writer::write, writer::goalie), progress::step);
-                            total.add(report);
-                            if (noScenes(err, log, report)) {
-                                failed++;
-                            } else {
-                                writer.commit();
-                                written.add(target);
-                            }
-                        }
-                        progress.logDone(log);
-                    }
+            result = conversion.run(new PlayerLogConversion.Listener() {
+                @Override
+                public void malformed(MalformedLine line) {
+                    warn(err, line);
                 }
-            }
-            if (warningsShown < total.malformed()) {
-                err.printf("scenes: warning: %d more malformed lines not shown%n", total.malformed() - warningsShown);
+
+                @Override
+                public void logDone(Path log, ConversionReport report, boolean failed) {
+                    tellNoScenes(err, log, report);
+                }
+            }, TerminalProgress.reporter(" MB", 1L << 20));
+            if (warningsShown < result.total().malformed()) {
+                err.printf("scenes: warning: %d more malformed lines not shown%n",
+                        result.total().malformed() - warningsShown);
             }
             err.flush();
             // still under the hook: a signal while the summary prints is told what was written
-            printSummary(spec.commandLine().getOut(), total, grid, written, (System.nanoTime() - started) / 1e9);
+            printSummary(spec.commandLine().getOut(), result.total(), grid, result.written(), result.seconds());
         } finally {
             try {
                 Runtime.getRuntime().removeShutdownHook(interrupted);
@@ -197,8 +179,8 @@ final class ConvertCommand implements Callable<Integer> {
                 // the JVM is already stopping: the hook reports
             }
         }
-        if (failed > 0) {
-            err.printf("scenes: error: %d of %d logs gave no scenes%s%n", failed, logs.size(),
+        if (!result.failed().isEmpty()) {
+            err.printf("scenes: error: %d of %d logs gave no scenes%s%n", result.failed().size(), logs.size(),
                     output.file != null ? "; " + output.file + " not written" : "");
             err.flush();
             return ExitCodes.FAILURE;
@@ -206,21 +188,20 @@ final class ConvertCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
-    /** A log with messages but no scene is a failed conversion: says so in one line naming the log. */
-    private static boolean noScenes(PrintWriter err, Path log, ConversionReport report) {
+    /** An empty log, or a log with messages but no scene (a failed conversion), in one line naming the log. */
+    private static void tellNoScenes(PrintWriter err, Path log, ConversionReport report) {
         if (report.lines() == 0) {
             err.printf("scenes: warning: %s is empty: no lines, no scenes%n", log);
-            return false;
+            return;
         }
-        if (report.scenes() > 0 || (report.messages() == 0 && report.malformed() == 0)) {
-            return false;
+        if (!PlayerLogConversion.noScenes(report)) {
+            return;
         }
         long commands = report.commands().values().stream().mapToLong(Long::longValue).sum();
         err.printf(Locale.ROOT, "scenes: error: %s: no scenes from %d lines (%d see, %d commands, %d malformed lines)%s%n",
                 log, report.lines(), report.sees(), commands, report.malformed(),
                 report.sees() == 0 ? ": no see at all; is this a player's log?"
                         : commands == 0 ? ": the player sent no command" : "");
-        return true;
     }
 
     private void warn(PrintWriter err, MalformedLine line) {
@@ -230,88 +211,13 @@ final class ConvertCommand implements Callable<Integer> {
         }
     }
 
-    /**
-     * A bar in MB of log text on a terminal, for several logs or a large one; silent when piped.
-     * The total of gzip logs is unknown until read, so it is re-estimated after each log from
-     * the compression ratio seen so far.
-     */
-    private static final class Progress implements AutoCloseable {
-        private final TerminalProgress bar;
-        private final long compressedTotal;
-        private long compressedDone;
-        private long textDone;
-
-        private Progress(TerminalProgress bar, long compressedTotal) {
-            this.bar = bar;
-            this.compressedTotal = compressedTotal;
-        }
-
-        static Progress start(List<Path> logs) throws IOException {
-            long size = 0;
-            for (Path log : logs) {
-                size += Files.isRegularFile(log) ? Files.size(log) : 0;
-            }
-            if (logs.size() < 2 && size < LARGE_INPUT) {
-                return new Progress(TerminalProgress.none(), size);
-            }
-            // about 10 bytes of text per gzip byte in recorded games; corrected as logs are read
-            boolean compressed = logs.stream().anyMatch(l -> l.getFileName().toString().endsWith(".gz"));
-            return new Progress(TerminalProgress.start("Converting", compressed ? size * 10 : size, " MB", 1L << 20), size);
-        }
-
-        void step(long textBytes) {
-            textDone += textBytes;
-            bar.stepBy(textBytes);
-        }
-
-        void logDone(Path log) throws IOException {
-            compressedDone += Files.isRegularFile(log) ? Files.size(log) : 0;
-            if (compressedDone > 0) {
-                double ratio = (double) textDone / compressedDone;
-                bar.maxHint(textDone + (long) (ratio * Math.max(0, compressedTotal - compressedDone)));
-            }
-        }
-
-        @Override
-        public void close() {
-            bar.close();
-        }
-    }
-
-    /**
-     * One output name per log: the log's name without extensions, prefixed with its directory's
-     * name when two logs share a name (game1/Carleton_1 and game2/Carleton_1).
-     */
+    /** {@link PlayerLogConversion#outputNames}, two logs of one name being a usage error. */
     static List<String> outputNames(List<Path> logs) {
-        Map<String, Long> counts = logs.stream().collect(Collectors.groupingBy(ConvertCommand::baseName, Collectors.counting()));
-        List<String> names = new ArrayList<>();
-        for (Path log : logs) {
-            String name = baseName(log);
-            Path parent = log.toAbsolutePath().getParent();
-            if (counts.get(name) > 1 && parent != null && parent.getFileName() != null) {
-                name = parent.getFileName() + "-" + name;
-            }
-            if (names.contains(name)) {
-                throw new UsageException("--out-dir: two logs would both be written to " + name
-                        + ".json.gz; convert them separately or with -o");
-            }
-            names.add(name);
+        try {
+            return PlayerLogConversion.outputNames(logs);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("--out-dir: " + e.getMessage() + "; convert them separately or with -o");
         }
-        return names;
-    }
-
-    static String baseName(Path log) {
-        String name = log.getFileName().toString();
-        for (String suffix : new String[] {".gz", ".lsf", ".log", ".txt"}) {
-            if (name.endsWith(suffix) && name.length() > suffix.length()) {
-                name = name.substring(0, name.length() - suffix.length());
-            }
-        }
-        return name;
-    }
-
-    private static String sourceName(List<Path> logs) {
-        return logs.stream().map(p -> p.getFileName().toString()).collect(Collectors.joining(", "));
     }
 
     private static void printSummary(PrintWriter out, ConversionReport report, Grid grid, List<Path> written,

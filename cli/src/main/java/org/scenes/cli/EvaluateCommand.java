@@ -20,6 +20,8 @@ import org.scenes.evaluate.Arena;
 import org.scenes.evaluate.Comparison;
 import org.scenes.evaluate.Dagger;
 import org.scenes.evaluate.Evaluation;
+import org.scenes.evaluate.Disagreements;
+import org.scenes.evaluate.ExternalShadow;
 import org.scenes.evaluate.ExternalTeam;
 import org.scenes.evaluate.HtmlReport;
 import org.scenes.evaluate.Learner;
@@ -97,9 +99,26 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--dagger", paramLabel = "N", defaultValue = "0",
             description = "After the evaluation, N rounds of DAgger: the scenes the imitator built in its games (the"
                     + " same seeds each round), labelled with what its shadow teacher sent on the same sees, join"
-                    + " its knowledge base, and it is evaluated again; one row of figures per round. Needs the"
-                    + " teacher in process (not --teacher-command). Default: ${DEFAULT-VALUE}.")
+                    + " its knowledge base, and it is evaluated again; one row of figures per round. Needs a shadow:"
+                    + " the teacher in process, or --shadow-command. Default: ${DEFAULT-VALUE}.")
     int dagger;
+
+    @Option(names = "--shadow-command", paramLabel = "CMD",
+            description = "A shadow teacher that is a program (HELIOS base's player, the classic Krislet): a process"
+                    + " per imitating player, started (bash -c, in its own session) before each imitator game and"
+                    + " ended after it; {host} and {port} are replaced by a loopback endpoint of its own that answers"
+                    + " its init as the server answered its player's, {team} by the team's name, {players} by 1,"
+                    + " {unum} by the player's number. It is sent every message the imitator receives; its commands"
+                    + " are recorded (agreement, --disagreements, --dagger's labels), never executed. In the embedded"
+                    + " simulator each message is followed by (think) and the program must answer (done); on --server"
+                    + " the server's own (think), if any, is forwarded.")
+    String shadowCommand;
+
+    @Option(names = "--disagreements", paramLabel = "FILE",
+            description = "Write where the imitator and its shadow part, one CSV row per see (round, seed, unum,"
+                    + " cycle, imitator's command, shadow's command): the sees of the running clock on which they"
+                    + " sent different body commands (a turn the other way round counts) or only one of them sent one.")
+    Path disagreements;
 
     @Option(names = "--json", description = "Print one JSON object instead of the table.")
     boolean json;
@@ -120,7 +139,8 @@ final class EvaluateCommand implements Callable<Integer> {
 
     @Option(names = "--server-wait", paramLabel = "SECONDS", defaultValue = "60",
             description = "With --server: how long each game waits for the server to accept its first player,"
-                    + " and for an external team's players to join. Default: ${DEFAULT-VALUE}.")
+                    + " and for an external team's players to join; also how long a --shadow-command may take to send"
+                    + " its init. Default: ${DEFAULT-VALUE}.")
     double serverWait;
 
     @Option(names = "--teacher-command", paramLabel = "CMD",
@@ -156,11 +176,23 @@ final class EvaluateCommand implements Callable<Integer> {
                 throw new UsageException("--dagger: plays and corrects the imitator; not with --teacher-games (the"
                         + " figures of existing game logs)");
             }
+            if (shadowCommand != null || disagreements != null) {
+                throw new UsageException((shadowCommand != null ? "--shadow-command" : "--disagreements")
+                        + ": a shadow plays beside the imitator's games; not with --teacher-games (the figures of"
+                        + " existing game logs)");
+            }
             return fromGameLogs();
         }
         Setup setup = setup();
         PrintWriter out = spec.commandLine().getOut();
         Outcome outcome = evaluate(setup, arena(), json ? null : out);
+        if (disagreements != null) {
+            List<Evaluation.Results> games = outcome.rounds().isEmpty() ? List.of(outcome.results())
+                    : outcome.rounds().stream().map(Dagger.Round::results).toList();
+            long rows = Disagreements.write(disagreements, games);
+            outcome.about().put("disagreements", rows + " sees on which imitator and shadow parted, in "
+                    + disagreements);
+        }
         outcome.about().put("played on", server == null ? "the embedded simulator, in process, synchronous"
                 : "the soccer server at " + server + (serverLogs == null ? ", without its game logs"
                         : ", positions from its game logs in " + serverLogs)
@@ -204,6 +236,12 @@ final class EvaluateCommand implements Callable<Integer> {
         long started = System.nanoTime();
         List<Path> teacherLogs = gameLogs("--teacher-games", teacherGames);
         List<Path> imitatorLogs = gameLogs("--imitator-games", imitatorGames);
+        if (teacherLogs.size() != imitatorLogs.size()) {
+            // the divergences and the Turing folds pair game i of one side with game i of the other
+            throw new UsageException("--teacher-games " + teacherGames + " holds " + teacherLogs.size()
+                    + " game logs and --imitator-games " + imitatorGames + " " + imitatorLogs.size()
+                    + ": give as many of each (game i of one side is compared with game i of the other)");
+        }
         ServerLogGames.Read read;
         try (TerminalProgress bar = TerminalProgress.start("Reading games", teacherLogs.size() + imitatorLogs.size(),
                 " games", 1)) {
@@ -261,7 +299,7 @@ final class EvaluateCommand implements Callable<Integer> {
     /** Everything the evaluation needs, checked. */
     record Setup(String teacherName, GameSetup.Team teacher, GameSetup.Team opponent, Side side, MatchConfig config,
                  PluginRegistry registry, List<Path> sceneFiles, int trainGames, int cycles, List<Long> seeds,
-                 int thinkSteps, int dagger) {
+                 int thinkSteps, int dagger, ExternalShadow shadow) {
     }
 
     /** The evaluation's games (of the last DAgger round), figures, DAgger rounds (or none) and what was compared. */
@@ -293,9 +331,24 @@ final class EvaluateCommand implements Callable<Integer> {
         if (dagger < 0) {
             throw new UsageException("--dagger: must be 0 or more rounds, not " + dagger);
         }
-        if (dagger > 0 && teacherCommand != null) {
-            throw new UsageException("--dagger: labels with a shadow teacher in process; not with --teacher-command"
-                    + " (give a built-in --teacher)");
+        if (dagger > 0 && teacherCommand != null && shadowCommand == null) {
+            throw new UsageException("--dagger: labels with a shadow teacher; with --teacher-command give the teacher"
+                    + " program as --shadow-command too (or a built-in --teacher)");
+        }
+        if (disagreements != null && teacherCommand != null && shadowCommand == null) {
+            throw new UsageException("--disagreements: an external teacher has no shadow in process; give the teacher"
+                    + " program as --shadow-command too");
+        }
+        if (shadowCommand != null && shadowCommand.isBlank()) {
+            throw new UsageException("--shadow-command: an empty command");
+        }
+        if (!(serverWait > 0) || serverWait > 86_400) {
+            throw new UsageException("--server-wait: give seconds between 0 and 86400, not " + serverWait);
+        }
+        if (disagreements != null && sceneFiles.stream().anyMatch(f -> f.toAbsolutePath().normalize()
+                .equals(disagreements.toAbsolutePath().normalize()))) {
+            throw new UsageException("--disagreements: " + disagreements + " is an input (SCENES); an output never"
+                    + " overwrites an input");
         }
         if (teacherCommand != null || opponentCommand != null) {
             if (teacherCommand != null && opponentCommand != null) {
@@ -321,9 +374,12 @@ final class EvaluateCommand implements Callable<Integer> {
         GameSetup.Team opponentTeam = opponentCommand != null
                 ? new GameSetup.Team("Amber", players, new ExternalTeam(opponentCommand))
                 : SimulateCommand.team(opponent, "Amber");
+        ExternalShadow shadow = shadowCommand == null ? null : new ExternalShadow(shadowCommand,
+                server == null ? ExternalShadow.Pacing.EACH_MESSAGE : ExternalShadow.Pacing.AS_THE_SERVER,
+                Duration.ofMillis(Math.round(serverWait * 1000)));
         return new Setup(teacherCommand != null ? "the command '" + teacherCommand + "'" : teacher, teacherTeam,
                 opponentTeam, teacherCommand != null ? Side.RIGHT : Side.LEFT, configs.get(0), top.global.registry(),
-                sceneFiles, trainGames, cycles, seedList, thinkSteps, dagger);
+                sceneFiles, trainGames, cycles, seedList, thinkSteps, dagger, shadow);
     }
 
     /** The embedded simulator, or with --server the live server. */
@@ -339,9 +395,6 @@ final class EvaluateCommand implements Callable<Integer> {
             address = ServerAddress.parse(server);
         } catch (IllegalArgumentException e) {
             throw new UsageException("--server: " + e.getMessage());
-        }
-        if (!(serverWait > 0) || serverWait > 86_400) {
-            throw new UsageException("--server-wait: give seconds between 0 and 86400, not " + serverWait);
         }
         if (serverLogs != null && !Files.isDirectory(serverLogs)) {
             throw new UsageException("--server-logs: " + serverLogs + " is not a directory");
@@ -400,6 +453,15 @@ final class EvaluateCommand implements Callable<Integer> {
         Evaluation.Plan plan = new Evaluation.Plan(setup.teacher(),
                 PacedBrain.pace(imitator.brains(), setup.thinkSteps()), setup.opponent(), setup.cycles(),
                 setup.seeds(), setup.side());
+        if (setup.shadow() != null) {
+            plan = plan.withShadow(setup.shadow());
+        }
+        about.put("shadow teacher", plan.shadow() == null ? "none"
+                : setup.shadow() != null ? "the command '" + setup.shadow().command() + "', a process per imitating"
+                        + " player fed its messages" + (setup.shadow().pacing() == ExternalShadow.Pacing.EACH_MESSAGE
+                                ? " (a (think) after each, its commands up to (done) answer it)"
+                                : " as the server sends them")
+                : setup.teacherName() + " in process");
         Evaluation.Results results;
         Comparison comparison;
         List<Dagger.Round> rounds = setup.dagger() == 0 ? List.of() : dagger(setup, plan, imitator, matching, arena, out);

@@ -2,21 +2,19 @@ package org.scenes.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
-import java.util.function.Function;
 import org.scenes.api.Grid;
+import org.scenes.app.convert.GameConversion;
 import org.scenes.internal.convert.ConversionReport;
+import org.scenes.internal.convert.DropReason;
 import org.scenes.internal.convert.GameLogConverter;
-import org.scenes.internal.convert.GameSceneFiles;
 import org.scenes.internal.gamelog.GameLogs;
-import org.scenes.options.GameLogOptions;
 
 /**
- * {@code scenes convert GAME.rcg [GAME.rcl]}: the options handed to core's {@link GameSceneFiles}
- * (the server's logs of a game to scenes for its players), and its summary printed.
+ * {@code scenes convert GAME.rcg [GAME.rcl]}: the options handed to the {@link GameConversion}
+ * service (the server's logs of a game to scenes for its players), and its summary printed.
  */
 final class GameLogConversion {
     private final GameLogs logs;
@@ -42,39 +40,26 @@ final class GameLogConversion {
     }
 
     int run(ConvertCommand options, Grid grid, PrintWriter out, PrintWriter err) throws IOException {
-        GameLogOptions choice = options.gameLogOptions;
-        choice.check();
-        Path single = options.output.file;
-        Path directory = options.output.directory;
-        if (directory != null) {
-            Files.createDirectories(directory);
+        GameConversion.Result result;
+        try {
+            result = GameConversion.run(new GameConversion.Request(logs, options.output.file,
+                    options.output.directory, options.settings(grid)));
+        } catch (GameConversion.OnePlayerPerFile e) {
+            throw new UsageException(e.getMessage());
         }
-        int[] players = {0};
-        Function<String, Path> target = key -> {
-            if (single != null && players[0]++ > 0) {
-                throw new UsageException("-o takes the scenes of one player (choose it with --team and --unum);"
-                        + " use --out-dir for several");
-            }
-            return single != null ? single : directory.resolve(key + ".json.gz");
-        };
-        long started = System.nanoTime();
-        GameSceneFiles.Written written = GameSceneFiles.write(new GameLogConverter(grid, options.pairingOptions.pairing(),
-                choice.fading(), choice.selected(), options.threads).commandsBeforeSee(choice.commandsFirst())
-                        .seePhase(choice.seePhase()).world(options.worldOptions.world())
-                        .keepUnanswered(options.unanswered == ConvertCommand.Unanswered.KEEP), grid,
-                logs, target);
-        if (written.result().players().isEmpty()) {
-            throw new UsageException(choice.noPlayer(logs.gameLog()));
+        GameLogConverter.Result conversion = result.written().result();
+        if (conversion.players().isEmpty()) {
+            throw new UsageException(options.gameLogOptions.noPlayer(logs.gameLog()));
         }
-        for (String warning : written.result().warnings()) {
+        for (String warning : conversion.warnings()) {
             err.println("scenes: warning: " + warning);
         }
-        if (written.scenes() == 0) {
+        if (result.written().scenes() == 0) {
             err.printf("scenes: error: no scenes from %s: no player sent a command after a see%n", logs.source());
             err.flush();
             return ExitCodes.FAILURE;
         }
-        summary(out, written.result(), written.files(), (System.nanoTime() - started) / 1e9);
+        summary(out, conversion, result.written().files(), result.seconds());
         err.flush();
         return ExitCodes.OK;
     }
@@ -89,7 +74,7 @@ final class GameLogConversion {
             ConversionReport r = player.report();
             total.add(r);
             out.printf(Locale.ROOT, "%-14s %8d %8d %8d %8d %8s%n", player.key(), r.sees(), r.scenes(),
-                    r.dropped(org.scenes.internal.convert.DropReason.NO_SEE), r.dropped(org.scenes.internal.convert.DropReason.NO_ACTION),
+                    r.dropped(DropReason.NO_SEE), r.dropped(DropReason.NO_ACTION),
                     r.perCycleLogs() > 0 ? Long.toString(r.cycles()) : "-");
         }
         out.printf(Locale.ROOT, "%-22s %d for %d players%n", "Scenes written", total.scenes(), result.players().size());

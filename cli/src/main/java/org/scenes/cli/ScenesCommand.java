@@ -1,6 +1,9 @@
 package org.scenes.cli;
 
+import java.io.IOException;
+import java.io.InputStream;
 import java.io.PrintWriter;
+import java.util.Properties;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginException;
 import org.scenes.api.PluginRegistry;
@@ -129,12 +132,21 @@ final class ScenesCommand implements Runnable {
         return text.toString();
     }
 
-    /** Version from the jar manifest, so it never drifts from the build. */
+    /**
+     * Version and git commit as the build wrote them (build-info.properties, a resource made by
+     * cli's buildInfo task), so they never drift from the build; "unknown" where the build had no git.
+     */
     static final class Version implements IVersionProvider {
         @Override
-        public String[] getVersion() {
-            String version = ScenesCommand.class.getPackage().getImplementationVersion();
-            return new String[] {"scenes " + (version == null ? "(development build)" : version),
+        public String[] getVersion() throws IOException {
+            Properties info = new Properties();
+            try (InputStream in = ScenesCommand.class.getResourceAsStream("build-info.properties")) {
+                if (in != null) {
+                    info.load(in);
+                }
+            }
+            return new String[] {"scenes " + info.getProperty("version", "(development build)")
+                    + ", commit " + info.getProperty("commit", "unknown"),
                     "Java " + System.getProperty("java.version") + " (" + System.getProperty("java.vendor") + ")"};
         }
     }

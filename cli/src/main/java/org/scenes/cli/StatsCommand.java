@@ -1,8 +1,12 @@
 package org.scenes.cli;
 
+import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.EnumMap;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
@@ -15,6 +19,8 @@ import org.scenes.api.ObjectKind;
 import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
+import org.scenes.app.convert.ArchiveConversion;
+import org.scenes.app.stats.ArchiveStats;
 import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileReader;
 import picocli.CommandLine.Command;
@@ -24,16 +30,26 @@ import picocli.CommandLine.Spec;
 
 /** {@code scenes stats}: what a scene file holds, counted per action and object kind. */
 @Command(name = "stats", mixinStandardHelpOptions = true,
-        description = "Count the scenes of a scene file per action, and their objects per kind and relation.")
+        description = {"Count the scenes of a scene file per action, and their objects per kind and relation.",
+                "Over an archive's conversion (the --out-dir of scenes convert ARCHIVE_DIR): games per team and the"
+                        + " action mix of each team's scenes."})
 final class StatsCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(paramLabel = "FILE", description = "A scene file (.json or .json.gz).")
+    @Parameters(paramLabel = "FILE", description = "A scene file (.json or .json.gz), or the directory of an"
+            + " archive's conversion.")
     Path file;
 
     @Override
-    public Integer call() {
+    public Integer call() throws IOException {
+        if (Files.isDirectory(file)) {
+            if (!ArchiveStats.isArchiveOutput(file)) {
+                throw new UsageException(file + ": a directory without " + ArchiveConversion.MANIFEST + "; give a scene"
+                        + " file, or the --out-dir of scenes convert ARCHIVE_DIR");
+            }
+            return archive();
+        }
         long scenes = 0;
         long objects = 0;
         int firstCycle = Integer.MAX_VALUE;
@@ -104,6 +120,33 @@ final class StatsCommand implements Callable<Integer> {
         out.println();
         out.printf(Locale.ROOT, "%-24s %8s%n", "Relation", "count");
         relations.forEach((relation, count) -> out.printf(Locale.ROOT, "  %-22s %8d%n", relation, count));
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    /** Per team: its games and the share of each primary action in its scenes. */
+    private int archive() throws IOException {
+        List<ArchiveStats.Team> teams = ArchiveStats.of(file, TerminalProgress.reporter());
+        List<ActionType> types = Arrays.stream(ActionType.values())
+                .filter(type -> teams.stream().anyMatch(team -> team.actions().containsKey(type))).toList();
+        PrintWriter out = spec.commandLine().getOut();
+        out.printf(Locale.ROOT, "%-24s %s (%d teams)%n", "Archive", file, teams.size());
+        out.println();
+        out.printf(Locale.ROOT, "%-20s %6s %5s %5s %5s %6s %10s", "Team", "games", "won", "drawn", "lost", "files",
+                "scenes");
+        for (ActionType type : types) {
+            out.printf(Locale.ROOT, " %8s", type.key() + " %");
+        }
+        out.println();
+        for (ArchiveStats.Team team : teams) {
+            out.printf(Locale.ROOT, "%-20s %6d %5d %5d %5d %6d %10d", team.name(), team.games(), team.wins(),
+                    team.draws(), team.losses(), team.files(), team.scenes());
+            for (ActionType type : types) {
+                long count = team.actions().getOrDefault(type, 0L);
+                out.printf(Locale.ROOT, " %8.1f", team.scenes() == 0 ? 0 : 100.0 * count / team.scenes());
+            }
+            out.println();
+        }
         out.flush();
         return ExitCodes.OK;
     }

@@ -40,17 +40,32 @@ final class TerminalProgress implements AutoCloseable {
 
     /** The services' progress on this terminal: a bar from each begin to its end; nothing without a terminal. */
     static Progress reporter() {
+        return reporter("", 1);
+    }
+
+    /** The same in {@code unit}s of {@code unitSize} steps ({@code " MB"}, 1 << 20). */
+    static Progress reporter(String unit, long unitSize) {
         return new Progress() {
             private volatile TerminalProgress bar = none();
 
             @Override
             public void begin(String task, long total) {
-                bar = total == 0 ? none() : start(task, total);
+                bar = total == 0 ? none() : start(task, total, unit, unitSize);
             }
 
             @Override
             public void step() {
                 bar.step();
+            }
+
+            @Override
+            public void stepBy(long steps) {
+                bar.stepBy(steps);
+            }
+
+            @Override
+            public void total(long total) {
+                bar.maxHint(total);
             }
 
             @Override

@@ -3,12 +3,17 @@ package org.scenes.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.axis.ValueAxis;
+import org.jfree.chart.labels.CategoryItemLabelGenerator;
 import org.jfree.chart.plot.CategoryPlot;
 import org.jfree.data.category.DefaultCategoryDataset;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 class ChartsTest {
     @Test
@@ -33,5 +38,52 @@ class ChartsTest {
         assertEquals(List.of("ball-goal k=1", "ball-goal k=5", "continuous k=1"), Charts.shortLabels(labels));
         assertEquals("w=1/1/1/1/0/1/1/1 vote", Charts.commonPart(labels));
         assertEquals(List.of("only one"), Charts.shortLabels(List.of("only one")));
+    }
+
+    @Test
+    void barLabelsCarryTheDigitsThatTellDifferentBarsApart() {
+        DefaultCategoryDataset data = new DefaultCategoryDataset();
+        data.addValue(0.9512, "accuracy", "a");
+        data.addValue(0.9534, "accuracy", "b");
+        data.addValue(0.9548, "accuracy", "c");
+        data.addValue(0.9548, "accuracy", "d");
+        JFreeChart chart = Charts.bars("t", "", "share", data, 1);
+        CategoryItemLabelGenerator labels = ((CategoryPlot) chart.getPlot()).getRenderer().getDefaultItemLabelGenerator();
+        assertEquals(List.of("0.951", "0.953", "0.955", "0.955"),
+                List.of(labels.generateLabel(data, 0, 0), labels.generateLabel(data, 0, 1),
+                        labels.generateLabel(data, 0, 2), labels.generateLabel(data, 0, 3)));
+        // figures that differ in the first two decimals keep two
+        DefaultCategoryDataset apart = new DefaultCategoryDataset();
+        apart.addValue(0.91, "accuracy", "a");
+        apart.addValue(0.95, "accuracy", "b");
+        CategoryItemLabelGenerator two = ((CategoryPlot) Charts.bars("t", "", "share", apart, 1).getPlot()).getRenderer()
+                .getDefaultItemLabelGenerator();
+        assertEquals("0.91", two.generateLabel(apart, 0, 0));
+    }
+
+    @Test
+    void aSweepChartOfManyBarsDrawsEveryBarsLabel(@TempDir Path directory) throws Exception {
+        // 4 groups of 6 bars, as the k-selectors sweep draws: JFreeChart drops a label its bar is too thin for
+        DefaultCategoryDataset data = new DefaultCategoryDataset();
+        for (int row = 0; row < 4; row++) {
+            for (int k = 0; k < 6; k++) {
+                data.addValue(0.88 + 0.0123 * row + 0.0017 * k, "k " + k, "selector " + row);
+            }
+        }
+        JFreeChart chart = Charts.bars("t", "rows: selector", "accuracy", data, Double.NaN);
+        Path svg = directory.resolve("chart.svg");
+        Charts.write(svg, chart, 900, Charts.height(4, 6));
+        String text = Files.readString(svg);
+        CategoryItemLabelGenerator labels = ((CategoryPlot) chart.getPlot()).getRenderer().getDefaultItemLabelGenerator();
+        List<String> missing = new ArrayList<>();
+        for (int series = 0; series < 6; series++) {
+            for (int row = 0; row < 4; row++) {
+                String label = labels.generateLabel(data, series, row);
+                if (!text.contains(">" + label + "<")) {
+                    missing.add(label);
+                }
+            }
+        }
+        assertEquals(List.of(), missing, "labels not drawn");
     }
 }

@@ -162,6 +162,18 @@ class EvaluateCommandsTest {
         assertEquals("scenes: --teacher-games: " + dir.resolve("none") + " is not a directory", bad.err().strip());
         assertEquals(ExitCodes.USAGE, bad.run("evaluate", "--teacher-games", teacher));
         assertTrue(bad.err().contains("give both"), bad.err());
+        // one imitator game against two of the teacher: the folds could not pair them
+        Path single = dir.resolve("single");
+        Files.createDirectories(single);
+        try (var files = Files.list(imitator)) {
+            for (Path log : files.filter(f -> f.getFileName().toString().startsWith("game1.")).toList()) {
+                Files.copy(log, single.resolve(log.getFileName()));
+            }
+        }
+        CommandRunner unequal = new CommandRunner();
+        assertEquals(ExitCodes.USAGE, unequal.run("evaluate", "--teacher-games", teacher, "--imitator-games", single));
+        assertTrue(unequal.err().contains("holds 2 game logs") && unequal.err().contains("give as many of each"),
+                unequal.err());
     }
 
     private static void record(Path directory, String teams, String names, int seed) {

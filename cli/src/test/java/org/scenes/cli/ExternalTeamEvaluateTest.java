@@ -15,17 +15,20 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.agent.server.GameSeries;
 import org.scenes.agent.server.ServerConfig;
 import org.scenes.agent.server.ServerResult;
+import org.scenes.testing.Processes;
 
 /**
  * {@code scenes evaluate --teacher-command}: the built-in teacher started as an external program
  * ({@code java ... org.scenes.cli.Main team}) on the project's server, measured from the server's
  * logs; commands that fail leave nothing running. Short games of two players a side.
  */
+@Tag("slow")
 class ExternalTeamEvaluateTest {
     @TempDir
     static Path shared;
@@ -74,7 +77,7 @@ class ExternalTeamEvaluateTest {
             String page = Files.readString(report.resolve("index.html"));
             assertTrue(page.contains("id=\"replay-teacher\"") && page.contains("id=\"replay-imitator\""));
         }
-        assertNothingLeft("7351");
+        Processes.assertNoneRunning("7351");
     }
 
     @Test
@@ -93,7 +96,7 @@ class ExternalTeamEvaluateTest {
             assertTrue(root.at("/figures/agreement/imitator/mean").isNumber(), root.get("figures").toString());
             assertTrue(root.at("/figures/executedDash/teacher/mean").asDouble() > 0.2);
         }
-        assertNothingLeft("7355");
+        Processes.assertNoneRunning("7355");
     }
 
     @Test
@@ -111,7 +114,7 @@ class ExternalTeamEvaluateTest {
             assertEquals(ExitCodes.FAILURE, evaluate(cli, server, "sleep 7352 & sleep 7353", "200", "2"));
             assertTrue(cli.err().contains("no player of the command 'sleep 7352 & sleep 7353' joined the game on"
                     + " 127.0.0.1:" + server.port + " within 2 s"), cli.err());
-            assertNothingLeft("sleep 735");
+            Processes.assertNoneRunning("sleep 735");
         }
         try (Server server = new Server(logs, 1, 3000)) {
             // the team plays a while of a long game, then its player processes are killed
@@ -125,13 +128,13 @@ class ExternalTeamEvaluateTest {
             while (server.time.get() < 50 && !status.isDone() && System.nanoTime() < deadline) {
                 Thread.sleep(20);
             }
-            List<ProcessHandle> team = processesWith("--seed 7354");
+            List<ProcessHandle> team = Processes.running("--seed 7354");
             assertTrue(server.time.get() >= 50 && !team.isEmpty(), "the game under way: cycle " + server.time.get()
                     + ", team " + team + ", " + cli.err());
             team.forEach(ProcessHandle::destroyForcibly);
             assertEquals(ExitCodes.FAILURE, status.get(60, TimeUnit.SECONDS), cli.err());
             assertTrue(cli.err().matches("(?s).*ended \\(exit \\d+\\) at cycle \\d+, before time over.*"), cli.err());
-            assertNothingLeft("7354");
+            Processes.assertNoneRunning("7354");
         }
         CommandRunner usage = new CommandRunner();
         assertEquals(ExitCodes.USAGE, usage.run("evaluate", "--server", "127.0.0.1:6000", "--teacher-command", "x",
@@ -149,36 +152,6 @@ class ExternalTeamEvaluateTest {
                 "--cycles", cycles, "--seeds", "1", "--metric", "ball-goal", scenes);
     }
 
-    private static void assertNothingLeft(String marker) throws InterruptedException, IOException {
-        // the group is ended before evaluate returns; give the kernel a moment to reap
-        Thread.sleep(300);
-        List<ProcessHandle> left = processesWith(marker);
-        assertTrue(left.isEmpty(), "still running: " + left);
-    }
-
-    /**
-     * The processes whose command line holds {@code marker}, read from /proc (ProcessHandle's
-     * command line is empty for a JVM with a class path as long as this test's).
-     */
-    private static List<ProcessHandle> processesWith(String marker) throws IOException {
-        List<ProcessHandle> found = new java.util.ArrayList<>();
-        try (var entries = Files.list(Path.of("/proc"))) {
-            for (Path entry : entries.filter(e -> e.getFileName().toString().matches("\\d+")).toList()) {
-                String line;
-                try {
-                    line = new String(Files.readAllBytes(entry.resolve("cmdline")), java.nio.charset.StandardCharsets.UTF_8)
-                            .replace('\0', ' ');
-                } catch (IOException gone) {
-                    continue;
-                }
-                long pid = Long.parseLong(entry.getFileName().toString());
-                if (line.contains(marker) && pid != ProcessHandle.current().pid()) {
-                    ProcessHandle.of(pid).ifPresent(found::add);
-                }
-            }
-        }
-        return found;
-    }
 
     /** The project's server on a free port, serving a series of games, stopped on close. */
     private static final class Server implements AutoCloseable {

@@ -1,13 +1,10 @@
 package org.scenes.cli;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.scenes.options.OptionsTable;
+import org.scenes.testing.GeneratedDocs;
 
 /** docs/options.md is the table picocli's model gives: it fails when an option changes and the table does not. */
 class OptionsTableTest {
@@ -20,14 +17,7 @@ class OptionsTableTest {
     @Test
     void theDocsTableIsTheOptionsOfEveryCommand() throws Exception {
         String generated = HEADER + OptionsTable.markdown(ScenesCommand.commandLine());
-        Path root = Path.of(System.getProperty("scenes.root", "."));
-        Path written = root.resolve("cli/build/options.md");
-        Files.createDirectories(written.getParent());
-        Files.writeString(written, generated, StandardCharsets.UTF_8);
-        Path docs = root.resolve("docs/options.md");
-        assertTrue(Files.exists(docs), docs + " is missing: copy " + written + " there");
-        assertEquals(generated, Files.readString(docs, StandardCharsets.UTF_8),
-                "docs/options.md is stale: copy " + written + " over it");
+        GeneratedDocs.assertCurrent(generated, "cli/build/options.md", "docs/options.md");
     }
 
     @Test

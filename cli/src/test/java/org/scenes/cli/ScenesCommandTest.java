@@ -4,6 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 
 class ScenesCommandTest {
@@ -44,5 +47,24 @@ class ScenesCommandTest {
     void helpListsTheSubcommands() {
         assertEquals(ExitCodes.OK, run("--help"));
         assertTrue(cli.out().contains("plugins"), cli.out());
+    }
+
+    @Test
+    void versionNamesTheReleaseAndTheCommitItWasBuiltFrom() throws IOException, InterruptedException {
+        assertEquals(ExitCodes.OK, run("--version"));
+        String first = cli.out().lines().findFirst().orElse("");
+        assertTrue(first.matches("scenes [0-9]+\\.[0-9]+\\.[0-9]+(-SNAPSHOT)?, commit ([0-9a-f]{40}|unknown)"), first);
+        // built from this clone: the commit is the clone's HEAD, wherever git can tell it
+        Process git;
+        try {
+            git = new ProcessBuilder("git", "-C", Path.of(System.getProperty("scenes.root", ".")).toString(),
+                    "rev-parse", "HEAD").redirectErrorStream(true).start();
+        } catch (IOException noGit) {
+            return;
+        }
+        String head = new String(git.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+        if (git.waitFor() == 0 && head.matches("[0-9a-f]{40}")) {
+            assertTrue(first.endsWith("commit " + head), first + " (HEAD " + head + ")");
+        }
     }
 }

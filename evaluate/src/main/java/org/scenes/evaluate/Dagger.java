@@ -22,7 +22,8 @@ import org.scenes.internal.match.KnowledgeBase;
  * the first round: the same seeds give the same games), and the scenes each imitating player
  * built, labelled with its shadow's replies to the same sees ({@link ShadowLabels}), join the
  * knowledge base, one sequence per player and game in cycle order, for the next round.
- * It needs the teacher in process: the shadow is the teacher's own brain.
+ * It needs the plan's shadow teacher: the teacher's own brain in process, or a program beside each
+ * imitating player ({@link ExternalShadow}).
  */
 public final class Dagger {
     /**
@@ -93,9 +94,9 @@ public final class Dagger {
      * {@code thinkSteps} steps ({@link PacedBrain}).
      */
     public Dagger(Evaluation.Plan plan, KnowledgeBase knowledge, Learner.Matching matching, int thinkSteps) {
-        if (plan.teacher().brains() instanceof ExternalTeam) {
-            throw new IllegalArgumentException("DAgger needs the teacher in process: the shadow is the teacher's own"
-                    + " brain");
+        if (plan.shadow() == null) {
+            throw new IllegalArgumentException("DAgger labels with a shadow teacher: the teacher in process, or an"
+                    + " external one beside each imitating player");
         }
         if (thinkSteps < 0) {
             throw new IllegalArgumentException("think steps must be 0 or more, not " + thinkSteps);
@@ -131,7 +132,7 @@ public final class Dagger {
                 teacher.add(Evaluation.play(PlayedGame.Role.TEACHER, plan.teacher(), null, plan, seed, arena, done,
                         progress));
             }
-            Labelling labelling = new Labelling(imitator.brains(), plan.teacher().brains(), thinkSteps);
+            Labelling labelling = new Labelling(imitator.brains(), plan.shadow(), thinkSteps);
             GameSetup.Team team = new GameSetup.Team(plan.teacher().name(), plan.teacher().players(),
                     labelling.imitator());
             imitating.add(Evaluation.play(PlayedGame.Role.IMITATOR, team, labelling.shadow(), plan, seed, arena, done,

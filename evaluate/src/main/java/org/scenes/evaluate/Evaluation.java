@@ -33,13 +33,27 @@ public final class Evaluation {
      * @param seeds one pair of games per seed
      * @param side the side teacher and imitator play: the right one when the teacher is an
      *             {@link ExternalTeam} (an external team connects second, after ours)
+     * @param shadow the shadow teacher beside each imitating player: the teacher's own brains, an
+     *               {@link ExternalShadow}, or null for none
      */
     public record Plan(GameSetup.Team teacher, BrainFactory imitator, GameSetup.Team opponent, int cycles,
-                       List<Long> seeds, Side side) {
+                       List<Long> seeds, Side side, BrainFactory shadow) {
         /** A plan with teacher and imitator on the left. */
         public Plan(GameSetup.Team teacher, BrainFactory imitator, GameSetup.Team opponent, int cycles,
                     List<Long> seeds) {
             this(teacher, imitator, opponent, cycles, seeds, Side.LEFT);
+        }
+
+        /** A plan whose shadow is the teacher in process, none for an {@link ExternalTeam}. */
+        public Plan(GameSetup.Team teacher, BrainFactory imitator, GameSetup.Team opponent, int cycles,
+                    List<Long> seeds, Side side) {
+            this(teacher, imitator, opponent, cycles, seeds, side,
+                    teacher.brains() instanceof ExternalTeam ? null : teacher.brains());
+        }
+
+        /** This plan with another shadow teacher (null for none). */
+        public Plan withShadow(BrainFactory newShadow) {
+            return new Plan(teacher, imitator, opponent, cycles, seeds, side, newShadow);
         }
 
         /** Whether a team of the plan is an {@link ExternalTeam}: its games are measured from the server's logs. */
@@ -87,16 +101,16 @@ public final class Evaluation {
         for (long seed : plan.seeds()) {
             teacherGames.add(play(PlayedGame.Role.TEACHER, plan.teacher(), null, plan, seed, arena, done, progress));
             GameSetup.Team imitating = new GameSetup.Team(plan.teacher().name(), plan.teacher().players(), plan.imitator());
-            // an external teacher has no shadow in process
-            BrainFactory shadow = plan.teacher().brains() instanceof ExternalTeam ? null : plan.teacher().brains();
-            imitatorGames.add(play(PlayedGame.Role.IMITATOR, imitating, shadow, plan, seed, arena, done, progress));
+            imitatorGames.add(play(PlayedGame.Role.IMITATOR, imitating, plan.shadow(), plan, seed, arena, done,
+                    progress));
         }
         return new Results(teacherGames, imitatorGames);
     }
 
     /**
      * One game with {@code team} driving on the plan's side and {@code shadow} (or none) beside each
-     * of its players; an external team is not traced.
+     * of its players; an external team is not traced. The plan's {@link ExternalShadow}'s programs
+     * are ended after the game.
      */
     static PlayedGame play(PlayedGame.Role role, GameSetup.Team team, BrainFactory shadow, Plan plan, long seed,
                                   Arena arena, long[] done, LongConsumer progress) throws IOException {
@@ -109,7 +123,17 @@ public final class Evaluation {
                 : new GameSetup(plan.opponent(), seated, plan.cycles(), seed, null);
         List<GameFrame> frames = new ArrayList<>();
         long before = done[0];
-        GameResult result = arena.play(setup, time -> progress.accept(before + time), frames::add);
+        GameResult result;
+        try {
+            if (shadow != null && plan.shadow() instanceof ExternalShadow external) {
+                external.startGame(team.name(), team.players());
+            }
+            result = arena.play(setup, time -> progress.accept(before + time), frames::add);
+        } finally {
+            if (plan.shadow() instanceof ExternalShadow external) {
+                external.endGame();
+            }
+        }
         done[0] = before + plan.cycles();
         progress.accept(done[0]);
         traces.forEach(PlayerTrace::close);
@@ -147,12 +171,15 @@ public final class Evaluation {
      */
     static BrainFactory traced(BrainFactory driver, BrainFactory shadow, long seed, List<PlayerTrace> traces) {
         return (team, random) -> {
-            PlayerTrace trace = new PlayerTrace(traces.size() + 1);
-            traces.add(trace);
-            Brain driving = driver.create(team, random);
-            // the shadow's own random source: it must not draw from the driver's
-            Brain shadowBrain = shadow == null ? null : shadow.create(team, new Random(seed * 31 + traces.size()));
-            return new TracedBrain(driving, shadowBrain, trace);
+            // on a live server each player's brain is made on its own thread: a player's driver and shadow together
+            synchronized (traces) {
+                PlayerTrace trace = new PlayerTrace(traces.size() + 1);
+                traces.add(trace);
+                Brain driving = driver.create(team, random);
+                // the shadow's own random source: it must not draw from the driver's
+                Brain shadowBrain = shadow == null ? null : shadow.create(team, new Random(seed * 31 + traces.size()));
+                return new TracedBrain(driving, shadowBrain, trace);
+            }
         };
     }
 

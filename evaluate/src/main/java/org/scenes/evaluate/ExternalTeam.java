@@ -43,7 +43,11 @@ public record ExternalTeam(String command) implements BrainFactory {
 
     /** Starts the command in a new session; its output goes to {@code output}. */
     public Running start(String host, int port, String team, int players, Path output) throws IOException {
-        String expanded = expand(host, port, team, players);
+        return launch(expand(host, port, team, players), output);
+    }
+
+    /** Starts an expanded command in a new session; its output goes to {@code output}. */
+    static Running launch(String expanded, Path output) throws IOException {
         ProcessBuilder builder = new ProcessBuilder("setsid", "bash", "-c", expanded).redirectErrorStream(true)
                 .redirectOutput(output.toFile());
         Process process;

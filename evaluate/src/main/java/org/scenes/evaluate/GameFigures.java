@@ -6,6 +6,7 @@ import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.PlayerState;
 import org.scenes.internal.protocol.CommandType;
 import org.scenes.internal.protocol.PlayerCommand;
+import org.scenes.internal.world.ServerDefaults;
 
 /**
  * The behaviour figures of one team in one game. Counted while the game is not paused
@@ -31,7 +32,7 @@ public record GameFigures(int dashes, int turns, int kicks, double answered, dou
     /** Answered sees of one action on one view that make a player stuck. */
     public static final int STUCK_RUN = 20;
     /** Player size plus ball size plus kickable margin, metres (server defaults). */
-    static final double KICKABLE = 1.085;
+    static final double KICKABLE = ServerDefaults.KICKABLE_AREA;
 
     public static GameFigures of(PlayedGame game) {
         int dashes = 0;
@@ -77,8 +78,7 @@ public record GameFigures(int dashes, int turns, int kicks, double answered, dou
                     compared++;
                     if (decision.shadow().type() == command.type()) {
                         agreedType++;
-                        if (command.type() != CommandType.TURN
-                                || Math.signum(command.first()) == Math.signum(decision.shadow().first())) {
+                        if (agree(command, decision.shadow())) {
                             agreed++;
                         }
                     }
@@ -98,6 +98,11 @@ public record GameFigures(int dashes, int turns, int kicks, double answered, dou
     public double[] mix() {
         double total = Math.max(1, dashes + turns + kicks);
         return new double[] {dashes / total, turns / total, kicks / total};
+    }
+
+    /** Whether two body commands agree: the same type, and for a turn the same way round. */
+    static boolean agree(PlayerCommand a, PlayerCommand b) {
+        return a.type() == b.type() && (a.type() != CommandType.TURN || Math.signum(a.first()) == Math.signum(b.first()));
     }
 
     private static double share(long part, long whole) {

@@ -40,12 +40,12 @@ public final class HtmlReport {
                 .append("table{border-collapse:collapse;margin:.5em 0 1.5em}td,th{border:1px solid #bbb;"
                         + "padding:.25em .6em;text-align:right}th:first-child,td:first-child{text-align:left}"
                         + ".met{color:#186018;font-weight:bold}.missed{color:#a01010;font-weight:bold}"
-                        + ".row{display:flex;flex-wrap:wrap;gap:1em}.note{color:#555;max-width:60em}\n")
+                        + ".row{display:flex;flex-wrap:wrap;gap:1em}.note{color:#555;max-width:60em}"
+                        + "table.about td{text-align:left;max-width:70em}table.about th{white-space:nowrap}"
+                        + ".path{white-space:nowrap}\n")
                 .append("</style>\n</head>\n<body>\n<h1>").append(ReplayPage.escape(title)).append("</h1>\n");
-        html.append("<table>\n");
-        about.forEach((key, value) -> html.append("<tr><th>").append(ReplayPage.escape(key)).append("</th><td>")
-                .append(ReplayPage.escape(value)).append("</td></tr>\n"));
-        html.append("</table>\n<h2>Targets</h2>\n<table>\n<tr><th>target</th><th>reached</th><th></th></tr>\n");
+        html.append(aboutTable(about));
+        html.append("<h2>Targets</h2>\n<table>\n<tr><th>target</th><th>reached</th><th></th></tr>\n");
         for (Comparison.Target target : comparison.targets()) {
             html.append("<tr><td>").append(ReplayPage.escape(target.what())).append("</td><td>")
                     .append(ReplayPage.escape(target.reached())).append("</td><td class=\"")
@@ -123,6 +123,36 @@ public final class HtmlReport {
             output.commit();
         }
         return file;
+    }
+
+    /**
+     * What was evaluated, one row per entry, the values left-aligned as text. A file path (a word
+     * holding a '/' or ending in an extension) breaks only after a '/', never inside a name (at
+     * its dashes), so a list of paths wraps between paths or directories.
+     */
+    private static final java.util.regex.Pattern FILE_WORD = java.util.regex.Pattern.compile("/|\\.[a-z]{2,4}\\b");
+
+    static String aboutTable(Map<String, String> about) {
+        StringBuilder html = new StringBuilder("<table class=\"about\">\n");
+        about.forEach((key, value) -> {
+            html.append("<tr><th>").append(ReplayPage.escape(key)).append("</th><td>");
+            String[] words = value.split(" ", -1);
+            for (int i = 0; i < words.length; i++) {
+                html.append(i > 0 ? " " : "").append(FILE_WORD.matcher(words[i]).find() ? path(words[i]) : ReplayPage.escape(words[i]));
+            }
+            html.append("</td></tr>\n");
+        });
+        return html.append("</table>\n").toString();
+    }
+
+    private static String path(String word) {
+        StringBuilder html = new StringBuilder();
+        String[] parts = word.split("/", -1);
+        for (int i = 0; i < parts.length; i++) {
+            html.append("<span class=\"path\">").append(ReplayPage.escape(parts[i]))
+                    .append(i + 1 < parts.length ? "/" : "").append("</span>").append(i + 1 < parts.length ? "<wbr>" : "");
+        }
+        return html.toString();
     }
 
     /**

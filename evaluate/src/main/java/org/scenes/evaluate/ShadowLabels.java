@@ -50,25 +50,47 @@ final class ShadowLabels {
         };
     }
 
-    /** The shadow teacher's brain, its sees numbered and its commands recorded as the replies to them. */
+    /**
+     * The shadow teacher's brain, its sees numbered and its commands recorded as the replies to
+     * them; a {@link LateShadow}'s late commands are the replies to the see before the message.
+     */
     Brain shadow(Brain brain) {
-        return new Brain() {
-            @Override
-            public void receive(String message, Consumer<String> send) {
-                if (message.startsWith("(see ")) {
-                    shadowSees++;
-                }
-                brain.receive(message, command -> {
+        return new Shadow(brain);
+    }
+
+    private final class Shadow implements Brain, LateShadow {
+        private final Brain brain;
+
+        Shadow(Brain brain) {
+            this.brain = brain;
+        }
+
+        @Override
+        public void receive(String message, Consumer<String> send) {
+            collect(send);
+            if (message.startsWith("(see ")) {
+                shadowSees++;
+            }
+            brain.receive(message, command -> {
+                reply(command);
+                send.accept(command);
+            });
+        }
+
+        @Override
+        public void collect(Consumer<String> send) {
+            if (brain instanceof LateShadow late) {
+                late.collect(command -> {
                     reply(command);
                     send.accept(command);
                 });
             }
+        }
 
-            @Override
-            public boolean repeatsKickOffMove() {
-                return brain.repeatsKickOffMove();
-            }
-        };
+        @Override
+        public boolean repeatsKickOffMove() {
+            return brain.repeatsKickOffMove();
+        }
     }
 
     /** A scene the imitator built, from its latest see. */

@@ -32,6 +32,9 @@ final class TracedBrain implements Brain {
 
     @Override
     public void receive(String message, Consumer<String> send) {
+        if (shadow instanceof LateShadow late) {
+            late.collect(this::shadowSent); // the reply to what came before this message
+        }
         if (message.startsWith("(see ")) {
             Message parsed = parser.parse(message);
             if (parsed instanceof See see) {
@@ -48,12 +51,14 @@ final class TracedBrain implements Brain {
             }
         });
         if (shadow != null) {
-            shadow.receive(message, command -> {
-                PlayerCommand body = body(command);
-                if (body != null) {
-                    trace.shadowSent(body);
-                }
-            });
+            shadow.receive(message, this::shadowSent);
+        }
+    }
+
+    private void shadowSent(String command) {
+        PlayerCommand body = body(command);
+        if (body != null) {
+            trace.shadowSent(body);
         }
     }
 

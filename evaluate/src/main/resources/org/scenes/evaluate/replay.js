@@ -1,5 +1,7 @@
-// Draws the frames of a game on a canvas: pitch, players (body direction, number), ball, score,
-// play mode; a cycle slider and play/pause. One player per .replay element, data in its JSON script.
+// Draws the frames of a game on a canvas: pitch, players in their team's colour (body direction,
+// number), ball, the player with the ball ringed, score, play mode; a cycle slider and play/pause.
+// Numbers of players on the same spot are set side by side, each tied to its player by a line.
+// One player per .replay element, data in its JSON script.
 (function () {
   "use strict";
   var PITCH_X = 52.5, PITCH_Y = 34, MARGIN = 5, GOAL = 7.01;
@@ -29,6 +31,7 @@
     var count = data.frames;
     var time = decode(data.time, count, 1);
     var ballX = decode(data.ball[0], count, 0.1), ballY = decode(data.ball[1], count, 0.1);
+    var owner = decode(data.owner, count, 1);
     var tracks = data.tracks.map(function (t) {
       return [decode(t[0], count, 0.1), decode(t[1], count, 0.1), decode(t[2], count, 1)];
     });
@@ -75,13 +78,76 @@
       });
     }
 
+    // dark text on a light team colour, white on a dark one
+    function textOn(colour) {
+      var r = parseInt(colour.substr(1, 2), 16), g = parseInt(colour.substr(3, 2), 16), b = parseInt(colour.substr(5, 2), 16);
+      return 0.299 * r + 0.587 * g + 0.114 * b > 140 ? "#000000" : "#ffffff";
+    }
+
+    function colourOf(i) {
+      return data.colours[data.players[i][0] === "l" ? 0 : 1];
+    }
+
+    function nameOf(i) {
+      return (data.players[i][0] === "l" ? data.left : data.right) + " " + data.players[i][1];
+    }
+
+    // Each number in a box above its player; a box that would cover one already placed moves
+    // right (then up) until it is clear, and a line ties it to its player.
+    function labels(index, holder) {
+      var placed = [];
+      var height = Math.round(1.8 * scale);
+      context.font = "bold " + Math.round(1.5 * scale) + "px sans-serif";
+      context.textAlign = "center";
+      context.textBaseline = "middle";
+      for (var i = 0; i < data.players.length; i++) {
+        var px = sx(tracks[i][0][index]), py = sy(tracks[i][1][index]);
+        var text = String(data.players[i][1]);
+        var width = context.measureText(text).width + 0.5 * scale;
+        var x = px, y = py - 2.2 * scale;
+        for (var tries = 0; tries < 40 && clash(placed, x, y, width, height); tries++) {
+          x += width + 2;
+          if (tries % 4 === 3) {
+            x = px;
+            y -= height + 2;
+          }
+        }
+        placed.push({x: x, y: y, width: width});
+        if (x !== px || y !== py - 2.2 * scale) {
+          context.strokeStyle = "#111111";
+          context.lineWidth = 1;
+          context.beginPath();
+          context.moveTo(px, py);
+          context.lineTo(x, y + height / 2);
+          context.stroke();
+        }
+        context.fillStyle = colourOf(i);
+        context.fillRect(x - width / 2, y - height / 2, width, height);
+        // the number of the player with the ball in a white frame, like its ring
+        context.strokeStyle = i === holder ? "#ffffff" : "#111111";
+        context.lineWidth = i === holder ? 2 : 1;
+        context.strokeRect(x - width / 2, y - height / 2, width, height);
+        context.fillStyle = textOn(colourOf(i));
+        context.fillText(text, x, y + 1);
+      }
+    }
+
+    function clash(placed, x, y, width, height) {
+      for (var k = 0; k < placed.length; k++) {
+        if (Math.abs(placed[k].x - x) < (placed[k].width + width) / 2 + 1 && Math.abs(placed[k].y - y) < height + 1) {
+          return true;
+        }
+      }
+      return false;
+    }
+
     function draw(index) {
       var event = data.events[eventOf[index]];
+      var holder = owner[index] - 1;
       pitch();
       for (var i = 0; i < data.players.length; i++) {
         var x = tracks[i][0][index], y = tracks[i][1][index], body = tracks[i][2][index] * Math.PI / 180;
-        var left = data.players[i][0] === "l";
-        context.fillStyle = left ? "#f2c200" : "#2f6fd6";
+        context.fillStyle = colourOf(i);
         context.beginPath();
         context.arc(sx(x), sy(y), 0.9 * scale, 0, 2 * Math.PI);
         context.fill();
@@ -92,21 +158,26 @@
         context.moveTo(sx(x), sy(y));
         context.lineTo(sx(x + 1.6 * Math.cos(body)), sy(y + 1.6 * Math.sin(body)));
         context.stroke();
-        context.fillStyle = "#000000";
-        context.font = Math.round(1.1 * scale) + "px sans-serif";
-        context.textAlign = "center";
-        context.textBaseline = "middle";
-        context.fillText(String(data.players[i][1]), sx(x), sy(y - 1.8));
+      }
+      if (holder >= 0) {
+        context.strokeStyle = "#ffffff";
+        context.lineWidth = 3;
+        context.beginPath();
+        context.arc(sx(tracks[holder][0][index]), sy(tracks[holder][1][index]), 1.5 * scale, 0, 2 * Math.PI);
+        context.stroke();
       }
       context.fillStyle = "#ffffff";
       context.strokeStyle = "#000000";
+      context.lineWidth = 1;
       context.beginPath();
       context.arc(sx(ballX[index]), sy(ballY[index]), 0.55 * scale, 0, 2 * Math.PI);
       context.fill();
       context.stroke();
+      labels(index, holder);
       status.textContent = "cycle " + time[index] + " \u00b7 " + data.modes[event[1]] + " \u00b7 "
           + data.left + " " + event[2] + " : " + event[3] + " " + data.right
-          + " \u00b7 ball " + ballX[index].toFixed(1) + " " + ballY[index].toFixed(1);
+          + " \u00b7 ball " + ballX[index].toFixed(1) + " " + ballY[index].toFixed(1)
+          + (holder >= 0 ? " with " + nameOf(holder) : " loose");
       slider.value = String(index);
     }
 

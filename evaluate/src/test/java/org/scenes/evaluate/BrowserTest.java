@@ -16,6 +16,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.agent.sim.GameSetup;
@@ -26,6 +27,7 @@ import org.scenes.agent.teacher.Teachers;
  * a console message, the script draws every replay, and a screenshot is taken
  * ({@code evaluate/build/screenshots/}, to look at). Skipped when Chromium is not installed.
  */
+@Tag("slow")
 class BrowserTest {
     private static String chromium;
 
@@ -56,7 +58,7 @@ class BrowserTest {
         String dom = open(page, "report.png");
         assertEquals(2, count(dom, "data-ready=\"true\""), "both replays drawn");
         assertTrue(dom.contains("<svg"), "the charts are inline SVG");
-        Matcher status = Pattern.compile("class=\"replay-status\">cycle 0 · before_kick_off · Teal 0 : 0 Amber · ball 0.0 0.0<")
+        Matcher status = Pattern.compile("class=\"replay-status\">cycle 0 · before_kick_off · Teal 0 : 0 Amber · ball 0.0 0.0 loose<")
                 .matcher(dom);
         assertTrue(status.find(), "the replay shows the first frame's cycle, mode and score");
     }
@@ -84,10 +86,24 @@ class BrowserTest {
             org.scenes.internal.gamelog.GameFrame frame = frames.get(index);
             String expected = String.format(java.util.Locale.ROOT, "cycle %d · %s · Teal %d : %d Amber · ball %.1f %.1f",
                     frame.time(), frame.playMode(), frame.scoreLeft(), frame.scoreRight(), frame.ball().x(),
-                    frame.ball().y()).replace("-0.0", "0.0");
+                    frame.ball().y()).replace("-0.0", "0.0") + holder(frame);
             assertTrue(open(moved, "replay-" + index + ".png").contains("class=\"replay-status\">" + expected + "<"),
                     "frame " + index + " shows " + expected);
         }
+    }
+
+    /** What the status line says of the ball's owner: the nearest player within kicking reach. */
+    private static String holder(org.scenes.internal.gamelog.GameFrame frame) {
+        String holder = " loose";
+        double nearest = ReplayPage.KICKABLE;
+        for (org.scenes.internal.gamelog.PlayerState p : frame.players()) {
+            double distance = Math.hypot(p.x() - frame.ball().x(), p.y() - frame.ball().y());
+            if (distance <= nearest) {
+                nearest = distance;
+                holder = " with " + (p.side() == org.scenes.api.Side.LEFT ? frame.leftTeam() : frame.rightTeam()) + " " + p.unum();
+            }
+        }
+        return holder;
     }
 
     /** Opens the page headless; fails on any console message; saves a screenshot; returns the DOM after the scripts ran. */

@@ -15,6 +15,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.agent.net.ClientOptions;
@@ -34,6 +35,7 @@ import org.scenes.internal.validate.MatchConfig;
  * (in this JVM, loopback, synchronous, a series of games) through the live runtime, compared
  * with the same evaluation in process.
  */
+@Tag("slow")
 class LiveEvaluationTest {
     private static final int CYCLES = 240;
     private static final List<Long> SEEDS = List.of(1L, 2L);

@@ -105,4 +105,41 @@ class ShadowLabelsTest {
         assertEquals(1, labelled.size(), "the scene before any see is dropped, the repeat on see 7 too");
         assertEquals(List.of(new Action(ActionType.DASH, 80, Double.NaN)), labelled.get(0).actions());
     }
+
+    /** A shadow whose replies come later, as a program's on a real-time server: each see's at the next collect. */
+    private static final class LateTeacher implements Brain, LateShadow {
+        private final List<String> pending = new ArrayList<>();
+
+        @Override
+        public void receive(String message, Consumer<String> send) {
+            if (message.startsWith("(see 1 ")) {
+                pending.add("(turn 30)");
+            } else if (message.startsWith("(see 2 ")) {
+                pending.add("(kick 100 0)");
+            }
+        }
+
+        @Override
+        public void collect(Consumer<String> send) {
+            pending.forEach(send);
+            pending.clear();
+        }
+    }
+
+    @Test
+    void aLateShadowsRepliesAnswerTheSeeBeforeTheMessageTheyCameBefore() {
+        ShadowLabels labels = new ShadowLabels();
+        PlayerTrace trace = new PlayerTrace(1);
+        // as Dagger and Evaluation wrap them: the labels' views inside the trace
+        Brain player = new TracedBrain(labels.imitator(imitator(labels)), labels.shadow(new LateTeacher()), trace);
+        for (String message : List.of("(init l 1 before_kick_off)", "(see 1 ((b) 10 0))", "(see 2 ((b) 9 0))",
+                "(sense_body 2)")) {
+            player.receive(message, command -> { });
+        }
+        List<Scene> labelled = labels.labelled();
+        assertEquals(List.of(1, 2), labelled.stream().map(Scene::cycle).toList());
+        assertEquals(new Action(ActionType.TURN, 30, Double.NaN), labelled.get(0).primaryAction());
+        assertEquals(new Action(ActionType.KICK, 100, 0), labelled.get(1).primaryAction());
+        assertEquals(List.of("turn", "kick"), trace.decisions().stream().map(d -> d.shadow().head()).toList());
+    }
 }

@@ -35,6 +35,9 @@ import picocli.CommandLine.Spec;
                 + " by name belongs to the game of its directory), written as OUT/GAME/<log name>.json.gz;"
                 + " or a game log (GAME.rcg, in those directories or given by name, told by content) with the"
                 + " command log beside it (GAME.rcl; .gz or not), written as OUT/GAME/TEAM_UNUM.json.gz.",
+                "One directory with game logs at any depth is an archive, as for 'scenes convert ARCHIVE_DIR': a task"
+                        + " per game, OUT/TEAM/GAME_UNUM.json.gz and OUT/manifest.csv, games converted by an earlier"
+                        + " run skipped.",
                 "Scene files appear only when complete; paths may be any Hadoop-compatible file system (hdfs://,"
                         + " s3a://, file://; no scheme: the local disk)."})
 final class ConvertCommand implements Callable<Integer> {
@@ -75,6 +78,9 @@ final class ConvertCommand implements Callable<Integer> {
                 new GameConversion.GameLogSettings(g.team(), g.unum(), g.fadingName(), g.fadingSeed(), g.commandsFirst(),
                         g.seePhase()), worldOptions.world());
         HadoopFiles hadoop = HadoopFiles.fromEnvironment();
+        if (ArchiveJob.isArchive(hadoop, inputs)) {
+            return ArchiveJob.run(this, settings, spec.commandLine().getOut(), spec.commandLine().getErr());
+        }
         List<GameConversion.Game> games = games(hadoop);
         for (GameConversion.Game game : games) {
             GameConversion.outputNames(game); // two logs of a game with one name fail before any task runs

@@ -9,6 +9,7 @@ import java.util.EnumMap;
 import java.util.List;
 import java.util.Locale;
 import org.scenes.api.Grid;
+import org.scenes.app.convert.ConvertSettings;
 import org.scenes.internal.convert.ConversionReport;
 import org.scenes.internal.convert.DropReason;
 import org.scenes.internal.convert.GameLogConverter;
@@ -54,6 +55,14 @@ final class GameConversion {
 
         Grid grid() {
             return new Grid(columns, minAngle, maxAngle, bounds);
+        }
+
+        /** The settings of the application layer's conversion, one thread a game (the games are the parallelism). */
+        ConvertSettings convertSettings() {
+            return new ConvertSettings(grid(), Pairing.fromKey(pairing), strict, world, false,
+                    Fading.named(gameLogs.fading(), gameLogs.fadingSeed()),
+                    GameLogConverter.only(gameLogs.team(), gameLogs.unum()), gameLogs.commandsFirst(),
+                    gameLogs.seePhase(), 1);
         }
     }
 

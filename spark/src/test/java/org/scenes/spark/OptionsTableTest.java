@@ -1,13 +1,10 @@
 package org.scenes.spark;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.scenes.options.OptionsTable;
+import org.scenes.testing.GeneratedDocs;
 
 /** docs/options-spark.md is the table picocli's model of scenes-spark gives: it fails when an option changes and the table does not. */
 class OptionsTableTest {
@@ -19,14 +16,7 @@ class OptionsTableTest {
     @Test
     void theDocsTableIsTheOptionsOfEveryJob() throws Exception {
         String generated = HEADER + OptionsTable.markdown(SparkCommand.commandLine());
-        Path root = Path.of(System.getProperty("scenes.root", "."));
-        Path written = root.resolve("spark/build/options-spark.md");
-        Files.createDirectories(written.getParent());
-        Files.writeString(written, generated, StandardCharsets.UTF_8);
-        Path docs = root.resolve("docs/options-spark.md");
-        assertTrue(Files.exists(docs), docs + " is missing: copy " + written + " there");
-        assertEquals(generated, Files.readString(docs, StandardCharsets.UTF_8),
-                "docs/options-spark.md is stale: copy " + written + " over it");
+        GeneratedDocs.assertCurrent(generated, "spark/build/options-spark.md", "docs/options-spark.md");
         assertTrue(generated.contains("| --protocol | leave-one-out\\|next | leave-one-out |"), "tune's protocol");
     }
 }

@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.testing.RequiresSharedData;
@@ -15,6 +16,7 @@ import org.scenes.testing.SharedData;
 
 /** On the shared Krislet recordings: the convert job's scene files and a sweep's rows equal the local commands'. */
 @RequiresSharedData
+@Tag("slow")
 class SharedRecordingsJobsTest {
     @TempDir
     Path work;

@@ -17,6 +17,7 @@ import java.util.List;
 import java.util.stream.Stream;
 import java.util.zip.GZIPInputStream;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.agent.sim.GameSetup;
@@ -28,6 +29,7 @@ import org.scenes.agent.teacher.Teachers;
  * simulated game ({@code scenes convert}), sweep tables ({@code scenes experiment}) and the tuned
  * configuration ({@code scenes tune}). Spark runs in local mode on two threads, as CI runs it.
  */
+@Tag("slow")
 class SparkJobsTest {
     @TempDir
     static Path work;

@@ -20,6 +20,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.internal.scene.SceneFile;
@@ -31,6 +32,7 @@ import org.scenes.internal.scene.SceneFileReader;
  * the complete new one, never a broken one, and no temporary file is left: none after SIGTERM,
  * and after SIGKILL (which runs no code) none once the next writer has run.
  */
+@Tag("slow")
 class InterruptedWriteTest {
     private static final int SEES = 150_000;
     @TempDir

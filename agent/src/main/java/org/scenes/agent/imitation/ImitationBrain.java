@@ -16,6 +16,7 @@ import org.scenes.api.Observer;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneTransform;
 import org.scenes.api.SeenObject;
+import org.scenes.api.World;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.protocol.InitReply;
@@ -25,8 +26,11 @@ import org.scenes.internal.protocol.Parameters;
 import org.scenes.internal.protocol.See;
 import org.scenes.internal.protocol.SenseBody;
 import org.scenes.internal.protocol.ServerNotice;
+import org.scenes.internal.target.Destinations;
 import org.scenes.internal.target.Replay;
+import org.scenes.internal.target.Steering;
 import org.scenes.internal.validate.Validator;
+import org.scenes.internal.world.ServerDefaults;
 import org.scenes.internal.world.WorldModel;
 
 /**
@@ -68,6 +72,15 @@ public final class ImitationBrain implements Brain {
     private final ImitationTeam roles;
     /** The team's knowledge until the init answer, then the player's own (its counterpart's or the team's). */
     private Recognizer recognizer;
+    /** where the recognizer's scenes' players ran; taken once per role, null unless replaying targets */
+    private Destinations destinations;
+    /** what this player's previous decisions chose: a chase, a turn (not undone at once) */
+    private final Steering steering = new Steering();
+    /** how the counterpart took its team's set plays */
+    private SetPlayKicks setPlayKicks = SetPlayKicks.NONE;
+    /** the play mode of the latest decision, and the cycle it began */
+    private String playMode = "";
+    private int playModeSince;
     /** The counterpart's recorded kick-off moves: empty without a counterpart or moves. */
     private List<Action> counterpartMoves = List.of();
     /** Whether the brain was made with roles; without them it places itself and moves as it always did. */
@@ -103,7 +116,7 @@ public final class ImitationBrain implements Brain {
     private Consumer<Scene> decided = scene -> { };
 
     /** Kickable distance of the default server: player_size 0.3 + ball_size 0.085 + kickable_margin 0.7. */
-    static final double DEFAULT_KICKABLE = 1.085;
+    static final double DEFAULT_KICKABLE = ServerDefaults.KICKABLE_AREA;
 
     /**
      * The loop guards.
@@ -164,6 +177,8 @@ public final class ImitationBrain implements Brain {
         this.roles = Objects.requireNonNull(roles, "roles");
         this.withRoles = withRoles;
         this.recognizer = roles.team();
+        // with roles, the role's own recognizer arrives with the init reply (takeRole)
+        this.destinations = withRoles ? null : destinationsOf(recognizer);
         this.selector = Objects.requireNonNull(selector, "selector");
         this.transforms = Objects.requireNonNull(transforms, "transforms");
         this.random = Objects.requireNonNull(random, "random");
@@ -227,12 +242,19 @@ public final class ImitationBrain implements Brain {
         }
     }
 
+    private Destinations destinationsOf(Recognizer from) {
+        return replay == Replay.TARGET ? Destinations.of(from.knowledge()) : null;
+    }
+
     /** Plays as the recorded player with this number: its knowledge (when asked) and its moves. */
     private void takeRole(int unum) {
         recognizer = roles.recognizer(unum);
+        destinations = destinationsOf(recognizer);
         perCycle = recognizer.splitsBySeeAge();
         ImitationTeam.Counterpart counterpart = roles.counterpart(unum);
         counterpartMoves = counterpart == null ? List.of() : counterpart.moves();
+        setPlayKicks = counterpart == null || counterpart.setPlayKicks() == null ? SetPlayKicks.NONE
+                : counterpart.setPlayKicks();
     }
 
     /**
@@ -273,6 +295,12 @@ public final class ImitationBrain implements Brain {
         if (guards.enabled() && action != null) {
             action = guard(action, seen.objects(), nearest);
         }
+        Scene setPlayKick = setPlayKickDue(seen);
+        if (setPlayKick != null) {
+            // the counterpart's own set-play kick, carried out from here like a neighbour's
+            nearest = List.of(new Neighbour(setPlayKick, -1, 0));
+            action = setPlayKick.primaryAction();
+        }
         if (action != null && action.type() == ActionType.MOVE && !counterpartMoves.isEmpty()
                 && !counterpartMoves.contains(action)) {
             // another player's kick-off spot: take the counterpart's own
@@ -281,7 +309,7 @@ public final class ImitationBrain implements Brain {
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
-        List<Action> actions = Validator.prediction(action, nearest, seen, replay, recognizer.knowledge());
+        List<Action> actions = Validator.prediction(action, nearest, seen, replay, destinations, steering);
         Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age, seen.world());
         actions.forEach(world::sent);
         history.addLast(made);
@@ -290,6 +318,25 @@ public final class ImitationBrain implements Brain {
             silent++;
         }
         return actions;
+    }
+
+    /**
+     * The counterpart's recorded kick when the player stands at the ball in a set play of its own
+     * team that has lasted as long as its counterpart waited at such set plays ({@link SetPlayKicks}).
+     */
+    private Scene setPlayKickDue(Scene seen) {
+        World own = seen.world();
+        if (own == null) {
+            return null;
+        }
+        if (!own.playMode().equals(playMode)) {
+            playMode = own.playMode();
+            playModeSince = seen.cycle();
+        }
+        boolean atBall = own.located() && own.ballKnown()
+                && Math.hypot(own.ballX() - own.x(), own.ballY() - own.y()) <= kickable;
+        return atBall && observer != null ? setPlayKicks.due(playMode, observer.side(), seen.cycle() - playModeSince)
+                : null;
     }
 
     private Action guard(Action chosen, List<SeenObject> seen, List<Neighbour> nearest) {

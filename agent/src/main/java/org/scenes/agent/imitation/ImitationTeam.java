@@ -59,8 +59,10 @@ public final class ImitationTeam {
      * @param recognizer the nearest scenes among its own, or null when the team's are used
      * @param moves the first {@code move} of each run of moves in its scenes, in order: where it
      *              placed itself before kick-offs (empty when its scenes hold none)
+     * @param setPlayKicks the kicks with which it took its team's set plays, and after how long
      */
-    record Counterpart(int unum, boolean goalie, Recognizer recognizer, List<Action> moves) {
+    record Counterpart(int unum, boolean goalie, Recognizer recognizer, List<Action> moves,
+                       SetPlayKicks setPlayKicks) {
         Counterpart {
             moves = List.copyOf(moves);
         }
@@ -93,6 +95,7 @@ public final class ImitationTeam {
         Map<Integer, List<Path>> byUnum = new TreeMap<>();
         Map<Integer, Boolean> goalies = new TreeMap<>();
         Map<Integer, List<Action>> moves = new TreeMap<>();
+        Map<Integer, SetPlayKicks> setPlayKicks = new TreeMap<>();
         for (Path file : files) {
             try (SceneFileReader reader = SceneFileReader.open(file)) {
                 SceneSource source = reader.header().source();
@@ -100,8 +103,11 @@ public final class ImitationTeam {
                 if (unum > 0) {
                     byUnum.computeIfAbsent(unum, u -> new ArrayList<>()).add(file);
                     goalies.merge(unum, source.goalie(), Boolean::logicalOr);
-                    // the recorded moves, before any transform (a mirror would add moves never sent)
-                    moves.computeIfAbsent(unum, u -> new ArrayList<>()).addAll(kickOffMoves(() -> reader));
+                    // the recorded moves and kicks, before any transform (a mirror would add moves never sent)
+                    List<Scene> recorded = new ArrayList<>();
+                    reader.forEachRemaining(recorded::add);
+                    moves.computeIfAbsent(unum, u -> new ArrayList<>()).addAll(kickOffMoves(recorded));
+                    setPlayKicks.merge(unum, SetPlayKicks.of(recorded), SetPlayKicks::with);
                 }
             }
         }
@@ -111,7 +117,8 @@ public final class ImitationTeam {
             int unum = entry.getKey();
             Recognizer recognizer = knowledge == Knowledge.COUNTERPART
                     ? recognizers.apply(KnowledgeBase.load(entry.getValue(), transforms)) : null;
-            counterparts.put(unum, new Counterpart(unum, goalies.get(unum), recognizer, moves.get(unum)));
+            counterparts.put(unum, new Counterpart(unum, goalies.get(unum), recognizer, moves.get(unum),
+                    setPlayKicks.get(unum)));
         }
         return new ImitationTeam(team, counterparts, knowledge);
     }

@@ -1,5 +1,17 @@
 package org.scenes.agent.sim;
 
+import static org.scenes.internal.world.ServerDefaults.BALL_ACCEL_MAX;
+import static org.scenes.internal.world.ServerDefaults.BALL_DECAY;
+import static org.scenes.internal.world.ServerDefaults.BALL_SIZE;
+import static org.scenes.internal.world.ServerDefaults.INERTIA_MOMENT;
+import static org.scenes.internal.world.ServerDefaults.KICKABLE_MARGIN;
+import static org.scenes.internal.world.ServerDefaults.KICK_POWER_RATE;
+import static org.scenes.internal.world.ServerDefaults.MAX_MOMENT;
+import static org.scenes.internal.world.ServerDefaults.MAX_NECK_ANGLE;
+import static org.scenes.internal.world.ServerDefaults.MAX_POWER;
+import static org.scenes.internal.world.ServerDefaults.PLAYER_DECAY;
+import static org.scenes.internal.world.ServerDefaults.PLAYER_SIZE;
+
 /**
  * The server parameters the simulator uses, with the values of the recorded version 9 games
  * (docs/simulator.md lists them). One instance, {@link #DEFAULT}; the text sent to clients is
@@ -16,9 +28,10 @@ record ServerParams(double ballAccelMax, double ballDecay, double ballRand, doub
                     double visibleAngle, double visibleDistance, int sendStep, int simulatorStep,
                     int senseBodyStep) {
 
-    static final ServerParams DEFAULT = new ServerParams(2.7, 0.94, 0.05, 0.085, 3, 0.006, 0.005, 0.3, 0.01, 0.6,
-            0.6, 14.02, 5, 0.027, 0.1, 0.7, 180, -180, 90, -90, 100, -100, 1, 0.4, 0.1, 0.3, 1.05, 0.1, 0.01,
-            0.002, 0.3, 0.5, 45, 8000, 90, 3, 150, 100, 100);
+    static final ServerParams DEFAULT = new ServerParams(BALL_ACCEL_MAX, BALL_DECAY, 0.05, BALL_SIZE, 3, 0.006,
+            0.005, 0.3, 0.01, 0.6, 0.6, 14.02, INERTIA_MOMENT, KICK_POWER_RATE, 0.1, KICKABLE_MARGIN, MAX_MOMENT,
+            -MAX_MOMENT, MAX_NECK_ANGLE, -MAX_NECK_ANGLE, MAX_POWER, -MAX_POWER, 1, PLAYER_DECAY, 0.1, PLAYER_SIZE,
+            1.05, 0.1, 0.01, 0.002, 0.3, 0.5, 45, 8000, 90, 3, 150, 100, 100);
 
     /** Distances at which a seen player's uniform number and team fade (server defaults). */
     static final double UNUM_FAR_LENGTH = 20;

@@ -100,6 +100,33 @@ public final class MessageParser {
         }
     }
 
+    /**
+     * The text of each message of a datagram that holds several (librcsc's {@code (turn 0)(done)}:
+     * {@code (turn 0)} and {@code (done)}), split where {@link #parseAll(byte[], int, int, Consumer)}
+     * finds their ends; up to a malformed one, which ends the list (it is not thrown).
+     */
+    public List<String> texts(CharSequence text) {
+        byte[] bytes = text.toString().getBytes(StandardCharsets.UTF_8);
+        List<String> texts = new ArrayList<>(4);
+        int at = 0;
+        while (true) {
+            while (at < bytes.length && (bytes[at] == 0 || isSpace(bytes[at]))) {
+                at++;
+            }
+            if (at >= bytes.length) {
+                return texts;
+            }
+            origin = 0;
+            try {
+                parseOne(bytes, at, bytes.length - at, true);
+            } catch (ProtocolException e) {
+                return texts;
+            }
+            texts.add(new String(bytes, at, end - at, StandardCharsets.UTF_8));
+            at = end;
+        }
+    }
+
     /** {@link #parseAll(byte[], int, int, Consumer)} on text, collecting the messages. */
     public List<Message> parseAll(CharSequence text) {
         byte[] bytes = text.toString().getBytes(StandardCharsets.UTF_8);

@@ -11,6 +11,7 @@ import org.scenes.api.Observer;
 import org.scenes.api.Scene;
 import org.scenes.api.World;
 import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.world.ServerDefaults;
 
 /**
  * Where each stored scene's player went in the next {@link #AHEAD} cycles, read from the same
@@ -28,8 +29,14 @@ public final class Destinations {
     private static final int SLACK = 5;
     private static final Map<KnowledgeBase, Destinations> CACHE = new WeakHashMap<>();
 
+    /**
+     * A player that reached its ball within this many cycles was running to the ball (an
+     * interception takes longer than the destination's second when the ball is far).
+     */
+    static final int CHASE = 30;
+
     /** A player this near its ball at some cycle of the run reached the ball: a run to the ball (kicking reach). */
-    static final double AT_BALL = 1.085;
+    static final double AT_BALL = ServerDefaults.KICKABLE_AREA;
 
     /** A neighbour that stood this near the deciding player lends its end point, a farther one its displacement. */
     static final double NEAR = 10;
@@ -92,33 +99,45 @@ public final class Destinations {
                 continue;
             }
             boolean reachedBall = false;
+            boolean placed = false;
             for (int j = i + 1; j < n; j++) {
                 int gap = cycle[j] - cycle[i];
-                if (gap < 0 || gap > AHEAD + SLACK || !Objects.equals(observer[j], observer[i])
+                if (gap < 0 || gap > (placed ? CHASE : AHEAD) + SLACK || !Objects.equals(observer[j], observer[i])
                         || !mode[i].equals(mode[j]) || moved[j]) {
                     break;
                 }
                 reachedBall |= Math.hypot(ballX[j] - atX[j], ballY[j] - atY[j]) <= AT_BALL;
-                if (gap >= AHEAD) {
+                if (!placed && gap >= AHEAD) {
                     x[i] = atX[j];
                     y[i] = atY[j];
-                    toBall[i] = reachedBall;
+                    placed = true;
+                }
+                if (placed && (reachedBall || gap >= CHASE)) {
                     break;
                 }
             }
+            toBall[i] = placed && reachedBall;
         }
         return new Destinations(atX, atY, x, y, toBall);
     }
 
     /**
      * Where to run for these neighbours, from {@code own}'s position: when most of those with a
-     * destination ran to the ball, {@code ball} (the deciding player's own ball, null when it does
-     * not know one); else the mean of their end points (those within {@link #NEAR} metres) and of
+     * destination ran to the ball (reached it within {@link #CHASE} cycles), {@code ball} (where
+     * the deciding player can reach its own ball, null when it does not know one); else the mean of their end points (those within {@link #NEAR} metres) and of
      * their displacements from its position (the others); null when none has one or the player's
      * position is unknown. (A neighbour found as a transform's image, such as a mirrored scene,
      * counts as its stored scene.)
      */
     public double[] target(List<Neighbour> nearest, World own, double[] ball) {
+        return target(nearest, own, ball, new Steering());
+    }
+
+    /**
+     * The same for a player that remembers its previous choice: a chase goes on while at least
+     * a third of the neighbours ran to the ball ({@link Steering}).
+     */
+    public double[] target(List<Neighbour> nearest, World own, double[] ball, Steering steering) {
         if (own == null || !own.located()) {
             return null;
         }
@@ -141,7 +160,7 @@ public final class Destinations {
         if (count == 0) {
             return null;
         }
-        if (2 * ballRuns > count && ball != null) {
+        if (steering.chase(ballRuns / (double) count) && ball != null) {
             return ball;
         }
         return new double[] {sumX / count, sumY / count};

@@ -1,6 +1,17 @@
 package org.scenes.internal.target;
 
 import static org.scenes.internal.vision.VisionNumbers.normalize;
+import static org.scenes.internal.world.ServerDefaults.BALL_ACCEL_MAX;
+import static org.scenes.internal.world.ServerDefaults.BALL_DECAY;
+import static org.scenes.internal.world.ServerDefaults.BALL_SIZE;
+import static org.scenes.internal.world.ServerDefaults.INERTIA_MOMENT;
+import static org.scenes.internal.world.ServerDefaults.KICKABLE_AREA;
+import static org.scenes.internal.world.ServerDefaults.KICKABLE_MARGIN;
+import static org.scenes.internal.world.ServerDefaults.KICK_POWER_RATE;
+import static org.scenes.internal.world.ServerDefaults.MAX_MOMENT;
+import static org.scenes.internal.world.ServerDefaults.MAX_NECK_ANGLE;
+import static org.scenes.internal.world.ServerDefaults.MAX_POWER;
+import static org.scenes.internal.world.ServerDefaults.PLAYER_SIZE;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -28,22 +39,19 @@ import org.scenes.api.World;
  * either team targets the same field direction for both.
  */
 public final class Targets {
-    static final double INERTIA_MOMENT = 5;
-    static final double KICK_POWER_RATE = 0.027;
-    static final double KICKABLE_MARGIN = 0.7;
-    static final double PLAYER_SIZE = 0.3;
-    static final double BALL_SIZE = 0.085;
-    static final double BALL_ACCEL_MAX = 2.7;
-    static final double MAX_POWER = 100;
-    static final double MAX_MOMENT = 180;
-    static final double MAX_NECK = 90;
     /** A dash is sent as recorded when the body is this close to the recorded dash's field direction. */
     static final double DASH_TOLERANCE = 45;
+    /**
+     * A run to a point dashes when the body is this close to the point's bearing, else turns first:
+     * a dash 45 degrees off closes only 0.7 of its length, and a runner after a rolling ball falls behind.
+     */
+    static final double RUN_TOLERANCE = 15;
     /** A direction more than this far off is behind: turned to one way only ({@link #turnAngle}). */
     static final double BEHIND = 150;
-    /** Cycles ahead a run to the ball aims at the ball's course. */
-    static final int BALL_LEAD = 3;
-    static final double BALL_DECAY = 0.94;
+    /** Cycles of the ball's course searched for an interception point. */
+    static final int INTERCEPT_HORIZON = 50;
+    /** Metres a player runs per cycle at full power: the default type's dash model at its steady speed. */
+    static final double RUN_SPEED = 1.0;
     /** A destination this near is reached: the player then does what the chosen scene's player did. */
     static final double ARRIVED = 1;
     /** A turn of the body by less than this many degrees is taken as facing its target already. */
@@ -159,17 +167,29 @@ public final class Targets {
     }
 
     /**
-     * Where the player's ball will be in {@link #BALL_LEAD} cycles (the server's ball decay), or
-     * null when its world model knows no ball or no position.
+     * Where the player can first reach its ball's course (the server's ball decay; a run at the
+     * default player's top speed after one turn), the ball's resting point when it cannot within
+     * {@link #INTERCEPT_HORIZON} cycles; null when its world model knows no ball or no position.
      */
-    public static double[] ballAhead(World world) {
+    public static double[] intercept(World world) {
         if (world == null || !world.located() || !world.ballKnown()) {
             return null;
         }
         double vx = velocity(world.ballVx());
         double vy = velocity(world.ballVy());
-        double travelled = (1 - Math.pow(BALL_DECAY, BALL_LEAD)) / (1 - BALL_DECAY);
-        return new double[] {world.ballX() + vx * travelled, world.ballY() + vy * travelled};
+        double bx = world.ballX();
+        double by = world.ballY();
+        for (int t = 0; t < INTERCEPT_HORIZON; t++) {
+            double reach = Math.max(0, t - 1) * RUN_SPEED + KICKABLE_AREA;
+            if (Math.hypot(bx - world.x(), by - world.y()) <= reach) {
+                return new double[] {bx, by};
+            }
+            bx += vx;
+            by += vy;
+            vx *= BALL_DECAY;
+            vy *= BALL_DECAY;
+        }
+        return new double[] {bx, by};
     }
 
     private static double runPower(Action action, double power) {
@@ -181,7 +201,7 @@ public final class Targets {
 
     /**
      * Steers towards {@code destination}: a turn when the body is off its bearing by more than the
-     * larger of {@link #DASH_TOLERANCE} and the angle that misses it by {@link #ARRIVED} metres,
+     * larger of {@link #RUN_TOLERANCE} and the angle that misses it by {@link #ARRIVED} metres,
      * else a dash at {@code power}; {@code arrived} once within {@link #ARRIVED} metres.
      */
     static Action goTo(double[] destination, World own, double power, Action arrived) {
@@ -192,7 +212,7 @@ public final class Targets {
             return arrived;
         }
         double off = normalize(bearing(dx, dy) - own.body());
-        double tolerance = Math.max(DASH_TOLERANCE, Math.toDegrees(Math.asin(Math.min(1, ARRIVED / distance))));
+        double tolerance = Math.max(RUN_TOLERANCE, Math.toDegrees(Math.asin(Math.min(1, ARRIVED / distance))));
         if (Math.abs(off) > tolerance) {
             return Action.turn(clamp(turnAngle(off) * (1 + INERTIA_MOMENT * speed(own)), MAX_MOMENT));
         }
@@ -250,9 +270,9 @@ public final class Targets {
         double donorNeck = Double.isNaN(donor.neck()) ? 0 : donor.neck();
         double ownNeck = Double.isNaN(own.neck()) ? 0 : own.neck();
         // the ball's bearings after this cycle's body turns
-        double looked = anchored(donorBody + clamp(donorNeck + action.first(), MAX_NECK), donor,
+        double looked = anchored(donorBody + clamp(donorNeck + action.first(), MAX_NECK_ANGLE), donor,
                 donorBall - (donorBody - donor.body()), own, ownBall - (ownBody - own.body()));
-        double neck = clamp(normalize(looked - ownBody), MAX_NECK);
+        double neck = clamp(normalize(looked - ownBody), MAX_NECK_ANGLE);
         return Action.turnNeck(neck - ownNeck);
     }
 

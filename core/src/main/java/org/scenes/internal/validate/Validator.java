@@ -16,6 +16,7 @@ import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.target.Destinations;
 import org.scenes.internal.target.Replay;
+import org.scenes.internal.target.Steering;
 import org.scenes.internal.target.Targets;
 
 /**
@@ -48,13 +49,14 @@ public final class Validator {
         List<Action>[] predicted = new List[n];
         long[] nanos = new long[n];
         ThreadLocal<ActionSelector> selector = ThreadLocal.withInitial(selectors);
+        Destinations destinations = replay == Replay.TARGET ? Destinations.of(recognizer.knowledge()) : null;
         IntStream indices = IntStream.range(0, n);
         (parallel ? indices.parallel() : indices).forEach(i -> {
             long start = System.nanoTime();
             try {
                 List<Neighbour> nearest = recognizer.nearest(test.get(i));
                 predicted[i] = prediction(selector.get().select(nearest, queryRandom(seed, i)), nearest, test.get(i),
-                        replay, recognizer.knowledge());
+                        replay, destinations);
             } catch (RuntimeException e) {
                 // a plugin's or script's error, located by the query it failed on
                 throw new QueryFailure(i, test.get(i).cycle(), e);
@@ -78,33 +80,59 @@ public final class Validator {
     }
 
     /**
-     * The same; with the knowledge base the neighbours come from, a run (dash or turn) steers to
-     * the neighbours' mean destination ({@link Destinations}) at their mean dash power.
+     * The same; with the destinations of the knowledge base the neighbours come from (taken once
+     * per run, not per query), a run (dash or turn) steers to the neighbours' mean destination at
+     * their mean dash power.
      */
     public static List<Action> prediction(Action selected, List<Neighbour> nearest, Scene query, Replay replay,
-                                          KnowledgeBase knowledge) {
+                                          Destinations destinations) {
+        return prediction(selected, nearest, query, replay, destinations, new Steering());
+    }
+
+    /**
+     * The same for a player that remembers what its previous decisions chose ({@link Steering}),
+     * as a playing agent does from one cycle to the next.
+     */
+    public static List<Action> prediction(Action selected, List<Neighbour> nearest, Scene query, Replay replay,
+                                          Destinations destinations, Steering steering) {
         List<Action> actions = withNeck(selected, nearest);
         if (replay == Replay.RAW || actions.isEmpty()) {
             return actions;
         }
-        double[] destination = knowledge == null ? null
-                : Destinations.of(knowledge).target(nearest, query.world(), Targets.ballAhead(query.world()));
+        double[] destination = destinations == null ? null
+                : destinations.target(nearest, query.world(), Targets.intercept(query.world()), steering);
         double power = meanDashPower(nearest);
         List<Action> reached = Targets.reach(actions, donor(actions.get(0), nearest), query, destination, power);
-        if (!Targets.alreadyReached(reached, query)) {
+        List<Action> chosen = steered(reached, nearest, query, destination, power, steering);
+        steering.sent(chosen.isEmpty() ? null : chosen.get(0));
+        return chosen;
+    }
+
+    /**
+     * {@code reached}, unless its turn achieves nothing (the body faces its target already) or
+     * turns back against the player's previous turn ({@link Steering}): then the target of the
+     * nearest neighbour that does neither; failing that, the nearest that achieves something.
+     */
+    private static List<Action> steered(List<Action> reached, List<Neighbour> nearest, Scene query,
+                                        double[] destination, double power, Steering steering) {
+        if (!Targets.alreadyReached(reached, query) && !steering.reverses(reached.get(0))) {
             return reached;
         }
+        List<Action> firstUseful = Targets.alreadyReached(reached, query) ? null : reached;
         for (Neighbour neighbour : nearest) {
             Action other = neighbour.scene().primaryAction();
             if (other != null) {
                 List<Action> instead = Targets.reach(withNeck(other, List.of(neighbour)), neighbour.scene(), query,
                         destination, power);
                 if (!Targets.alreadyReached(instead, query)) {
-                    return instead;
+                    if (!steering.reverses(instead.get(0))) {
+                        return instead;
+                    }
+                    firstUseful = firstUseful == null ? instead : firstUseful;
                 }
             }
         }
-        return reached;
+        return firstUseful == null ? reached : firstUseful;
     }
 
     /** The mean power of the neighbours' dashes, NaN when none dashed. */

@@ -40,9 +40,6 @@ import org.scenes.internal.protocol.VisualObject;
  * what only carries a value between sees. Not thread-safe.
  */
 public final class WorldModel {
-    static final double PLAYER_DECAY = 0.4;
-    static final double BALL_DECAY = 0.94;
-    static final double INERTIA_MOMENT = 5;
     /** How far from the centre the server lets a player go: half the pitch plus the 5 m margin. */
     static final double MAX_X = 57.5;
     static final double MAX_Y = 39;
@@ -145,7 +142,7 @@ public final class WorldModel {
             int counted = body.counts().turn();
             if (counted >= 0 && turns >= 0 && counted > turns && !Double.isNaN(turnMoment)) {
                 // the server turns by moment / (1 + inertia * speed), the speed before the step
-                bodyDirection += Math.max(-180, Math.min(180, turnMoment)) / (1 + INERTIA_MOMENT * speed);
+                bodyDirection += Math.max(-180, Math.min(180, turnMoment)) / (1 + ServerDefaults.INERTIA_MOMENT * speed);
             }
             head = Localisation.normalize(bodyDirection + newNeck);
         }
@@ -161,14 +158,14 @@ public final class WorldModel {
             if (!Double.isNaN(x) && !Double.isNaN(vx)) {
                 // the reported velocity is the step's movement after decay; the server keeps
                 // players within the pitch's margin (5 m beyond its lines)
-                x = Math.max(-MAX_X, Math.min(MAX_X, x + vx / PLAYER_DECAY));
-                y = Math.max(-MAX_Y, Math.min(MAX_Y, y + vy / PLAYER_DECAY));
+                x = Math.max(-MAX_X, Math.min(MAX_X, x + vx / ServerDefaults.PLAYER_DECAY));
+                y = Math.max(-MAX_Y, Math.min(MAX_Y, y + vy / ServerDefaults.PLAYER_DECAY));
             }
             for (int i = 0; i < elapsed && !Double.isNaN(ballVx); i++) {
                 ballX += ballVx;
                 ballY += ballVy;
-                ballVx *= BALL_DECAY;
-                ballVy *= BALL_DECAY;
+                ballVx *= ServerDefaults.BALL_DECAY;
+                ballVy *= ServerDefaults.BALL_DECAY;
             }
         }
     }

@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -28,6 +29,7 @@ import org.scenes.testing.SharedData;
  * through the converter into a scene file. Loading the log or the scenes whole would fail
  * with OutOfMemoryError.
  */
+@Tag("slow")
 class LargeLogMemoryTest {
     static final long LOG_BYTES = 100L << 20;
 

@@ -11,6 +11,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Random;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.scenes.api.Action;
 import org.scenes.api.Grid;
@@ -31,6 +32,7 @@ import org.scenes.testing.SharedData;
  * duplicates, and on real Krislet scenes; also with the nearest player of each kind weighed
  * ({@code nearest-players}).
  */
+@Tag("slow")
 class LowDimensionalIndexTest {
     private static final ObjectWeights BALL_GOAL = ObjectWeights.parse("ball=1,goal=0.05");
     /** Ball, goals and the nearest teammate and opponent (with {@code nearest-players}). */

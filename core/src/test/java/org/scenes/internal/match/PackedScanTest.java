@@ -12,6 +12,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.scenes.api.Grid;
 import org.scenes.api.ObjectWeights;
@@ -26,6 +27,7 @@ import org.scenes.testing.SharedData;
  * The packed object-set scan finds the same neighbours at the same distances as an exhaustive
  * scan through {@link SceneMetric#distance}, on real Krislet scenes, for each space and matching.
  */
+@Tag("slow")
 class PackedScanTest {
     private static List<Scene> stored;
     private static List<Scene> queries;

@@ -25,6 +25,14 @@ class DatagramParsingTest {
     }
 
     @Test
+    void aDatagramIsSplitIntoItsMessagesTexts() {
+        assertEquals(List.of("(turn 0)", "(turn_neck 0)", "(done)"), parser.texts("(turn 0)(turn_neck 0)(done)"));
+        assertEquals(List.of("(dash 76 60)", "(say \"a (b) c\")"), parser.texts(" (dash 76 60) (say \"a (b) c\")\0\0"));
+        assertEquals(List.of("(dash 10)"), parser.texts("(dash 10)(turn 3"), "up to a malformed one");
+        assertEquals(List.of(), parser.texts(""));
+    }
+
+    @Test
     void aCyclesCommandsInOneDatagramAreParsedInOrder() {
         List<Message> messages = parser.parseAll("(turn 0)(turn_neck 0)(done)");
         assertEquals(List.of(CommandType.TURN, CommandType.TURN_NECK, CommandType.DONE), types(messages));

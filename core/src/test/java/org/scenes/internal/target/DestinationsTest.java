@@ -1,6 +1,7 @@
 package org.scenes.internal.target;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 
 import java.util.ArrayList;
@@ -87,5 +88,44 @@ class DestinationsTest {
         // no ball known: the mean end point too
         assertArrayEquals(new double[] {10.5, 0}, destinations.target(List.of(neighbour(0), neighbour(1)), here, null),
                 1e-9);
+    }
+
+    @Test
+    void aPlayerThatReachedTheBallWithinTheChaseWindowRanToIt() {
+        // the ball rests at (25, 0): the player reaches it at cycle 24, past the destination's
+        // ten cycles but within the chase window; one resting at (45, 0) is reached too late
+        List<Scene> near = new ArrayList<>();
+        List<Scene> far = new ArrayList<>();
+        for (int t = 0; t < 50; t++) {
+            near.add(at(SEVEN, t, t, 0, 25, 0, "play_on", Action.dash(100)));
+            far.add(at(SEVEN, t, t, 0, 45, 0, "play_on", Action.dash(100)));
+        }
+        World here = near.get(0).world();
+        double[] ball = {7, 7};
+        assertArrayEquals(ball, Destinations.of(near).target(List.of(neighbour(0)), here, ball), 1e-9);
+        assertArrayEquals(new double[] {10, 0}, Destinations.of(far).target(List.of(neighbour(0)), here, ball), 1e-9);
+    }
+
+    @Test
+    void aChaseGoesOnWhileAThirdOfTheNeighboursRanToTheBall() {
+        List<Scene> scenes = new ArrayList<>();
+        for (int t = 0; t < 20; t++) {
+            scenes.add(at(SEVEN, t, t, 0, 5, 0, "play_on", Action.dash(100))); // passes its ball at cycle 5
+        }
+        scenes.addAll(run(EIGHT, 20, 0, 10)); // runs on, the ball far away
+        Destinations destinations = Destinations.of(scenes);
+        World here = scenes.get(0).world();
+        double[] ball = {7, 7};
+        List<Neighbour> twoOfThree = List.of(neighbour(0), neighbour(1), neighbour(20));
+        List<Neighbour> oneOfTwo = List.of(neighbour(0), neighbour(20));
+        List<Neighbour> oneOfFour = List.of(neighbour(0), neighbour(20), neighbour(21), neighbour(22));
+        Steering steering = new Steering();
+        // one of two does not start a chase
+        assertArrayEquals(new double[] {10, 5}, destinations.target(oneOfTwo, here, ball, steering), 1e-9);
+        assertArrayEquals(ball, destinations.target(twoOfThree, here, ball, steering), 1e-9);
+        // but keeps one going, until fewer than a third ran to the ball
+        assertArrayEquals(ball, destinations.target(oneOfTwo, here, ball, steering), 1e-9);
+        assertNotEquals(ball[0], destinations.target(oneOfFour, here, ball, steering)[0]);
+        assertArrayEquals(new double[] {10, 5}, destinations.target(oneOfTwo, here, ball, steering), 1e-9);
     }
 }

@@ -1,7 +1,9 @@
 package org.scenes.internal.target;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -150,5 +152,70 @@ class TargetsTest {
         assertEquals(List.of(Action.dash(100)), Validator.prediction(Action.turn(20), nearest, query, Replay.TARGET));
         assertEquals(List.of(Action.turn(20)), Validator.prediction(Action.turn(20), nearest, query, Replay.RAW));
         assertFalse(Targets.alreadyReached(List.of(Action.dash(100)), query));
+    }
+
+    @Test
+    void theInterceptionPointIsWhereTheRunFirstMeetsTheBallsCourse() {
+        // the ball at rest 0.5 m away: reached where it lies
+        assertArrayEquals(new double[] {0.5, 0}, Targets.intercept(world(0, 0, 0, 0.5, 0)), DELTA);
+        // the ball 20 m ahead rolling away at 1.5 m a cycle: its course, decayed 0.94 a cycle, is
+        // caught when the run (one turn, then a metre a cycle, plus the kicking reach) covers it
+        World rolling = new World(0, 0, 0, 0, 0, 0, 8000, 1, 0, 20, 0, 1.5, 0, 0, List.of(), "play_on", 0, 0);
+        double[] point = Targets.intercept(rolling);
+        double bx = 20;
+        double v = 1.5;
+        int caught = -1;
+        for (int t = 0; t < 50 && caught < 0; t++) {
+            if (bx <= Math.max(0, t - 1) * 1.0 + 1.085) {
+                caught = t;
+            } else {
+                bx += v;
+                v *= 0.94;
+            }
+        }
+        assertTrue(caught > 0, "the run catches the ball within the horizon");
+        assertArrayEquals(new double[] {bx, 0}, point, DELTA);
+        assertTrue(point[0] > 35, "ahead of where the ball is now: " + point[0]);
+        // no ball known: no point
+        World blind = new World(0, 0, 0, 0, 0, 0, 8000, 1, 0, Double.NaN, Double.NaN, 0, 0, 0, List.of(), "play_on",
+                0, 0);
+        assertNull(Targets.intercept(blind));
+    }
+
+    @Test
+    void aRunTurnsFirstWhenThePointIsMoreThanTheRunToleranceOffTheBody() {
+        World own = world(0, 0, 0, 30, 30);
+        double[] ahead = {10 * Math.cos(Math.toRadians(10)), 10 * Math.sin(Math.toRadians(10))};
+        double[] aside = {10 * Math.cos(Math.toRadians(30)), 10 * Math.sin(Math.toRadians(30))};
+        assertEquals(Action.dash(80), Targets.goTo(ahead, own, 80, Action.turn(1)));
+        Action turn = Targets.goTo(aside, own, 80, Action.turn(1));
+        assertEquals(ActionType.TURN, turn.type());
+        assertEquals(30, turn.first(), 1e-9); // standing still: the moment is the angle
+        // within a metre: what the neighbour did there
+        assertEquals(Action.turn(1), Targets.goTo(new double[] {0.5, 0.5}, own, 80, Action.turn(1)));
+    }
+
+    @Test
+    void aTurnBackAgainstThePreviousTurnGivesWayToANeighbourThatKeepsOn() {
+        Scene turnBack = scene(world(0, 0, 0, 30, 30), false, Action.turn(-30));
+        Scene dashOn = scene(world(0, 0, 0, 30, 30), false, Action.dash(100));
+        List<Neighbour> nearest = List.of(new Neighbour(turnBack, 0, 0), new Neighbour(dashOn, 1, 1));
+        Scene query = scene(world(5, 5, 0, 30, 30), false);
+        Steering turnedRight = new Steering();
+        turnedRight.sent(Action.turn(30));
+        assertEquals(List.of(Action.dash(100)),
+                Validator.prediction(Action.turn(-30), nearest, query, Replay.TARGET, null, turnedRight));
+        // without a previous turn, or after a turn the same way, the turn stands
+        assertEquals(List.of(Action.turn(-30)),
+                Validator.prediction(Action.turn(-30), nearest, query, Replay.TARGET, null, new Steering()));
+        Steering turnedLeft = new Steering();
+        turnedLeft.sent(Action.turn(-20));
+        assertEquals(List.of(Action.turn(-30)),
+                Validator.prediction(Action.turn(-30), nearest, query, Replay.TARGET, null, turnedLeft));
+        // a large turn back is a search: it stands
+        Steering searched = new Steering();
+        searched.sent(Action.turn(150));
+        assertEquals(List.of(Action.turn(-30)),
+                Validator.prediction(Action.turn(-30), nearest, query, Replay.TARGET, null, searched));
     }
 }

@@ -16,6 +16,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Random;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.scenes.api.Action;
 import org.scenes.api.Grid;
@@ -41,6 +42,7 @@ import org.scenes.testing.SharedData;
  * The packed scan and the index find the same neighbours at the same distances as an exhaustive
  * scan, on real Krislet scenes (when the shared recordings are present) and on synthetic ones with many ties.
  */
+@Tag("slow")
 class PackedBallGoalTest {
     private static List<Scene> stored;
     private static List<Scene> queries;

@@ -11,7 +11,8 @@ import org.scenes.api.TopK;
 
 /**
  * An exact index for {@code field}: scenes are grouped by what adds a fixed cost (play mode,
- * whether the ball is known and within reach, whether the world is located), and each group's weighted features
+ * whether the ball is known and within reach, whether the player is its team's nearest to it,
+ * whether the world is located), and each group's weighted features
  * go into a k-d tree. A query visits groups in ascending fixed cost and stops once that alone
  * passes the k-th best distance; within a group it descends the nearer child first and skips any
  * box whose nearest point is farther than the k-th best. Offered distances are computed with the
@@ -47,7 +48,8 @@ final class FieldIndex implements PackedMetric.PackedScenes {
                 unlocated.add(i);
                 continue;
             }
-            String key = features[i].mode() + '\u0000' + features[i].ballKnown() + '\u0000' + features[i].kickable();
+            String key = features[i].mode() + '\u0000' + features[i].ballKnown() + '\u0000' + features[i].kickable()
+                    + '\u0000' + features[i].chaser();
             byKey.computeIfAbsent(key, unused -> new ArrayList<>()).add(i);
             keyFeatures.putIfAbsent(key, features[i]);
         }

@@ -7,6 +7,7 @@ import org.scenes.api.EncodedMetric;
 import org.scenes.api.MetricProvider;
 import org.scenes.api.PackedMetric;
 import org.scenes.api.PluginConfig;
+import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneMetric;
 import org.scenes.api.Side;
@@ -20,7 +21,9 @@ import org.scenes.api.World;
  * player, the ball's velocity, the body's direction (as a unit vector), stamina, plus a penalty
  * when the play modes differ (modes compared from the player's side: {@code kick_off_l} of a left
  * player equals {@code kick_off_r} of a right one) and another when the ball is within kicking reach
- * in one scene only (what decides most of a player's actions). With {@code ball-frame=body} the ball's offset
+ * in one scene only (what decides most of a player's actions), and another when the player is its
+ * team's nearest to the ball (among the teammates its world model knows) in one scene only (who
+ * runs for the ball and who keeps its place). With {@code ball-frame=body} the ball's offset
  * and velocity are turned into the body's frame (ahead, to the right) instead. A scene without a located world model is
  * {@code missing} away from every other; an unknown ball costs {@code missing} / 10.
  */
@@ -63,6 +66,8 @@ public final class FieldMetricProvider implements MetricProvider {
         options.put("play-mode-penalty", "added when the play modes differ (default 10)");
         options.put("kickable-penalty", "added when the ball is within kicking reach (1.085 m, the default player's)"
                 + " in one scene and not in the other (default 10)");
+        options.put("chaser-penalty", "added when the player is its team's nearest to the ball (of the teammates it"
+                + " knows) in one scene and not in the other (default 10)");
         options.put("ball-frame", "field: the ball's offset along the pitch's axes (default); body: turned into the"
                 + " body's frame (ahead, to the right)");
         options.put("missing", "distance of a scene without a located world model (default 1000)");
@@ -78,7 +83,8 @@ public final class FieldMetricProvider implements MetricProvider {
                 TuneDimension.log("body-weight", 1, 3, 10),
                 TuneDimension.log("stamina-weight", 0.5, 2, 8),
                 TuneDimension.log("play-mode-penalty", 3, 10, 30),
-                TuneDimension.log("kickable-penalty", 1, 3, 10, 30));
+                TuneDimension.log("kickable-penalty", 1, 3, 10, 30),
+                TuneDimension.log("chaser-penalty", 1, 3, 10, 30));
     }
 
     @Override
@@ -107,7 +113,8 @@ public final class FieldMetricProvider implements MetricProvider {
             throw new IllegalArgumentException("field: index must be true or false, not " + index);
         }
         return new FieldMetric(weights, weight(config, "play-mode-penalty", 10), weight(config, "missing", 1000),
-                frame.equals("body"), index.equals("true"), weight(config, "kickable-penalty", 10));
+                frame.equals("body"), index.equals("true"), weight(config, "kickable-penalty", 10),
+                weight(config, "chaser-penalty", 10));
     }
 
     private static double weight(PluginConfig config, String name, double fallback) {
@@ -122,9 +129,9 @@ public final class FieldMetricProvider implements MetricProvider {
      * A scene's features, each multiplied by its weight already; {@code mode} the play mode from
      * the player's side; null features for a scene without a located world.
      */
-    record Features(double[] values, boolean ballKnown, String mode, boolean kickable) {
+    record Features(double[] values, boolean ballKnown, String mode, boolean kickable, boolean chaser) {
         Features(double[] values, boolean ballKnown, String mode) {
-            this(values, ballKnown, mode, false);
+            this(values, ballKnown, mode, false, false);
         }
     }
 
@@ -135,10 +142,12 @@ public final class FieldMetricProvider implements MetricProvider {
         private final boolean bodyFrame;
         private final boolean indexed;
         private final double kickablePenalty;
+        private final double chaserPenalty;
 
         FieldMetric(double[] weights, double playModePenalty, double missing, boolean bodyFrame, boolean indexed,
-                    double kickablePenalty) {
+                    double kickablePenalty, double chaserPenalty) {
             this.kickablePenalty = kickablePenalty;
+            this.chaserPenalty = chaserPenalty;
             this.weights = weights;
             this.playModePenalty = playModePenalty;
             this.missing = missing;
@@ -176,8 +185,20 @@ public final class FieldMetricProvider implements MetricProvider {
             for (int i = 0; i < FEATURES; i++) {
                 f[i] *= weights[i];
             }
-            boolean kickable = ballKnown && Math.hypot(w.ballX() - w.x(), w.ballY() - w.y()) <= KICKABLE;
-            return new Features(f, ballKnown, ownMode(w.playMode(), scene.observer().side()), kickable);
+            double ballDistance = ballKnown ? Math.hypot(w.ballX() - w.x(), w.ballY() - w.y()) : Double.NaN;
+            return new Features(f, ballKnown, ownMode(w.playMode(), scene.observer().side()), ballDistance <= KICKABLE,
+                    ballKnown && nearestOfItsTeam(w, ballDistance));
+        }
+
+        /** Whether no teammate the world model knows stands nearer the ball than the player. */
+        static boolean nearestOfItsTeam(World w, double ballDistance) {
+            for (World.Player player : w.players()) {
+                if (player.relation() == Relation.TEAMMATE
+                        && Math.hypot(w.ballX() - player.x(), w.ballY() - player.y()) < ballDistance) {
+                    return false;
+                }
+            }
+            return true;
         }
 
         /** The play mode with its side letter as seen from the player: {@code kick_off_own}, {@code goal_opp}. */
@@ -202,7 +223,7 @@ public final class FieldMetricProvider implements MetricProvider {
             return missing;
         }
 
-        /** The sum of squares two located scenes differ by before their features: play mode and ball state. */
+        /** The sum of squares two located scenes differ by before their features: play mode, ball state, chaser. */
         double fixedCost(Features query, Features stored) {
             double sum = 0;
             if (!query.mode().equals(stored.mode())) {
@@ -213,6 +234,9 @@ public final class FieldMetricProvider implements MetricProvider {
             }
             if (query.kickable() != stored.kickable()) {
                 sum += kickablePenalty * kickablePenalty;
+            }
+            if (query.chaser() != stored.chaser()) {
+                sum += chaserPenalty * chaserPenalty;
             }
             return sum;
         }

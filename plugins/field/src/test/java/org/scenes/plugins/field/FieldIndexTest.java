@@ -12,6 +12,7 @@ import org.scenes.api.Action;
 import org.scenes.api.Grid;
 import org.scenes.api.Neighbour;
 import org.scenes.api.Observer;
+import org.scenes.api.Relation;
 import org.scenes.api.PluginConfig;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
@@ -39,12 +40,19 @@ class FieldIndexTest {
             World world = new World(x, y, random.nextInt(8) * 45, 0, random.nextGaussian() * 0.2, 0,
                     random.nextInt(3) * 4000, 1, 0, ballKnown ? x + random.nextGaussian() * 10 : Double.NaN,
                     ballKnown ? y + random.nextGaussian() * 10 : Double.NaN, random.nextGaussian(), random.nextGaussian(),
-                    0, List.of(), MODES.get(random.nextInt(MODES.size())), 0, 0);
+                    0, teammate(random), MODES.get(random.nextInt(MODES.size())), 0, 0);
             Side side = random.nextBoolean() ? Side.LEFT : Side.RIGHT;
             scenes.add(new Scene(i, new Observer("T", side, 1 + random.nextInt(11)), List.of(), List.of(Action.dash(50)),
                     null, 0, world));
         }
         return scenes;
+    }
+
+    /** Half the scenes know a teammate somewhere on the pitch: it is nearer the ball than the player in some. */
+    private static List<World.Player> teammate(Random random) {
+        return random.nextBoolean() ? List.of()
+                : List.of(new World.Player(Relation.TEAMMATE, 5, random.nextDouble() * 105 - 52.5,
+                        random.nextDouble() * 68 - 34, 0));
     }
 
     @Test

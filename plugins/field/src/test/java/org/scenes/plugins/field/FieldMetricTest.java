@@ -10,6 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.scenes.api.Action;
 import org.scenes.api.Observer;
 import org.scenes.api.PluginConfig;
+import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneMetric;
 import org.scenes.api.Side;
@@ -66,5 +67,22 @@ class FieldMetricTest {
         assertThrows(IllegalArgumentException.class,
                 () -> new FieldMetricProvider().create(PluginConfig.DEFAULT.withOptions(Map.of("ball-weight", "-1"))));
         assertTrue(new FieldMetricProvider().options().containsKey("play-mode-penalty"));
+    }
+
+    @Test
+    void aTeammateNearerTheBallInOneSceneOnlyAddsTheChaserPenalty() {
+        Scene alone = scene(Side.LEFT, 0, 0, 0, 5, 0, "play_on");
+        World w = alone.world();
+        World withTeammate = new World(w.x(), w.y(), w.body(), 0, 0, 0, 8000, 1, 0, w.ballX(), w.ballY(), 0, 0, 0,
+                List.of(new World.Player(Relation.TEAMMATE, 7, 6, 1, 0)), "play_on", 0, 0);
+        World withOpponent = new World(w.x(), w.y(), w.body(), 0, 0, 0, 8000, 1, 0, w.ballX(), w.ballY(), 0, 0, 0,
+                List.of(new World.Player(Relation.OPPONENT, 7, 6, 1, 0)), "play_on", 0, 0);
+        Scene followed = new Scene(1, alone.observer(), List.of(), alone.actions(), null, 0, withTeammate);
+        Scene marked = new Scene(1, alone.observer(), List.of(), alone.actions(), null, 0, withOpponent);
+        assertEquals(10, metric.distance(alone, followed), 1e-9);
+        assertEquals(0, metric.distance(alone, marked), 1e-9); // an opponent nearer the ball does not count
+        SceneMetric cheap = new FieldMetricProvider().create(PluginConfig.DEFAULT.withOptions(
+                Map.of("chaser-penalty", "2")));
+        assertEquals(2, cheap.distance(alone, followed), 1e-9);
     }
 }

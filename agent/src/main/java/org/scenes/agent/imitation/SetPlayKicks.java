@@ -1,0 +1,102 @@
+package org.scenes.agent.imitation;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.scenes.api.ActionType;
+import org.scenes.api.Scene;
+import org.scenes.api.Side;
+import org.scenes.api.World;
+
+/**
+ * How a recorded player took its team's set plays: for each kind (kick-off, free kick, kick-in,
+ * corner, goal kick), the kicks that ended them and how many cycles after the play mode began
+ * each came. A team such as HELIOS base waits at a set play (for its players to take their
+ * places) and then kicks; the wait depends on time, which no scene feature holds, so an
+ * imitator that stands at the ball matches the waiting scenes for ever. The imitator takes the
+ * recorded kick once it has waited as long as its counterpart did (the median wait).
+ */
+final class SetPlayKicks {
+    /** Play modes, without their side letter, that the side named in them restarts with a kick. */
+    private static final List<String> KINDS = List.of("kick_off", "free_kick", "indirect_free_kick", "kick_in",
+            "corner_kick", "goal_kick");
+
+    /** One recorded set-play kick: the scene that holds it, and its wait. */
+    record Kick(Scene scene, int waited) {
+    }
+
+    static final SetPlayKicks NONE = new SetPlayKicks(Map.of());
+
+    private final Map<String, List<Kick>> byKind;
+
+    private SetPlayKicks(Map<String, List<Kick>> byKind) {
+        this.byKind = byKind;
+    }
+
+    /** The set-play kicks of one recorded player's scenes, in cycle order. */
+    static SetPlayKicks of(Iterable<Scene> scenes) {
+        Map<String, List<Kick>> byKind = new HashMap<>();
+        String mode = "";
+        int since = 0;
+        boolean kicked = false;
+        for (Scene scene : scenes) {
+            World world = scene.world();
+            if (world == null || scene.observer() == null) {
+                continue;
+            }
+            if (!world.playMode().equals(mode)) {
+                mode = world.playMode();
+                since = scene.cycle();
+                kicked = false;
+            }
+            String kind = ownKind(mode, scene.observer().side());
+            if (kind != null && !kicked && scene.actionType() == ActionType.KICK) {
+                kicked = true;
+                byKind.computeIfAbsent(kind, k -> new ArrayList<>()).add(new Kick(scene, scene.cycle() - since));
+            }
+        }
+        return byKind.isEmpty() ? NONE : new SetPlayKicks(byKind);
+    }
+
+    /** The same, merged: the kicks of several files of one player. */
+    SetPlayKicks with(SetPlayKicks more) {
+        if (more.byKind.isEmpty()) {
+            return this;
+        }
+        Map<String, List<Kick>> merged = new HashMap<>();
+        byKind.forEach((kind, kicks) -> merged.computeIfAbsent(kind, k -> new ArrayList<>()).addAll(kicks));
+        more.byKind.forEach((kind, kicks) -> merged.computeIfAbsent(kind, k -> new ArrayList<>()).addAll(kicks));
+        return new SetPlayKicks(merged);
+    }
+
+    /**
+     * The kick to take now: in a set play of the player's own team that has lasted {@code waited}
+     * cycles, at least the median of the recorded waits of that kind, the first recorded kick of
+     * that kind; null before, in other play modes, or when the player never took one of that kind.
+     */
+    Scene due(String mode, Side side, int waited) {
+        String kind = ownKind(mode, side);
+        List<Kick> kicks = kind == null ? null : byKind.get(kind);
+        if (kicks == null) {
+            return null;
+        }
+        int[] waits = kicks.stream().mapToInt(Kick::waited).sorted().toArray();
+        return waited >= waits[waits.length / 2] ? kicks.get(0).scene() : null;
+    }
+
+    /** Total recorded set-play kicks, for tests and reports. */
+    int size() {
+        return byKind.values().stream().mapToInt(List::size).sum();
+    }
+
+    /** The set-play kind of a play mode when the player's own side restarts it ({@code kick_off_l} for a left player), else null. */
+    static String ownKind(String mode, Side side) {
+        if (side == null || mode.length() < 3 || mode.charAt(mode.length() - 2) != '_'
+                || mode.charAt(mode.length() - 1) != side.letter()) {
+            return null;
+        }
+        String kind = mode.substring(0, mode.length() - 2);
+        return KINDS.contains(kind) ? kind : null;
+    }
+}

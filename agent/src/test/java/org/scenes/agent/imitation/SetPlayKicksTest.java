@@ -1,0 +1,69 @@
+package org.scenes.agent.imitation;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.scenes.api.Action;
+import org.scenes.api.Observer;
+import org.scenes.api.Scene;
+import org.scenes.api.Side;
+import org.scenes.api.World;
+
+class SetPlayKicksTest {
+    private static final Observer LEFT_TEN = new Observer("T", Side.LEFT, 10);
+
+    private static Scene at(int cycle, String mode, Action action) {
+        World world = new World(-0.3, 0, 0, 0, 0, 0, 8000, 1, 0, 0, 0, 0, 0, 0, List.of(), mode, 0, 0);
+        return new Scene(cycle, LEFT_TEN, List.of(), List.of(action), null, 0, world);
+    }
+
+    /** A kick-off of the left team: the player turns for {@code wait} cycles, then kicks; play goes on. */
+    private static List<Scene> kickOff(int start, int wait, List<Scene> kicks) {
+        List<Scene> scenes = new ArrayList<>();
+        for (int t = 0; t < wait; t++) {
+            scenes.add(at(start + t, "kick_off_l", Action.turn(30)));
+        }
+        Scene kick = at(start + wait, "kick_off_l", Action.kick(50, 180));
+        kicks.add(kick);
+        scenes.add(kick);
+        scenes.add(at(start + wait + 1, "play_on", Action.kick(100, 0))); // a kick in play is no set play's
+        scenes.add(at(start + wait + 2, "play_on", Action.dash(100)));
+        return scenes;
+    }
+
+    @Test
+    void theRecordedKickIsDueAfterTheMedianWaitOfItsKind() {
+        List<Scene> kicks = new ArrayList<>();
+        List<Scene> scenes = new ArrayList<>(kickOff(0, 20, kicks));
+        scenes.addAll(kickOff(100, 30, kicks));
+        scenes.addAll(kickOff(200, 40, kicks));
+        SetPlayKicks recorded = SetPlayKicks.of(scenes);
+        assertEquals(3, recorded.size());
+        assertNull(recorded.due("kick_off_l", Side.LEFT, 29));
+        assertSame(kicks.get(0), recorded.due("kick_off_l", Side.LEFT, 30));
+        // the other team's kick-off, another kind, play on: none
+        assertNull(recorded.due("kick_off_r", Side.LEFT, 100));
+        assertNull(recorded.due("free_kick_l", Side.LEFT, 100));
+        assertNull(recorded.due("play_on", Side.LEFT, 100));
+        // a right player reads kick_off_r as its own
+        assertEquals("kick_off", SetPlayKicks.ownKind("kick_off_r", Side.RIGHT));
+        assertNull(SetPlayKicks.ownKind("goal_l", Side.LEFT));
+    }
+
+    @Test
+    void filesOfOnePlayerMergeAndAPlayerThatNeverKickedHasNone() {
+        List<Scene> kicks = new ArrayList<>();
+        SetPlayKicks merged = SetPlayKicks.of(kickOff(0, 10, kicks)).with(SetPlayKicks.of(kickOff(0, 50, kicks)));
+        assertEquals(2, merged.size());
+        List<Scene> waiting = new ArrayList<>();
+        for (int t = 0; t < 60; t++) {
+            waiting.add(at(t, "kick_off_l", Action.turn(30)));
+        }
+        assertSame(SetPlayKicks.NONE, SetPlayKicks.of(waiting));
+        assertNull(SetPlayKicks.NONE.due("kick_off_l", Side.LEFT, 1000));
+    }
+}
