@@ -33,6 +33,7 @@ import org.scenes.app.convert.ArchiveConversion;
 import org.scenes.app.convert.ConvertSettings;
 import org.scenes.internal.convert.GameLogConverter;
 import org.scenes.internal.convert.Pairing;
+import org.scenes.internal.gamelog.GameLogs;
 import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.internal.vision.Fading;
 
@@ -128,9 +129,26 @@ class ConvertArchiveTest {
     }
 
     @Test
+    void aGameWithoutItsCommandLogIsConvertedFromItsGameLogAloneByDefault() throws IOException {
+        Path out = dir.resolve("auto");
+        assertEquals(0, cli.run("convert", archive, "--out-dir", out, "--threads", 1), cli.err());
+        assertTrue(cli.out().contains("Converted              4 (0 of them by an earlier run"), cli.out());
+        for (CSVRecord row : manifest(out)) {
+            assertEquals("converted", row.get("status"), row.toString());
+            assertEquals(row.get("path").startsWith("round3/") ? "infer" : "rcl", row.get("commands"), row.toString());
+        }
+        Path inferred = dir.resolve("inferred");
+        assertEquals(0, cli.run("convert", archive, "--out-dir", inferred, "--commands", "infer", "--threads", 1),
+                cli.err());
+        for (CSVRecord row : manifest(inferred)) {
+            assertEquals("infer", row.get("commands"), row.toString());
+        }
+    }
+
+    @Test
     void convertsEveryPlayerOfEveryGameGroupedByTeamWithAManifestThenResumes() throws IOException {
         Path out = dir.resolve("scenes");
-        assertEquals(0, cli.run("convert", archive, "--out-dir", out, "--threads", 1), cli.err());
+        assertEquals(0, cli.run("convert", archive, "--commands", "rcl", "--out-dir", out, "--threads", 1), cli.err());
         assertTrue(cli.out().contains("Converted              3 (0 of them by an earlier run"), cli.out());
         assertTrue(cli.err().contains("skipped: no command log beside it"), cli.err());
 
@@ -181,7 +199,7 @@ class ConvertArchiveTest {
         for (Path file : files(out.resolve("Ants"))) {
             times.put(file, Files.getLastModifiedTime(file));
         }
-        assertEquals(0, cli.run("convert", archive, "--out-dir", out), cli.err());
+        assertEquals(0, cli.run("convert", archive, "--commands", "rcl", "--out-dir", out), cli.err());
         assertTrue(cli.out().contains("Converted              3 (3 of them by an earlier run"), cli.out());
         for (Map.Entry<Path, FileTime> file : times.entrySet()) {
             assertEquals(file.getValue(), Files.getLastModifiedTime(file.getKey()), file.getKey().toString());
@@ -225,7 +243,7 @@ class ConvertArchiveTest {
         String game = "round2-" + broken.getFileName().toString().replace(".rcg", "");
 
         Path out = dir.resolve("scenes");
-        assertEquals(1, cli.run("convert", copy, "--out-dir", out, "--threads", 1), cli.err());
+        assertEquals(1, cli.run("convert", copy, "--commands", "rcl", "--out-dir", out, "--threads", 1), cli.err());
         assertTrue(cli.err().contains("scenes: error: 1 of 4 games failed"), cli.err());
         CSVRecord row = manifest(out).stream().filter(r -> r.get("game").equals(game)).findFirst().orElseThrow();
         assertEquals("failed", row.get("status"));
@@ -237,7 +255,7 @@ class ConvertArchiveTest {
             assertFalse(file.getFileName().toString().endsWith(".tmp"), file.toString());
         }
         // the next run tries the failed game again, and only it
-        assertEquals(1, cli.run("convert", copy, "--out-dir", out));
+        assertEquals(1, cli.run("convert", copy, "--commands", "rcl", "--out-dir", out));
         assertTrue(cli.out().contains("Converted              2 (2 of them by an earlier run"), cli.out());
     }
 
@@ -253,7 +271,7 @@ class ConvertArchiveTest {
             firstGame[0] = archive.relativize(rcg).toString().replaceFirst("\\.rcg(\\.gz)?$", "").replace('/', '-');
         }
         Path blocked = Files.createDirectories(out.resolve("Bees/" + firstGame[0] + "_2.json.gz"));
-        assertEquals(1, cli.run("convert", archive, "--out-dir", out, "--threads", 1), cli.err());
+        assertEquals(1, cli.run("convert", archive, "--commands", "rcl", "--out-dir", out, "--threads", 1), cli.err());
         assertTrue(cli.err().contains(firstGame[0]) || cli.err().contains("round1"), cli.err());
         for (Path file : files(out)) {
             assertFalse(file.getFileName().toString().startsWith(firstGame[0]), file.toString());
@@ -266,7 +284,7 @@ class ConvertArchiveTest {
                 Fading.named("dice", 1), GameLogConverter.everyone(), false, GameLogConverter.SeePhase.INFER, 1);
         Path stopped = dir.resolve("stopped");
         RuntimeException stop = assertThrows(RuntimeException.class, () -> new ArchiveConversion(
-                new ArchiveConversion.Request(archive, stopped, settings)).run(new Progress() {
+                new ArchiveConversion.Request(archive, stopped, settings, GameLogs.Commands.RCL)).run(new Progress() {
                     private int steps;
 
                     @Override
@@ -288,12 +306,12 @@ class ConvertArchiveTest {
         assertFalse(Files.exists(stopped.resolve("manifest.csv")));
         assertEquals(8, files(stopped.resolve("Ants")).size() + files(stopped.resolve("Bees")).size());
         ArchiveConversion.Result resumed = new ArchiveConversion(new ArchiveConversion.Request(archive, stopped,
-                settings)).run(Progress.NONE);
+                settings, GameLogs.Commands.RCL)).run(Progress.NONE);
         assertEquals(2, resumed.resumed());
         assertEquals(3, resumed.count(org.scenes.app.convert.ManifestRow.Status.converted));
         assertEquals(12, files(stopped.resolve("Ants")).size() + files(stopped.resolve("Bees")).size());
         // the blocked game converted once its output can be written, the others kept
-        assertEquals(0, cli.run("convert", archive, "--out-dir", out, "--threads", 1), cli.err());
+        assertEquals(0, cli.run("convert", archive, "--commands", "rcl", "--out-dir", out, "--threads", 1), cli.err());
         assertTrue(cli.out().contains("Converted              3 (2 of them by an earlier run"), cli.out());
         assertEquals(12, files(out.resolve("Ants")).size() + files(out.resolve("Bees")).size());
     }
@@ -319,7 +337,7 @@ class ConvertArchiveTest {
         Path records = out.resolve(".games");
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx256m", "-cp", System.getProperty("java.class.path"), "org.scenes.cli.Main", "convert",
-                many.toString(), "--out-dir", out.toString(), "--threads", "1"));
+                many.toString(), "--commands", "rcl", "--out-dir", out.toString(), "--threads", "1"));
         Path childOut = dir.resolve("child.out");
         Process child = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(childOut.toFile()).start();
         // the condition: a game recorded (polled; the child needs seconds for 30 games)
@@ -339,11 +357,11 @@ class ConvertArchiveTest {
             }
         }
 
-        assertEquals(0, cli.run("convert", many, "--out-dir", out, "--threads", 1), cli.err());
+        assertEquals(0, cli.run("convert", many, "--commands", "rcl", "--out-dir", out, "--threads", 1), cli.err());
         Matcher resumed = Pattern.compile("Converted +30 \\((\\d+) of them by an earlier run").matcher(cli.out());
         assertTrue(resumed.find() && Integer.parseInt(resumed.group(1)) >= 1, cli.out());
         Path whole = dir.resolve("whole");
-        assertEquals(0, cli.run("convert", many, "--out-dir", whole, "--threads", 1), cli.err());
+        assertEquals(0, cli.run("convert", many, "--commands", "rcl", "--out-dir", whole, "--threads", 1), cli.err());
         List<Path> expected = files(whole);
         assertEquals(expected.stream().map(whole::relativize).toList(), files(out).stream().map(out::relativize).toList());
         for (Path file : expected) {

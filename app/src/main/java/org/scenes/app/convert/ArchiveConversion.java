@@ -53,7 +53,11 @@ public final class ArchiveConversion {
      * @param archive the directory tree of game logs
      * @param outDir where the teams' directories, the manifest and the games' records go
      */
-    public record Request(Path archive, Path outDir, ConvertSettings settings) {
+    public record Request(Path archive, Path outDir, ConvertSettings settings, GameLogs.Commands commands) {
+        /** Commands from the command log beside each game, inferred from the game log where there is none. */
+        public Request(Path archive, Path outDir, ConvertSettings settings) {
+            this(archive, outDir, settings, GameLogs.Commands.AUTO);
+        }
     }
 
     /**
@@ -179,8 +183,13 @@ public final class ArchiveConversion {
                 if (row != null) {
                     resumed++;
                 } else {
-                    row = convertGame(request.settings(), game.name(), game.path(), game.gameLog(),
-                            commandLog(game.gameLog()), request.outDir(), () -> cancelled);
+                    Path commandLog = request.commands() == GameLogs.Commands.INFER ? null : commandLog(game.gameLog());
+                    row = commandLog == null && request.commands() == GameLogs.Commands.RCL
+                            ? ManifestRow.notConverted(game.name(), game.path(), ManifestRow.Status.skipped,
+                                    "no command log beside it (" + GameLogs.baseName(game.gameLog().getFileName()
+                                            .toString()) + ".rcl or .rcl.gz) and --commands rcl")
+                            : convertGame(request.settings(), game.name(), game.path(), game.gameLog(), commandLog,
+                                    request.outDir(), () -> cancelled);
                     // a game finished as the run was stopped has no record: the next run converts it again
                     stopIfCancelled();
                     if (row.status() == ManifestRow.Status.converted) {
@@ -247,17 +256,13 @@ public final class ArchiveConversion {
      *
      * @param name the game's name ({@link #gameName})
      * @param path the game log's path in the archive, for the manifest
-     * @param commandLog the command log beside the game log, null when there is none
+     * @param commandLog the command log beside the game log; null: the commands are inferred from
+     *                   the game log alone (docs/conversion.md)
      * @param cancelled whether the run was stopped: then no scene file is opened and the game fails
      */
     public static ManifestRow convertGame(ConvertSettings settings, String name, String path, Path gameLog,
                                           Path commandLog, Path outDir, BooleanSupplier cancelled) {
         Game game = new Game(name, gameLog, path);
-        if (commandLog == null) {
-            return ManifestRow.notConverted(game.name(), game.path(), ManifestRow.Status.skipped,
-                    "no command log beside it (" + GameLogs.baseName(game.gameLog().getFileName().toString())
-                            + ".rcl or .rcl.gz); commands inferred from the game log alone are not supported yet");
-        }
         List<Path> targets = new ArrayList<>();
         try {
             return convert(settings, game, new GameLogs(game.gameLog(), commandLog), outDir, targets, cancelled);
@@ -277,11 +282,7 @@ public final class ArchiveConversion {
         }
     }
 
-    /**
-     * Where the game's commands come from: today the command log beside the game log; null when
-     * there is none. (Commands inferred from the game log alone would be decided here, and named
-     * in the manifest's {@code commands} column.)
-     */
+    /** The command log beside the game log; null when there is none. */
     private static Path commandLog(Path gameLog) {
         try {
             return GameLogs.commandLogBeside(gameLog);
@@ -316,7 +317,7 @@ public final class ArchiveConversion {
         return new ManifestRow(game.name(), game.path(), ManifestRow.Status.converted, last == null ? "" : last.leftTeam(),
                 last == null ? "" : last.rightTeam(), last == null ? -1 : last.scoreLeft(),
                 last == null ? -1 : last.scoreRight(), written.files().size(), written.scenes(),
-                result.warnings(), "rcl", "");
+                result.warnings(), logs.inferred() ? "infer" : "rcl", "");
     }
 
     /** The game log's last show: the teams and the final score (a second read of the game log); null for none. */
