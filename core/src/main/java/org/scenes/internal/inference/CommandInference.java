@@ -7,6 +7,7 @@ import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.PlayerState;
 import org.scenes.internal.protocol.CommandType;
+import org.scenes.internal.world.ServerDefaults;
 
 /**
  * The commands one player executed in one simulator step, from the game log's shows before and
@@ -99,23 +100,23 @@ final class CommandInference {
     CommandInference(ServerModel model) {
         this.model = model;
         playerRand = model.get("player_rand", 0.1);
-        ballDecay = model.get("ball_decay", 0.94);
+        ballDecay = model.get("ball_decay", ServerDefaults.BALL_DECAY);
         ballRand = model.get("ball_rand", 0.05);
-        ballSize = model.get("ball_size", 0.085);
+        ballSize = model.get("ball_size", ServerDefaults.BALL_SIZE);
         ballSpeedMax = model.get("ball_speed_max", 3);
-        ballAccelMax = model.get("ball_accel_max", 2.7);
+        ballAccelMax = model.get("ball_accel_max", ServerDefaults.BALL_ACCEL_MAX);
         staminaMax = model.get("stamina_max", 8000);
         sideDashRate = model.get("side_dash_rate", 0.4);
         backDashRate = model.get("back_dash_rate", 0.7);
         dashAngleStep = Math.max(1e-6, model.get("dash_angle_step", 1));
-        minMoment = model.get("minmoment", -180);
-        maxMoment = model.get("maxmoment", 180);
-        minPower = model.get("minpower", -100);
-        maxPower = model.get("maxpower", 100);
+        minMoment = model.get("minmoment", -ServerDefaults.MAX_MOMENT);
+        maxMoment = model.get("maxmoment", ServerDefaults.MAX_MOMENT);
+        minPower = model.get("minpower", -ServerDefaults.MAX_POWER);
+        maxPower = model.get("maxpower", ServerDefaults.MAX_POWER);
         minDashPower = model.get("min_dash_power", 0);
         maxDashPower = model.get("max_dash_power", 100);
-        minNeckAngle = model.get("minneckang", -90);
-        maxNeckAngle = model.get("maxneckang", 90);
+        minNeckAngle = model.get("minneckang", -ServerDefaults.MAX_NECK_ANGLE);
+        maxNeckAngle = model.get("maxneckang", ServerDefaults.MAX_NECK_ANGLE);
         visibleAngle = model.get("visible_angle", 90);
     }
 

@@ -5,6 +5,7 @@ import java.util.Map;
 import org.scenes.internal.protocol.MessageParser;
 import org.scenes.internal.protocol.Message;
 import org.scenes.internal.protocol.Parameters;
+import org.scenes.internal.world.ServerDefaults;
 
 /**
  * The server's parameters the command models need, from a game log's {@code server_param} and
@@ -35,15 +36,7 @@ final class ServerModel {
     }
 
     double get(String name, double fallback) {
-        String value = server.get(name);
-        if (value == null) {
-            return fallback;
-        }
-        try {
-            return Double.parseDouble(value);
-        } catch (NumberFormatException e) {
-            return fallback;
-        }
+        return num(server, name, fallback);
     }
 
     /** The player type's parameters; the default type's (server_param's) when the log has none. */
@@ -53,13 +46,13 @@ final class ServerModel {
     }
 
     private PlayerType type(Map<String, String> named) {
-        return new PlayerType(num(named, "player_decay", get("player_decay", 0.4)),
-                num(named, "inertia_moment", get("inertia_moment", 5)),
+        return new PlayerType(num(named, "player_decay", get("player_decay", ServerDefaults.PLAYER_DECAY)),
+                num(named, "inertia_moment", get("inertia_moment", ServerDefaults.INERTIA_MOMENT)),
                 num(named, "dash_power_rate", get("dash_power_rate", 0.006)),
                 num(named, "stamina_inc_max", get("stamina_inc_max", 45)),
-                num(named, "player_size", get("player_size", 0.3)),
-                num(named, "kickable_margin", get("kickable_margin", 0.7)),
-                num(named, "kick_power_rate", get("kick_power_rate", 0.027)),
+                num(named, "player_size", get("player_size", ServerDefaults.PLAYER_SIZE)),
+                num(named, "kickable_margin", get("kickable_margin", ServerDefaults.KICKABLE_MARGIN)),
+                num(named, "kick_power_rate", get("kick_power_rate", ServerDefaults.KICK_POWER_RATE)),
                 num(named, "kick_rand", get("kick_rand", 0.1)),
                 num(named, "extra_stamina", get("extra_stamina", 50)),
                 num(named, "player_speed_max", get("player_speed_max", 1.05)));
