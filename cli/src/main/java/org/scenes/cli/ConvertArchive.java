@@ -12,7 +12,6 @@ import org.scenes.api.Grid;
 import org.scenes.app.convert.ArchiveConversion;
 import org.scenes.app.convert.ManifestRow;
 import org.scenes.internal.files.AtomicOutput;
-import org.scenes.internal.gamelog.GameLogs;
 
 /**
  * {@code scenes convert ARCHIVE_DIR --out-dir DIR}: the options handed to the {@link ArchiveConversion}
@@ -46,12 +45,8 @@ final class ConvertArchive {
         }
         PrintWriter out = options.spec.commandLine().getOut();
         PrintWriter err = options.spec.commandLine().getErr();
-        GameLogs.Commands commands = GameLogs.Commands.named(options.commands);
-        if (commands == null) {
-            throw new UsageException("--commands: expected rcl, infer or auto, not '" + options.commands + "'");
-        }
         ArchiveConversion conversion = new ArchiveConversion(new ArchiveConversion.Request(archive, outDir,
-                options.settings(grid), commands));
+                options.settings(grid), options.commands));
         Thread interrupted = new Thread(() -> {
             // Ctrl-C or SIGTERM: the game under way leaves no file and no record, so a new run converts it.
             // Stopped first, so that no output opens after its temporary files are removed

@@ -15,8 +15,10 @@ import org.scenes.internal.convert.ConversionReport;
 import org.scenes.internal.convert.DropReason;
 import org.scenes.internal.convert.MalformedLine;
 import org.scenes.internal.files.AtomicOutput;
+import org.scenes.internal.gamelog.GameLogs;
 import org.scenes.options.GameLogOptions;
 import org.scenes.options.GridOptions;
+import org.scenes.options.KeyConverters;
 import org.scenes.options.PairingOptions;
 import org.scenes.options.WorldOptions;
 import picocli.CommandLine.ArgGroup;
@@ -78,11 +80,12 @@ final class ConvertCommand implements Callable<Integer> {
     WorldOptions worldOptions;
 
     @Option(names = "--commands", paramLabel = "rcl|infer|auto", defaultValue = "auto",
+            converter = KeyConverters.Commands.class,
             description = {"Game logs: where the players' commands come from: rcl (the command log, given or GAME.rcl"
                     + " beside the game log), infer (from the game log alone: the shows' command counters and"
                     + " rcssserver's turn, dash, kick and neck models; docs/conversion.md) or auto (the command log"
                     + " when there is one, else inferred; default)."})
-    String commands;
+    GameLogs.Commands commands;
 
     @Option(names = "--threads", paramLabel = "N", description = "Game logs: threads rebuilding the players."
             + " Default: the number of cores.")

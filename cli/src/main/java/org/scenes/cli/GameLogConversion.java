@@ -24,11 +24,7 @@ final class GameLogConversion {
     }
 
     /** The server's logs among the inputs, null when they are players' logs. */
-    static GameLogConversion of(List<Path> inputs, String commands) throws IOException {
-        GameLogs.Commands source = GameLogs.Commands.named(commands);
-        if (source == null) {
-            throw new UsageException("--commands: expected rcl, infer or auto, not '" + commands + "'");
-        }
+    static GameLogConversion of(List<Path> inputs, GameLogs.Commands source) throws IOException {
         GameLogs logs;
         try {
             logs = GameLogs.among(inputs, source);

@@ -119,7 +119,7 @@ class GameLogConvertCommandTest {
         assertEquals(2, run("convert", rcg, rcl, "--commands", "infer", "--out-dir", dir.resolve("s")));
         assertTrue(err.contains("--commands infer takes the game log alone"), err);
         assertEquals(2, run("convert", rcg, "--commands", "guess", "--out-dir", dir.resolve("s")));
-        assertTrue(err.contains("--commands: expected rcl, infer or auto"), err);
+        assertTrue(err.contains("'--commands'") && err.contains("expected rcl, infer or auto, not 'guess'"), err);
         Files.delete(rcl);
         assertEquals(2, run("convert", rcg, "--commands", "rcl", "--out-dir", dir.resolve("s")));
         assertTrue(err.contains("no command log beside"), err);

@@ -26,5 +26,7 @@ class OptionValuesTest {
                 "show", "a.json", "--key-scenes", "3", "--key-by", "kicks");
         refused("--key-by", "expected influence or events, not 'kicks'",
                 "export", "a.json", "--format", "csv", "--key-by", "kicks");
+        refused("--commands", "expected rcl, infer or auto, not 'guess'",
+                "convert", "g.rcg", "--out-dir", "s", "--commands", "guess");
     }
 }

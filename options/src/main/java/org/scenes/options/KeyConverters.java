@@ -1,6 +1,7 @@
 package org.scenes.options;
 
 import java.util.function.Function;
+import org.scenes.internal.gamelog.GameLogs;
 import org.scenes.internal.validate.Folds;
 import org.scenes.internal.validate.Tuner;
 import picocli.CommandLine.ITypeConverter;
@@ -50,6 +51,14 @@ public final class KeyConverters {
         public org.scenes.internal.target.Replay convert(String value) {
             return KeyConverters.convert(value, org.scenes.internal.target.Replay::fromKey,
                     org.scenes.internal.target.Replay.keys());
+        }
+    }
+
+    /** {@code --commands rcl|infer|auto}: where a game's commands come from. */
+    public static final class Commands implements ITypeConverter<GameLogs.Commands> {
+        @Override
+        public GameLogs.Commands convert(String value) {
+            return KeyConverters.convert(value, GameLogs.Commands::named, "rcl, infer or auto");
         }
     }
 }
