@@ -124,8 +124,9 @@ public final class Destinations {
     /**
      * Where to run for these neighbours, from {@code own}'s position: when most of those with a
      * destination ran to the ball (reached it within {@link #CHASE} cycles), {@code ball} (where
-     * the deciding player can reach its own ball, null when it does not know one); else the mean of their end points (those within {@link #NEAR} metres) and of
-     * their displacements from its position (the others); null when none has one or the player's
+     * the deciding player can reach its own ball, null when it does not know one); else the mean
+     * of their end points (those within {@link #NEAR} metres) and of their displacements from its
+     * position (the others); null when none has one or the player's
      * position is unknown. (A neighbour found as a transform's image, such as a mirrored scene,
      * counts as its stored scene.)
      */

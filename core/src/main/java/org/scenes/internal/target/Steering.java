@@ -23,11 +23,6 @@ public final class Steering {
     /** the moment of the latest body command when it was a turn, else 0 */
     private double lastTurn;
 
-    /** Whether the player ran for the ball at its latest decision. */
-    public boolean chasing() {
-        return chasing;
-    }
-
     /** Whether this share of ball runs sends the player for the ball now; remembered for the next decision. */
     boolean chase(double ballRunShare) {
         chasing = chasing ? ballRunShare >= KEEP : ballRunShare > START;
