@@ -59,14 +59,6 @@ final class ServerModel {
     }
 
     private static double num(Map<String, String> named, String name, double fallback) {
-        String value = named.get(name);
-        if (value == null) {
-            return fallback;
-        }
-        try {
-            return Double.parseDouble(value);
-        } catch (NumberFormatException e) {
-            return fallback;
-        }
+        return Parameters.number(named, name, fallback);
     }
 }

@@ -16,14 +16,22 @@ public record Parameters(String head, Map<String, String> named, List<String> po
 
     /** A named parameter as a number, {@code NaN} when absent or not numeric. */
     public double number(String name) {
-        String value = named.get(name);
+        return number(named, name, Double.NaN);
+    }
+
+    /**
+     * A parameter of a name-to-value map (a {@link #named()}, or several merged) as a number,
+     * {@code fallback} when the map or the name is absent or the value not numeric.
+     */
+    public static double number(Map<String, String> named, String name, double fallback) {
+        String value = named == null ? null : named.get(name);
         if (value == null) {
-            return Double.NaN;
+            return fallback;
         }
         try {
             return Double.parseDouble(value);
         } catch (NumberFormatException e) {
-            return Double.NaN;
+            return fallback;
         }
     }
 }

@@ -1,6 +1,7 @@
 package org.scenes.internal.vision;
 
 import java.util.Map;
+import org.scenes.internal.protocol.Parameters;
 
 /**
  * The parameters of the server's vision model: {@code visible_distance} (objects sensed behind),
@@ -53,15 +54,7 @@ public record VisionParams(double visibleDistance, double quantizeStep, double q
                 ballFar, ballTooFar, flagFar, flagTooFar);
     }
 
-    private static double number(Map<String, String> params, String name, double fallback) {
-        String value = params == null ? null : params.get(name);
-        if (value == null) {
-            return fallback;
-        }
-        try {
-            return Double.parseDouble(value);
-        } catch (NumberFormatException e) {
-            return fallback;
-        }
+    private static double number(Map<String, String> named, String name, double fallback) {
+        return Parameters.number(named, name, fallback);
     }
 }
