@@ -18,9 +18,9 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.server.GameSeries;
-import org.scenes.agent.server.ServerConfig;
-import org.scenes.agent.server.ServerResult;
+import org.scenes.simulator.server.GameSeries;
+import org.scenes.simulator.server.ServerConfig;
+import org.scenes.simulator.server.ServerResult;
 import org.scenes.testing.Processes;
 
 /**

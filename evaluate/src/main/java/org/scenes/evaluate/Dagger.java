@@ -8,12 +8,12 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Random;
 import java.util.function.LongConsumer;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
 import org.scenes.agent.imitation.ImitationBrain;
-import org.scenes.agent.sim.GameSetup;
 import org.scenes.api.Scene;
 import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.GameSetup;
 
 /**
  * Learning from the corrections (DAgger, dataset aggregation: Ross, Gordon and Bagnell 2011),

@@ -8,11 +8,7 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.function.LongConsumer;
 import java.util.stream.Stream;
-import org.scenes.agent.BrainFactory;
 import org.scenes.agent.imitation.ImitationBrain;
-import org.scenes.agent.sim.GameResult;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginRegistry;
@@ -24,6 +20,10 @@ import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.target.Replay;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.GameResult;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
 
 /**
  * Learns an imitator from its teacher's own games, in process, through the same steps a user

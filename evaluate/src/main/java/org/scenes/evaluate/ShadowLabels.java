@@ -3,13 +3,13 @@ package org.scenes.evaluate;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
-import org.scenes.agent.Brain;
 import org.scenes.api.Action;
 import org.scenes.api.Scene;
 import org.scenes.internal.protocol.CommandType;
 import org.scenes.internal.protocol.Message;
 import org.scenes.internal.protocol.MessageParser;
 import org.scenes.internal.protocol.PlayerCommand;
+import org.scenes.simulator.Brain;
 
 /**
  * DAgger's labels for one imitating player: each scene the imitator built from a see, with the

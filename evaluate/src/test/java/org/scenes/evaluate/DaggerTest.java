@@ -7,11 +7,11 @@ import java.io.IOException;
 import java.util.List;
 import java.util.Objects;
 import org.junit.jupiter.api.Test;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.teacher.Teachers;
 
 class DaggerTest {
     private static final GameSetup.Team TEACHER = new GameSetup.Team("Teal", 2, Teachers.byName("krislet"));

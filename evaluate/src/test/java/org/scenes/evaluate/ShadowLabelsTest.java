@@ -6,11 +6,11 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
 import org.junit.jupiter.api.Test;
-import org.scenes.agent.Brain;
 import org.scenes.api.Action;
 import org.scenes.api.ActionType;
 import org.scenes.api.Observer;
 import org.scenes.api.Scene;
+import org.scenes.simulator.Brain;
 
 class ShadowLabelsTest {
     private static final List<String> MESSAGES = List.of("(init l 1 before_kick_off)", "(player_type (id 0))",

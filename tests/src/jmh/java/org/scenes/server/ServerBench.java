@@ -19,16 +19,16 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
-import org.scenes.agent.BrainFactory;
 import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.LivePlayer;
 import org.scenes.agent.net.ServerAddress;
-import org.scenes.agent.server.ServerConfig;
-import org.scenes.agent.server.ServerResult;
-import org.scenes.agent.server.SoccerServer;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Side;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.server.ServerConfig;
+import org.scenes.simulator.server.ServerResult;
+import org.scenes.simulator.server.SoccerServer;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * One whole game of {@code scenes server} with two teacher teams of 11 players each, all 22

@@ -10,7 +10,6 @@ import java.util.Objects;
 import java.util.TreeMap;
 import java.util.function.Function;
 import java.util.function.Supplier;
-import org.scenes.agent.BrainFactory;
 import org.scenes.api.Action;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.ActionType;
@@ -21,6 +20,7 @@ import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.internal.scene.SceneSource;
 import org.scenes.internal.target.Replay;
+import org.scenes.simulator.BrainFactory;
 
 /**
  * What an imitation team knows, by role: the whole team's scenes, and for each recorded player
@@ -148,7 +148,7 @@ public final class ImitationTeam {
                                ImitationBrain.Guards guards, Replay replay) {
         return new BrainFactory() {
             @Override
-            public org.scenes.agent.Brain create(String teamName, java.util.Random random) {
+            public org.scenes.simulator.Brain create(String teamName, java.util.Random random) {
                 return new ImitationBrain(teamName, ImitationTeam.this, selectors.get(), transforms, random, guards,
                         replay);
             }

@@ -11,8 +11,6 @@ import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
 import org.scenes.api.Action;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.Grid;
@@ -27,6 +25,8 @@ import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileWriter;
 import org.scenes.internal.scene.SceneSource;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
 
 /** Roles: each imitating player plays on its counterpart's scenes and takes its kick-off moves. */
 class ImitationTeamTest {

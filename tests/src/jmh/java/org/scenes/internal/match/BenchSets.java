@@ -8,7 +8,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.function.Supplier;
-import org.scenes.agent.sim.SyntheticScenes;
 import org.scenes.api.Grid;
 import org.scenes.api.ObjectWeights;
 import org.scenes.api.PluginConfig;
@@ -16,6 +15,7 @@ import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneMetric;
 import org.scenes.internal.convert.SceneConverter;
+import org.scenes.simulator.SyntheticScenes;
 
 /**
  * The scene sets of the scaling benchmarks: synthetic knowledge bases of any size (seed 1) with

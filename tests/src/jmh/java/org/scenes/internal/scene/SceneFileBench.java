@@ -26,12 +26,12 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import org.openjdk.jmh.infra.Blackhole;
-import org.scenes.agent.sim.SyntheticScenes;
 import org.scenes.api.Grid;
 import org.scenes.api.Scene;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.files.Inputs;
 import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.simulator.SyntheticScenes;
 
 /**
  * Scene files: one operation reads or writes a whole file. Secondary scores per second:
