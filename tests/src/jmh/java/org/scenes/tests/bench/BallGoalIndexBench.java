@@ -1,4 +1,4 @@
-package org.scenes.internal.match;
+package org.scenes.tests.bench;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -27,6 +27,8 @@ import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
 import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
 
 /**
  * Latency of one decision's k-NN search ({@link Recognizer#nearest}) with {@code ball-goal} over

@@ -1,4 +1,4 @@
-package org.scenes.internal.match;
+package org.scenes.tests.bench;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -22,6 +22,8 @@ import org.scenes.api.PluginConfig;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
 import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
 
 /**
  * k-NN search with a metric, as validation and the live agent run it: one operation finds the

@@ -1,4 +1,4 @@
-package org.scenes.internal.match;
+package org.scenes.tests.bench;
 
 import java.io.IOException;
 import java.lang.management.ManagementFactory;
@@ -17,6 +17,8 @@ import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
 import org.scenes.api.SeenObject;
 import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
 
 /**
  * Heap taken by a knowledge base of real-size scenes and by each metric's packed form of it

@@ -1,4 +1,4 @@
-package org.scenes.server;
+package org.scenes.tests.bench;
 
 import java.time.Duration;
 import java.util.ArrayList;

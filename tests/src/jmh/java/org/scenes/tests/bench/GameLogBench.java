@@ -1,4 +1,4 @@
-package org.scenes.internal.convert;
+package org.scenes.tests.bench;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -22,6 +22,8 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import org.scenes.api.Grid;
+import org.scenes.internal.convert.GameLogConverter;
+import org.scenes.internal.convert.Pairing;
 import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileWriter;
 import org.scenes.internal.scene.SceneSource;

@@ -1,4 +1,4 @@
-package org.scenes.internal.match;
+package org.scenes.tests.bench;
 
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -16,6 +16,7 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import org.scenes.api.Neighbour;
 import org.scenes.api.Scene;
+import org.scenes.internal.match.Recognizer;
 
 /**
  * How matching scales: scenes compared per second when one query is scanned over a synthetic

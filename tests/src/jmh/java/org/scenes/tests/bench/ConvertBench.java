@@ -1,4 +1,4 @@
-package org.scenes.internal.convert;
+package org.scenes.tests.bench;
 
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
@@ -22,6 +22,8 @@ import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import org.openjdk.jmh.infra.Blackhole;
 import org.scenes.api.Grid;
+import org.scenes.internal.convert.LogReader;
+import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.files.Inputs;
 import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileWriter;

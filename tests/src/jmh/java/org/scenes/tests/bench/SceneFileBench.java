@@ -1,4 +1,4 @@
-package org.scenes.internal.scene;
+package org.scenes.tests.bench;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -31,6 +31,11 @@ import org.scenes.api.Scene;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.files.Inputs;
 import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileHeader;
+import org.scenes.internal.scene.SceneFileReader;
+import org.scenes.internal.scene.SceneFileWriter;
+import org.scenes.internal.scene.SceneSource;
 import org.scenes.simulator.SyntheticScenes;
 
 /**

@@ -1,4 +1,4 @@
-package org.scenes.internal.match;
+package org.scenes.tests.bench;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -15,6 +15,8 @@ import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneMetric;
 import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
 import org.scenes.simulator.SyntheticScenes;
 
 /**

@@ -1,4 +1,4 @@
-package org.scenes.internal.match;
+package org.scenes.tests.bench;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -16,6 +16,7 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import org.scenes.api.Scene;
+import org.scenes.internal.match.KnowledgeBase;
 
 /**
  * The two references of {@link MatchBench} on the sets of {@link ScaleBench} and

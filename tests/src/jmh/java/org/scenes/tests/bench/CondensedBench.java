@@ -1,4 +1,4 @@
-package org.scenes.internal.match;
+package org.scenes.tests.bench;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -23,8 +23,10 @@ import org.scenes.api.Grid;
 import org.scenes.api.Neighbour;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneMetric;
+import org.scenes.coverage.Condenser;
 import org.scenes.internal.convert.SceneConverter;
-import org.scenes.plugins.coverage.Condenser;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
 
 /**
  * A {@code ball-goal} decision ({@link Recognizer#nearest}, k = 1) on the whole of the recorded

@@ -1,4 +1,4 @@
-package org.scenes.internal.match;
+package org.scenes.tests.bench;
 
 import java.util.List;
 import java.util.SplittableRandom;
@@ -21,6 +21,8 @@ import org.scenes.api.ActionSelector;
 import org.scenes.api.PluginConfig;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
+import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.match.Recognizer;
 
 /**
  * The time of one decision of the imitating agent: the k nearest stored scenes of a query
