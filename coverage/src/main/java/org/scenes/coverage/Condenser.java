@@ -1,4 +1,4 @@
-package org.scenes.plugins.coverage;
+package org.scenes.coverage;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -1,4 +1,4 @@
-package org.scenes.plugins.coverage;
+package org.scenes.coverage;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
