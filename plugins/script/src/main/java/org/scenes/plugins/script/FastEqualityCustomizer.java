@@ -1,4 +1,4 @@
-package org.scenes.script;
+package org.scenes.plugins.script;
 
 import org.codehaus.groovy.ast.ClassCodeExpressionTransformer;
 import org.codehaus.groovy.ast.ClassHelper;

@@ -1,4 +1,4 @@
-package org.scenes.script;
+package org.scenes.plugins.script;
 
 import groovy.lang.Script;
 import java.util.ArrayList;

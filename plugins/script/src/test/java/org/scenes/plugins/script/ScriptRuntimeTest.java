@@ -1,4 +1,4 @@
-package org.scenes.script;
+package org.scenes.plugins.script;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;

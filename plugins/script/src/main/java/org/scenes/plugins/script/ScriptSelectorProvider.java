@@ -1,4 +1,4 @@
-package org.scenes.script;
+package org.scenes.plugins.script;
 
 import org.scenes.api.ActionSelector;
 import org.scenes.api.PluginConfig;

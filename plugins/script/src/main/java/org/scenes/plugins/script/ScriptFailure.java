@@ -1,4 +1,4 @@
-package org.scenes.script;
+package org.scenes.plugins.script;
 
 /**
  * An exception thrown by a script while it ran, located in the script: {@code file:line}

@@ -1,4 +1,4 @@
-package org.scenes.script;
+package org.scenes.plugins.script;
 
 import java.util.Set;
 import org.codehaus.groovy.ast.ASTNode;

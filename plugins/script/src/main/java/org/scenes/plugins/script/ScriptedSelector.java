@@ -1,4 +1,4 @@
-package org.scenes.script;
+package org.scenes.plugins.script;
 
 import java.util.List;
 import java.util.random.RandomGenerator;

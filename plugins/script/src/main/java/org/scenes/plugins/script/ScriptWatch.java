@@ -1,4 +1,4 @@
-package org.scenes.script;
+package org.scenes.plugins.script;
 
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
