@@ -7,13 +7,13 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Random;
+import java.util.TreeMap;
 import java.util.function.LongConsumer;
 import org.scenes.agent.Brain;
 import org.scenes.agent.BrainFactory;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.api.Scene;
-import org.scenes.internal.match.KnowledgeBase;
 
 /**
  * Learning from the corrections (DAgger, dataset aggregation: Ross, Gordon and Bagnell 2011),
@@ -80,20 +80,21 @@ public final class Dagger {
     }
 
     private final Evaluation.Plan plan;
-    private final Learner.Matching matching;
     private final int thinkSteps;
-    private KnowledgeBase knowledge;
+    private Learner.Imitator imitator;
     private int added;
-    private List<List<Scene>> corrections = List.of();
+    /** The last round's labelled scenes, one sequence per imitating player and game. */
+    private List<ShadowLabels> corrections = List.of();
     private List<PlayedGame> teacherGames;
     private int rounds;
 
     /**
      * Rounds on {@code plan}'s teacher, opponent, cycles and seeds (its imitator is not used),
-     * starting from {@code knowledge}, matched as {@code matching} says; the imitator decides every
-     * {@code thinkSteps} steps ({@link PacedBrain}).
+     * starting from {@code imitator} (with its roles, when it has them: each player's labels join
+     * its counterpart's knowledge too); the imitator decides every {@code thinkSteps} steps
+     * ({@link PacedBrain}).
      */
-    public Dagger(Evaluation.Plan plan, KnowledgeBase knowledge, Learner.Matching matching, int thinkSteps) {
+    public Dagger(Evaluation.Plan plan, Learner.Imitator imitator, int thinkSteps) {
         if (plan.shadow() == null) {
             throw new IllegalArgumentException("DAgger labels with a shadow teacher: the teacher in process, or an"
                     + " external one beside each imitating player");
@@ -102,8 +103,7 @@ public final class Dagger {
             throw new IllegalArgumentException("think steps must be 0 or more, not " + thinkSteps);
         }
         this.plan = plan;
-        this.knowledge = knowledge;
-        this.matching = matching;
+        this.imitator = imitator;
         this.thinkSteps = thinkSteps;
     }
 
@@ -119,13 +119,16 @@ public final class Dagger {
      */
     public Round next(Arena arena, LongConsumer progress) throws IOException {
         if (!corrections.isEmpty()) {
-            knowledge = extended(knowledge, corrections);
+            Map<Integer, List<List<Scene>>> byPlayer = new TreeMap<>();
+            for (ShadowLabels player : corrections) {
+                byPlayer.computeIfAbsent(player.unum(), unum -> new ArrayList<>()).add(player.labelled());
+            }
+            imitator = imitator.plus(byPlayer);
         }
-        Learner.Imitator imitator = Learner.of(knowledge, matching);
         boolean first = teacherGames == null;
         List<PlayedGame> teacher = first ? new ArrayList<>() : teacherGames;
         List<PlayedGame> imitating = new ArrayList<>();
-        List<List<Scene>> labelled = new ArrayList<>();
+        List<ShadowLabels> labelled = new ArrayList<>();
         long[] done = {0};
         for (long seed : plan.seeds()) {
             if (first) {
@@ -137,13 +140,12 @@ public final class Dagger {
                     labelling.imitator());
             imitating.add(Evaluation.play(PlayedGame.Role.IMITATOR, team, labelling.shadow(), plan, seed, arena, done,
                     progress));
-            for (ShadowLabels player : labelling.players) {
-                labelled.add(player.labelled());
-            }
+            labelled.addAll(labelling.players);
         }
         teacherGames = teacher;
         Evaluation.Results results = new Evaluation.Results(teacher, imitating);
-        Round round = new Round(rounds++, knowledge.size(), added, labelled.stream().mapToInt(List::size).sum(),
+        Round round = new Round(rounds++, imitator.scenes(), added,
+                labelled.stream().mapToInt(player -> player.labelled().size()).sum(),
                 Comparison.of(results), results);
         corrections = labelled;
         added = round.labelled();
@@ -152,18 +154,7 @@ public final class Dagger {
 
     /** The scenes the last round labelled, one sequence per imitating player and game, in seed and uniform number order. */
     List<List<Scene>> corrections() {
-        return corrections;
-    }
-
-    /** {@code base}'s stored scenes and the labelled sequences through fresh transforms each. */
-    KnowledgeBase extended(KnowledgeBase base, List<List<Scene>> sequences) {
-        KnowledgeBase.Builder builder = KnowledgeBase.builder(base.grid());
-        // stored scenes are already transformed: copied as they are
-        base.scenes().forEach(builder::add);
-        for (List<Scene> sequence : sequences) {
-            builder.addSequence(sequence, matching.transforms().get());
-        }
-        return builder.build();
+        return corrections.stream().map(ShadowLabels::labelled).toList();
     }
 
     /**
