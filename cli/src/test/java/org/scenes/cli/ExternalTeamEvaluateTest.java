@@ -125,6 +125,24 @@ class ExternalTeamEvaluateTest {
             assertEquals(4, inits.size(), "two players in each of two games: " + inits);
             assertTrue(inits.stream().allMatch(l -> l.contains("(version 18)")), inits.toString());
         }
+        // DAgger beside an external teacher: its program as the shadow; the teacher's figures only the logs give
+        Path daggerLogs = Files.createDirectories(dir.resolve("dagger-logs"));
+        try (Server server = new Server(daggerLogs, 3, 100)) {
+            CommandRunner cli = new CommandRunner();
+            int status = cli.run("evaluate", "--server", "127.0.0.1:" + server.port, "--server-logs", daggerLogs,
+                    "--server-wait", "60", "--teacher-command", teamCommand("7356"), "--shadow-command",
+                    teamCommand("7357").replace("{players}", "1"), "--players", "1", "--opponent", "krislet:1",
+                    "--cycles", "100", "--seeds", "1", "--metric", "ball-goal", "--knowledge", "counterpart",
+                    perPlayer.resolve("Teal_1.json.gz"), "--dagger", "1");
+            assertEquals(ExitCodes.OK, status, cli.err());
+            assertEquals(3, server.served().size(), "the teacher's game and two rounds of the imitator's");
+            String teacherRow = cli.out().lines().filter(l -> l.startsWith("teacher ")).findFirst().orElseThrow();
+            assertTrue(teacherRow.matches("teacher\\s+\\d+\\.\\d\\d\\s+-\\s+-\\s*"),
+                    "goals from the logs; no stuck share or distance without the teacher's traces: " + teacherRow);
+            assertTrue(cli.out().lines().anyMatch(l -> l.startsWith("1 ")), cli.out());
+        }
+        Processes.assertNoneRunning("7356");
+        Processes.assertNoneRunning("7357");
         CommandRunner usage = new CommandRunner();
         assertEquals(ExitCodes.USAGE, usage.run("evaluate", "--knowledge", "counterpart"));
         assertTrue(usage.err().contains("--knowledge: roles come from the uniform numbers of scene files"),

@@ -42,19 +42,31 @@ public final class Dagger {
                     "goals", "mix JSD", "stuck", "to ball", "agreement", "Turing");
         }
 
-        /** The teacher's figures in the columns of {@link #row} that it has. */
+        /** The teacher's figures in the columns of {@link #row} that it has ("-": not measured). */
         public String teacherRow() {
-            return String.format(Locale.ROOT, "%-8s %8s %7s %8.2f %8s %6.1f%% %8.1f %9s %7s", "teacher", "", "",
-                    comparison.figure("goalsPer1000").teacher().mean(), "", 100 * figure("stuckShare", true),
-                    comparison.figure("ballDistance").teacher().mean(), "", "");
+            return String.format(Locale.ROOT, "%-8s %8s %7s %8s %8s %7s %8s %9s %7s", "teacher", "", "",
+                    cell(figure("goalsPer1000", true), 1, "%.2f"), "", cell(figure("stuckShare", true), 100, "%.1f%%"),
+                    cell(figure("ballDistance", true), 1, "%.1f"), "", "");
         }
 
-        /** Goals per 1000 cycles, action-mix JSD, stuck share, distance to the ball, agreement, Turing accuracy. */
+        /**
+         * Goals per 1000 cycles, action-mix JSD, stuck share, distance to the ball, agreement, Turing
+         * accuracy ("-": not measured, such as the stuck share of an external teacher without traces).
+         */
         public String row() {
-            return String.format(Locale.ROOT, "%-8d %8d %7d %8.2f %8.4f %6.1f%% %8.1f %8.1f%% %6.1f%%", number, scenes,
-                    added, figure("goalsPer1000", false), comparison.divergence().mean(),
-                    100 * figure("stuckShare", false), figure("ballDistance", false), 100 * figure("agreement", false),
-                    100 * comparison.turing().accuracy());
+            return String.format(Locale.ROOT, "%-8d %8d %7d %8s %8.4f %7s %8s %9s %6.1f%%", number, scenes,
+                    added, cell(figure("goalsPer1000", false), 1, "%.2f"), comparison.divergence().mean(),
+                    cell(figure("stuckShare", false), 100, "%.1f%%"), cell(figure("ballDistance", false), 1, "%.1f"),
+                    cell(figure("agreement", false), 100, "%.1f%%"), 100 * comparison.turing().accuracy());
+        }
+
+        /** A figure for JSON: null when it was not measured. */
+        private static Double measured(double value) {
+            return Double.isNaN(value) ? null : value;
+        }
+
+        private static String cell(double value, double scale, String format) {
+            return Double.isNaN(value) ? "-" : String.format(Locale.ROOT, format, scale * value);
         }
 
         /** The row's figures by name, for JSON. */
@@ -64,16 +76,20 @@ public final class Dagger {
             json.put("scenes", scenes);
             json.put("added", added);
             json.put("labelled", labelled);
-            json.put("goalsPer1000", figure("goalsPer1000", false));
+            json.put("goalsPer1000", measured(figure("goalsPer1000", false)));
             json.put("divergence", comparison.divergence().mean());
-            json.put("stuckShare", figure("stuckShare", false));
-            json.put("ballDistance", figure("ballDistance", false));
-            json.put("agreement", figure("agreement", false));
+            json.put("stuckShare", measured(figure("stuckShare", false)));
+            json.put("ballDistance", measured(figure("ballDistance", false)));
+            json.put("agreement", measured(figure("agreement", false)));
             json.put("turing", comparison.turing().accuracy());
             return json;
         }
 
+        /** The figure's mean, NaN when it was not measured. */
         private double figure(String key, boolean teacher) {
+            if (!comparison.has(key)) {
+                return Double.NaN;
+            }
             Comparison.Figure figure = comparison.figure(key);
             return (teacher ? figure.teacher() : figure.imitator()).mean();
         }
