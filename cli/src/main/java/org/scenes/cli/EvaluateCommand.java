@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.scenes.agent.imitation.ImitationTeam;
 import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.ServerAddress;
 import org.scenes.api.PluginRegistry;
@@ -95,6 +96,20 @@ final class EvaluateCommand implements Callable<Integer> {
             description = "Pace the imitator like the Krislet client's think loop: decide on the latest see every N"
                     + " steps (Krislet: 2); 0 answers every see, as 'scenes play' does. Default: ${DEFAULT-VALUE}.")
     int thinkSteps;
+
+    @Option(names = "--knowledge", paramLabel = "counterpart|team", converter = ImitationTeamOptions.KnowledgeConverter.class,
+            description = "With SCENES: an imitation team with roles, as 'scenes play' assembles it: each player on its"
+                    + " counterpart's scenes (the recorded player with its uniform number; counterpart) or everyone's"
+                    + " (team), with its counterpart's kick-off moves, set-play kicks and goalie flag; --dagger's labels"
+                    + " join the labelling player's counterpart's scenes too. Default: no roles, every player on all"
+                    + " the scenes.")
+    ImitationTeam.Knowledge knowledge;
+
+    @Option(names = "--version", paramLabel = "V", defaultValue = "9",
+            description = "With --server: the protocol version our players (the imitator, and teams played in process)"
+                    + " send in their inits, 7 to 19; a --shadow-command gets its player's messages. Default:"
+                    + " ${DEFAULT-VALUE}.")
+    int version;
 
     @Option(names = "--dagger", paramLabel = "N", defaultValue = "0",
             description = "After the evaluation, N rounds of DAgger: the scenes the imitator built in its games (the"
@@ -299,7 +314,7 @@ final class EvaluateCommand implements Callable<Integer> {
     /** Everything the evaluation needs, checked. */
     record Setup(String teacherName, GameSetup.Team teacher, GameSetup.Team opponent, Side side, MatchConfig config,
                  PluginRegistry registry, List<Path> sceneFiles, int trainGames, int cycles, List<Long> seeds,
-                 int thinkSteps, int dagger, ExternalShadow shadow) {
+                 ImitationTeam.Knowledge knowledge, int thinkSteps, int dagger, ExternalShadow shadow) {
     }
 
     /** The evaluation's games (of the last DAgger round), figures, DAgger rounds (or none) and what was compared. */
@@ -330,6 +345,9 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         if (dagger < 0) {
             throw new UsageException("--dagger: must be 0 or more rounds, not " + dagger);
+        }
+        if (knowledge != null && sceneFiles.isEmpty()) {
+            throw new UsageException("--knowledge: roles come from the uniform numbers of scene files; give SCENES");
         }
         if (dagger > 0 && teacherCommand != null && shadowCommand == null) {
             throw new UsageException("--dagger: labels with a shadow teacher; with --teacher-command give the teacher"
@@ -379,7 +397,7 @@ final class EvaluateCommand implements Callable<Integer> {
                 Duration.ofMillis(Math.round(serverWait * 1000)));
         return new Setup(teacherCommand != null ? "the command '" + teacherCommand + "'" : teacher, teacherTeam,
                 opponentTeam, teacherCommand != null ? Side.RIGHT : Side.LEFT, configs.get(0), top.global.registry(),
-                sceneFiles, trainGames, cycles, seedList, thinkSteps, dagger, shadow);
+                sceneFiles, trainGames, cycles, seedList, knowledge, thinkSteps, dagger, shadow);
     }
 
     /** The embedded simulator, or with --server the live server. */
@@ -401,8 +419,14 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         PrintWriter err = spec.commandLine().getErr();
         // an init is given 5 s: one answered after its player gave up leaves a player on the server
-        return new LiveArena(ClientOptions.of(address, "Teal").withTimeouts(Duration.ofSeconds(5), Duration.ofSeconds(10)),
-                serverLogs, Duration.ofMillis(Math.round(serverWait * 1000)), line -> {
+        ClientOptions client;
+        try {
+            client = ClientOptions.of(address, "Teal").withVersion(version);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("--version: " + e.getMessage());
+        }
+        return new LiveArena(client.withTimeouts(Duration.ofSeconds(5), Duration.ofSeconds(10)), serverLogs,
+                Duration.ofMillis(Math.round(serverWait * 1000)), line -> {
                     synchronized (err) {
                         err.println(line);
                         err.flush();
@@ -437,10 +461,13 @@ final class EvaluateCommand implements Callable<Integer> {
                     + " cycles against the same opponent, seeds " + trainingSeeds + " (" + imitator.scenes() + " scenes)");
         } else {
             // a file the knowledge base cannot hold is failed work (exit 1), its message names the file
-            KnowledgeBase knowledge = KnowledgeBase.load(setup.sceneFiles(), matching.transforms());
-            imitator = Learner.of(knowledge, matching);
+            imitator = setup.knowledge() == null
+                    ? Learner.of(KnowledgeBase.load(setup.sceneFiles(), matching.transforms()), matching)
+                    : Learner.roles(setup.sceneFiles(), matching, setup.knowledge());
             about.put("imitator learnt from", setup.sceneFiles().size() + " scene files (" + imitator.scenes()
                     + " scenes): " + String.join(" ", setup.sceneFiles().stream().map(Path::toString).toList()));
+            about.put("roles", imitator.roles() == null ? "none: every player on all the scenes"
+                    : imitator.roles().describe());
         }
         about.put("matching", setup.config().describe());
         about.put("imitator tempo", setup.thinkSteps() == 0 ? "answers every see"
@@ -464,7 +491,7 @@ final class EvaluateCommand implements Callable<Integer> {
                 : setup.teacherName() + " in process");
         Evaluation.Results results;
         Comparison comparison;
-        List<Dagger.Round> rounds = setup.dagger() == 0 ? List.of() : dagger(setup, plan, imitator, matching, arena, out);
+        List<Dagger.Round> rounds = setup.dagger() == 0 ? List.of() : dagger(setup, plan, imitator, arena, out);
         if (rounds.isEmpty()) {
             try (TerminalProgress bar = TerminalProgress.start("Evaluating", plan.totalCycles(), " cycles", 1)) {
                 results = Evaluation.run(plan, arena, bar.stepper());
@@ -492,10 +519,10 @@ final class EvaluateCommand implements Callable<Integer> {
     }
 
     /** DAgger's rounds 0 to {@code --dagger}, a row printed and a progress bar per round. */
-    private static List<Dagger.Round> dagger(Setup setup, Evaluation.Plan plan, Learner.Imitator imitator,
-                                             Learner.Matching matching, Arena arena, PrintWriter out)
+    private static List<Dagger.Round> dagger(Setup setup, Evaluation.Plan plan, Learner.Imitator imitator, Arena arena,
+                                             PrintWriter out)
             throws IOException {
-        Dagger dagger = new Dagger(plan, imitator.knowledge(), matching, setup.thinkSteps());
+        Dagger dagger = new Dagger(plan, imitator, setup.thinkSteps());
         if (out != null) {
             out.println(Dagger.Round.header());
             out.flush();

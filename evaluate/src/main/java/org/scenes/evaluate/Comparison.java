@@ -112,6 +112,11 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
                         traced ? divergence : executedDivergence, turing), seeds);
     }
 
+    /** Whether the comparison has the figure: some are measured only with traces or server logs. */
+    public boolean has(String key) {
+        return figures.stream().anyMatch(f -> f.key().equals(key));
+    }
+
     public Figure figure(String key) {
         return figures.stream().filter(f -> f.key().equals(key)).findFirst()
                 .orElseThrow(() -> new IllegalArgumentException("no figure " + key));

@@ -84,6 +84,15 @@ class ShadowLabelsTest {
     }
 
     @Test
+    void theLabelsBelongToTheUniformNumberTheServerGaveTheImitator() {
+        ShadowLabels labels = new ShadowLabels();
+        Brain imitator = labels.imitator(imitator(labels));
+        assertEquals(0, labels.unum(), "unknown before the init is answered");
+        imitator.receive("(init r 7 before_kick_off)", command -> { });
+        assertEquals(7, labels.unum());
+    }
+
+    @Test
     void aSceneBuiltAgainOnTheSameSeeIsLabelledOnce() {
         ShadowLabels labels = new ShadowLabels();
         Brain imitator = labels.imitator((message, send) -> {

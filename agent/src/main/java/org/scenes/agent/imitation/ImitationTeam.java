@@ -123,6 +123,27 @@ public final class ImitationTeam {
         return new ImitationTeam(team, counterparts, knowledge);
     }
 
+    /**
+     * This team with more scenes: DAgger's labelled sequences, by the uniform number of the player
+     * that built them. All join the team's knowledge; each player's also join its counterpart's
+     * (when it has its own). Moves, set-play kicks and goalies stay as recorded.
+     *
+     * @param recognizers makes the recognizer (metric, k) of a knowledge base
+     */
+    public ImitationTeam plus(Map<Integer, List<List<Scene>>> sequences, Supplier<List<SceneTransform>> transforms,
+                              Function<KnowledgeBase, Recognizer> recognizers) {
+        List<List<Scene>> all = sequences.values().stream().flatMap(List::stream).toList();
+        Map<Integer, Counterpart> corrected = new TreeMap<>();
+        for (Counterpart counterpart : counterparts.values()) {
+            List<List<Scene>> own = sequences.getOrDefault(counterpart.unum(), List.of());
+            Recognizer recognizer = counterpart.recognizer() == null || own.isEmpty() ? counterpart.recognizer()
+                    : recognizers.apply(counterpart.recognizer().knowledge().plus(own, transforms));
+            corrected.put(counterpart.unum(), new Counterpart(counterpart.unum(), counterpart.goalie(), recognizer,
+                    counterpart.moves(), counterpart.setPlayKicks()));
+        }
+        return new ImitationTeam(recognizers.apply(team.knowledge().plus(all, transforms)), corrected, knowledge);
+    }
+
     /** The first move of each run of scenes whose primary action is a move. */
     static List<Action> kickOffMoves(Iterable<Scene> scenes) {
         List<Action> moves = new ArrayList<>();
@@ -175,6 +196,11 @@ public final class ImitationTeam {
     Recognizer recognizer(int unum) {
         Counterpart counterpart = counterparts.get(unum);
         return counterpart != null && counterpart.recognizer() != null ? counterpart.recognizer() : team;
+    }
+
+    /** The team's knowledge base: every player's scenes. */
+    public KnowledgeBase knowledge() {
+        return team.knowledge();
     }
 
     /** Scenes in the team's knowledge base. */

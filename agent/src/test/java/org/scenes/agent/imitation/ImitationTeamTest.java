@@ -112,6 +112,33 @@ class ImitationTeamTest {
         assertTrue(withoutRoles.repeatsKickOffMove(), "a brain without roles keeps the runtime's repeat");
     }
 
+    /** What the player with this number answers to a ball 18 m ahead. */
+    private static List<String> answerAt18(BrainFactory brains, int unum) {
+        Brain brain = brains.create("Teal", new Random(1));
+        List<String> sent = new ArrayList<>();
+        brain.receive("(init l " + unum + " before_kick_off)", s -> { });
+        brain.receive("(see 50 ((b) 18 0))", sent::add);
+        return sent;
+    }
+
+    @Test
+    void labelledScenesJoinTheirPlayersCounterpartAndTheTeam() throws IOException {
+        ImitationTeam team = team(ImitationTeam.Knowledge.COUNTERPART);
+        Observer two = new Observer("Teal", Side.LEFT, 2);
+        // player 2's label: a dash at a ball 20 m ahead, nearer 18 m than any recorded scene (10 m, 30 m)
+        ImitationTeam labelled = team.plus(java.util.Map.of(2, List.of(List.of(
+                        new Scene(60, two, ballAt(20), List.of(Action.dash(77)))))), List::of,
+                knowledge -> new Recognizer(knowledge, () -> ImitationBrainTest.BALL, 1));
+        BrainFactory brains = labelled.brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF);
+        assertEquals(List.of("(dash 77)"), answerAt18(brains, 2));
+        assertEquals(List.of("(kick 100 0)"), answerAt18(brains, 1), "player 1's own scenes did not change");
+        assertEquals(team.scenes() + 1, labelled.scenes(), "the team's knowledge holds the label too");
+        assertEquals(List.of("(turn 30)"), answerAt18(team.brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF), 2),
+                "the team it was made from is unchanged");
+        assertTrue(brains.goalie(1), "roles stay");
+        assertEquals("(move -20 10)", play(brains, 2).get(0), "and the counterpart's kick-off move");
+    }
+
     @Test
     void kickOffMovesAreTheFirstOfEachRunOfMoves() {
         Observer player = new Observer("Teal", Side.LEFT, 3);

@@ -167,6 +167,19 @@ public final class KnowledgeBase {
         return grid;
     }
 
+    /**
+     * These stored scenes (already transformed: copied as they are) followed by {@code sequences},
+     * each through fresh transforms: how DAgger's labelled scenes join a knowledge base.
+     */
+    public KnowledgeBase plus(List<List<Scene>> sequences, Supplier<List<SceneTransform>> transforms) {
+        Builder builder = builder(grid);
+        scenes().forEach(builder::add);
+        for (List<Scene> sequence : sequences) {
+            builder.addSequence(sequence, transforms.get());
+        }
+        return builder.build();
+    }
+
     /** The scenes in order, each decoded anew when read: iterate once rather than index repeatedly. */
     public List<Scene> scenes() {
         return scenes;
