@@ -139,7 +139,11 @@ class ExternalTeamEvaluateTest {
             String teacherRow = cli.out().lines().filter(l -> l.startsWith("teacher ")).findFirst().orElseThrow();
             assertTrue(teacherRow.matches("teacher\\s+\\d+\\.\\d\\d\\s+-\\s+-\\s*"),
                     "goals from the logs; no stuck share or distance without the teacher's traces: " + teacherRow);
-            assertTrue(cli.out().lines().anyMatch(l -> l.startsWith("1 ")), cli.out());
+            String secondRound = cli.out().lines().filter(l -> l.startsWith("1 ")).findFirst().orElseThrow();
+            // round, scenes, added, goals, mix JSD, stuck, to ball, agreement, Turing: the mix's divergence from the
+            // executed commands of the logs, the agreement with the shadow program
+            String[] cells = secondRound.trim().split("\\s+");
+            assertTrue(cells[4].matches("\\d\\.\\d{4}") && cells[7].matches("\\d+\\.\\d%"), secondRound);
         }
         Processes.assertNoneRunning("7356");
         Processes.assertNoneRunning("7357");

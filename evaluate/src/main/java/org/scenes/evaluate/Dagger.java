@@ -55,9 +55,18 @@ public final class Dagger {
          */
         public String row() {
             return String.format(Locale.ROOT, "%-8d %8d %7d %8s %8.4f %7s %8s %9s %6.1f%%", number, scenes,
-                    added, cell(figure("goalsPer1000", false), 1, "%.2f"), comparison.divergence().mean(),
+                    added, cell(figure("goalsPer1000", false), 1, "%.2f"), divergence(),
                     cell(figure("stuckShare", false), 100, "%.1f%%"), cell(figure("ballDistance", false), 1, "%.1f"),
                     cell(figure("agreement", false), 100, "%.1f%%"), 100 * comparison.turing().accuracy());
+        }
+
+        /**
+         * The action mix's divergence from the teacher's: of the commands sent on sees when both were
+         * traced, else of the commands the server's logs show executed (an external teacher).
+         */
+        private double divergence() {
+            double sent = comparison.divergence().mean();
+            return Double.isNaN(sent) ? comparison.executedDivergence().mean() : sent;
         }
 
         /** A figure for JSON: null when it was not measured. */
@@ -77,7 +86,7 @@ public final class Dagger {
             json.put("added", added);
             json.put("labelled", labelled);
             json.put("goalsPer1000", measured(figure("goalsPer1000", false)));
-            json.put("divergence", comparison.divergence().mean());
+            json.put("divergence", divergence());
             json.put("stuckShare", measured(figure("stuckShare", false)));
             json.put("ballDistance", measured(figure("ballDistance", false)));
             json.put("agreement", measured(figure("agreement", false)));

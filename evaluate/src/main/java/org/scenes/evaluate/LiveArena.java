@@ -252,11 +252,15 @@ public final class LiveArena implements Arena {
      * Brains made as each player's init is answered, seeded as the embedded simulator seeds
      * them, behind the scoreboard.
      */
-    private static BrainFactory seeded(BrainFactory brains, long seed, Side side, Scoreboard board,
+    static BrainFactory seeded(BrainFactory brains, long seed, Side side, Scoreboard board,
                                        AtomicInteger connected, AtomicReference<String> wrongSide,
                                        Consumer<String> notices) {
+        // the runner makes the players' brains in order and starts each player once the one before was answered,
+        // so the server numbers them 1, 2, ... in the order made (answers are handled on the players' own threads)
+        AtomicInteger made = new AtomicInteger();
         return (teamName, ignored) -> new Brain() {
             private final MessageParser parser = new MessageParser();
+            private final int expected = made.incrementAndGet();
             private Brain inner;
             private int unum;
 
@@ -274,9 +278,8 @@ public final class LiveArena implements Arena {
                     }
                     unum = init.uniformNumber();
                     inner = brains.create(teamName, new Random(Simulator.brainSeed(seed, side, unum)));
-                    int expected = connected.incrementAndGet();
+                    connected.incrementAndGet();
                     if (unum != expected) {
-                        // players connect one after another, so the server numbers them 1, 2, ...
                         notices.accept(teamName + " player " + expected + " was given uniform number " + unum
                                 + ": the server holds a player of an earlier try (answered too late?); the game"
                                 + " is played, but not with the numbers and seeds of the game in process");
@@ -339,7 +342,7 @@ public final class LiveArena implements Arena {
     }
 
     /** What the players hear of the game: the clock, the score, time over, and their kick counters. */
-    private static final class Scoreboard {
+    static final class Scoreboard {
         final AtomicInteger time = new AtomicInteger();
         final AtomicInteger[] score = {new AtomicInteger(), new AtomicInteger()};
         final ConcurrentHashMap<String, Integer> kickCounters = new ConcurrentHashMap<>();
