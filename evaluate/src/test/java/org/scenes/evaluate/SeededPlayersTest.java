@@ -7,9 +7,9 @@ import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
 import org.scenes.api.Side;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
 
 /** A live team's players are numbered by the order their brains were made, whatever order their answers are handled in. */
 class SeededPlayersTest {
