@@ -20,10 +20,13 @@ import org.scenes.internal.scene.SceneFileReader;
 public final class KnowledgeBase {
     private final Grid grid;
     private final CompactScenes scenes;
+    /** The first scenes, in order, that a recorded player played; those after them are labels ({@link #plus}). */
+    private final int played;
 
-    private KnowledgeBase(Grid grid, CompactScenes scenes) {
+    private KnowledgeBase(Grid grid, CompactScenes scenes, int played) {
         this.grid = grid;
         this.scenes = scenes;
+        this.played = played;
     }
 
     public static KnowledgeBase of(Grid grid, List<Scene> scenes) {
@@ -67,7 +70,7 @@ public final class KnowledgeBase {
                 throw new IllegalStateException("the knowledge base was already built");
             }
             scenes.trim();
-            KnowledgeBase knowledge = new KnowledgeBase(grid, scenes);
+            KnowledgeBase knowledge = new KnowledgeBase(grid, scenes, scenes.size());
             scenes = null;
             return knowledge;
         }
@@ -169,7 +172,10 @@ public final class KnowledgeBase {
 
     /**
      * These stored scenes (already transformed: copied as they are) followed by {@code sequences},
-     * each through fresh transforms: how DAgger's labelled scenes join a knowledge base.
+     * each through fresh transforms: how DAgger's labelled scenes join a knowledge base. A label
+     * is a teacher's reply to a scene another player (the imitator) played on, so what followed
+     * it in its sequence is not where its action led: it counts as no player's play
+     * ({@link #played}).
      */
     public KnowledgeBase plus(List<List<Scene>> sequences, Supplier<List<SceneTransform>> transforms) {
         Builder builder = builder(grid);
@@ -177,7 +183,17 @@ public final class KnowledgeBase {
         for (List<Scene> sequence : sequences) {
             builder.addSequence(sequence, transforms.get());
         }
-        return builder.build();
+        KnowledgeBase built = builder.build();
+        return new KnowledgeBase(grid, built.scenes, played);
+    }
+
+    /**
+     * How many of the first scenes a recorded player played in order, so that what came after a
+     * scene in its sequence is what its action led to; the scenes after them are labels
+     * ({@link #plus}).
+     */
+    public int played() {
+        return played;
     }
 
     /** The scenes in order, each decoded anew when read: iterate once rather than index repeatedly. */
