@@ -253,8 +253,7 @@ public final class ImitationBrain implements Brain {
         perCycle = recognizer.splitsBySeeAge();
         ImitationTeam.Counterpart counterpart = roles.counterpart(unum);
         counterpartMoves = counterpart == null ? List.of() : counterpart.moves();
-        setPlayKicks = counterpart == null || counterpart.setPlayKicks() == null ? SetPlayKicks.NONE
-                : counterpart.setPlayKicks();
+        setPlayKicks = roles.setPlayKicks(unum);
     }
 
     /**

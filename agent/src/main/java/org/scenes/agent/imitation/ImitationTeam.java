@@ -71,11 +71,20 @@ public final class ImitationTeam {
     private final Recognizer team;
     private final Map<Integer, Counterpart> counterparts;
     private final Knowledge knowledge;
+    /** Every recorded player's set-play kicks together. */
+    private final SetPlayKicks teamSetPlayKicks;
 
     private ImitationTeam(Recognizer team, Map<Integer, Counterpart> counterparts, Knowledge knowledge) {
         this.team = Objects.requireNonNull(team, "team");
         this.counterparts = Collections.unmodifiableMap(new TreeMap<>(counterparts));
         this.knowledge = Objects.requireNonNull(knowledge, "knowledge");
+        SetPlayKicks kicks = SetPlayKicks.NONE;
+        for (Counterpart counterpart : this.counterparts.values()) {
+            if (counterpart.setPlayKicks() != null) {
+                kicks = kicks.with(counterpart.setPlayKicks());
+            }
+        }
+        teamSetPlayKicks = kicks;
     }
 
     /** A team without roles: every player matches {@code recognizer}'s scenes, as one pool. */
@@ -185,6 +194,16 @@ public final class ImitationTeam {
     /** The team's recognizer, for players before their number is known and those without a counterpart. */
     Recognizer team() {
         return team;
+    }
+
+    /**
+     * The set-play kicks player {@code unum} takes: its counterpart's, and the team's for the kinds
+     * its counterpart never took ({@link SetPlayKicks#orTeams}).
+     */
+    SetPlayKicks setPlayKicks(int unum) {
+        Counterpart counterpart = counterparts.get(unum);
+        return counterpart == null || counterpart.setPlayKicks() == null ? teamSetPlayKicks
+                : counterpart.setPlayKicks().orTeams(teamSetPlayKicks);
     }
 
     /** The recorded player with this uniform number, or null. */

@@ -2,6 +2,7 @@ package org.scenes.agent.imitation;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -137,6 +138,33 @@ class ImitationTeamTest {
                 "the team it was made from is unchanged");
         assertTrue(brains.goalie(1), "roles stay");
         assertEquals("(move -20 10)", play(brains, 2).get(0), "and the counterpart's kick-off move");
+    }
+
+    @Test
+    void aPlayerWhoseCounterpartNeverTookAKickOffTakesItAsTheTeamDid() throws IOException {
+        List<Path> files = new ArrayList<>();
+        for (int unum : new int[] {3, 4}) {
+            Observer player = new Observer("Teal", Side.LEFT, unum);
+            List<Scene> scenes = new ArrayList<>();
+            for (int t = 0; t <= 25; t++) {
+                // player 3 waits 25 cycles at its kick-off, then kicks; player 4 only turns
+                Action action = unum == 3 && t == 25 ? Action.kick(40, 90) : Action.turn(10);
+                scenes.add(new Scene(t, player, List.of(), List.of(action), null, 0, new org.scenes.api.World(-0.3, 0,
+                        0, 0, 0, 0, 8000, 1, 0, 0, 0, 0, 0, 0, List.of(), "kick_off_l", 0, 0)));
+            }
+            Path file = directory.resolve("Teal_" + unum + ".json");
+            SceneFileWriter.write(file, new SceneFile(SceneFileHeader.of(Grid.DEFAULT,
+                    new SceneSource("Teal_" + unum + ".lsf", player)), scenes));
+            files.add(file);
+        }
+        ImitationTeam team = ImitationTeam.load(files, List::of,
+                knowledge -> new Recognizer(knowledge, () -> ImitationBrainTest.BALL, 1),
+                ImitationTeam.Knowledge.COUNTERPART);
+        assertEquals(Action.kick(40, 90), team.setPlayKicks(4).due("kick_off_l", Side.LEFT, 25).primaryAction());
+        assertNull(team.setPlayKicks(4).due("kick_off_l", Side.LEFT, 24));
+        assertEquals(Action.kick(40, 90), team.setPlayKicks(3).due("kick_off_l", Side.LEFT, 25).primaryAction());
+        assertEquals(Action.kick(40, 90), team.setPlayKicks(9).due("kick_off_l", Side.LEFT, 30).primaryAction(),
+                "no counterpart: the team's");
     }
 
     @Test
