@@ -21,18 +21,22 @@ class SetPlayKicksTest {
         return new Scene(cycle, LEFT_TEN, List.of(), List.of(action), null, 0, world);
     }
 
-    /** A kick-off of the left team: the player turns for {@code wait} cycles, then kicks; play goes on. */
-    private static List<Scene> kickOff(int start, int wait, List<Scene> kicks) {
+    /** A set play of the left team: the player turns for {@code wait} cycles, then kicks; play goes on. */
+    private static List<Scene> setPlay(String mode, int start, int wait, Action kick, List<Scene> kicks) {
         List<Scene> scenes = new ArrayList<>();
         for (int t = 0; t < wait; t++) {
-            scenes.add(at(start + t, "kick_off_l", Action.turn(30)));
+            scenes.add(at(start + t, mode, Action.turn(30)));
         }
-        Scene kick = at(start + wait, "kick_off_l", Action.kick(50, 180));
-        kicks.add(kick);
-        scenes.add(kick);
+        Scene kicked = at(start + wait, mode, kick);
+        kicks.add(kicked);
+        scenes.add(kicked);
         scenes.add(at(start + wait + 1, "play_on", Action.kick(100, 0))); // a kick in play is no set play's
         scenes.add(at(start + wait + 2, "play_on", Action.dash(100)));
         return scenes;
+    }
+
+    private static List<Scene> kickOff(int start, int wait, List<Scene> kicks) {
+        return setPlay("kick_off_l", start, wait, Action.kick(50, 180), kicks);
     }
 
     @Test
@@ -54,26 +58,13 @@ class SetPlayKicksTest {
         assertNull(SetPlayKicks.ownKind("goal_l", Side.LEFT));
     }
 
-    /** A free kick of the left team: the player waits {@code wait} cycles, then kicks. */
-    private static List<Scene> freeKick(int start, int wait, List<Scene> kicks) {
-        List<Scene> scenes = new ArrayList<>();
-        for (int t = 0; t < wait; t++) {
-            scenes.add(at(start + t, "free_kick_l", Action.turn(30)));
-        }
-        Scene kick = at(start + wait, "free_kick_l", Action.kick(80, 10));
-        kicks.add(kick);
-        scenes.add(kick);
-        scenes.add(at(start + wait + 1, "play_on", Action.dash(100)));
-        return scenes;
-    }
-
     @Test
     void aKindThePlayerNeverTookIsTakenAsItsTeamTookIt() {
         List<Scene> own = new ArrayList<>();
         List<Scene> others = new ArrayList<>();
         SetPlayKicks player = SetPlayKicks.of(kickOff(0, 20, own));
         List<Scene> team = new ArrayList<>(kickOff(0, 50, others));
-        team.addAll(freeKick(100, 15, others));
+        team.addAll(setPlay("free_kick_l", 100, 15, Action.kick(80, 10), others));
         SetPlayKicks withTeam = player.orTeams(SetPlayKicks.of(team));
         // its own kick-off, after its own wait; the team's free kick, after the team's wait
         assertSame(own.get(0), withTeam.due("kick_off_l", Side.LEFT, 20));
