@@ -72,7 +72,7 @@ public final class WorldModel {
     private double seenBallY;
 
     /** Players seen with team and number, by relation and number; the rest of the latest see. */
-    private final Map<String, Seen> named = new LinkedHashMap<>();
+    private final Map<Long, Seen> named = new LinkedHashMap<>();
     private final List<Seen> unnamed = new ArrayList<>();
 
     private String playMode = "";
@@ -197,7 +197,7 @@ public final class WorldModel {
                         : object.team().equals(team) ? Relation.TEAMMATE : Relation.OPPONENT;
                 Seen seen = new Seen(relation, object.uniformNumber(), ox, oy, see.time());
                 if (relation != Relation.UNKNOWN && object.uniformNumber() > 0) {
-                    named.put(relation.key() + object.uniformNumber(), seen);
+                    named.put(namedKey(relation, object.uniformNumber()), seen);
                 } else {
                     unnamed.add(seen);
                 }
@@ -247,6 +247,11 @@ public final class WorldModel {
             return;
         }
         playMode = word;
+    }
+
+    /** A seen player's key in {@link #named}: its relation and number (no text made per player seen). */
+    private static long namedKey(Relation relation, int unum) {
+        return (long) relation.ordinal() << 32 | (unum & 0xffffffffL);
     }
 
     /** The model at {@code cycle} in the player's own frame (the right team's turned by 180 degrees). */

@@ -3,9 +3,7 @@ package org.scenes.internal.convert;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.Comparator;
-import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
@@ -25,16 +23,18 @@ import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Grid;
-import org.scenes.internal.scene.SceneFileHeader;
-import org.scenes.internal.scene.SceneFileWriter;
-import org.scenes.internal.scene.SceneSource;
+import org.scenes.internal.gamelog.GameLogs;
 import org.scenes.internal.vision.Fading;
 
 /**
- * {@code scenes convert GAME.rcg GAME.rcl --out-dir DIR} on a whole game: the simulator's 11 v 11
- * Krislet game of {@code cycles} cycles (seed 1, played once in the setup, recorded as rcssserver
- * records), every player's sees rebuilt and converted, 22 gzipped scene files written, on
- * {@code threads} threads. The JVM's heap is capped at 256 MB: conversion streams both logs.
+ * {@code scenes convert GAME.rcg --out-dir DIR} on a whole game, by the command's own code
+ * ({@link GameSceneFiles}): every player's sees rebuilt and converted with its world model (the
+ * default), 22 gzipped scene files written, on {@code threads} threads; the commands from the
+ * command log ({@code commands=rcl}) or inferred from the game log alone ({@code infer}). The game
+ * is the simulator's 11 v 11 Krislet game of {@code cycles} cycles (seed 1, played once in the
+ * setup, recorded as rcssserver records), or the game log named by {@code game} (its command log
+ * beside it), e.g. one of the real HELIOS games. The JVM's heap is capped at 256 MB: conversion
+ * streams both logs. One operation is a whole game; {@code -prof gc} gives its allocation.
  */
 @State(Scope.Benchmark)
 @BenchmarkMode(Mode.SingleShotTime)
@@ -49,26 +49,41 @@ public class GameLogBench {
     @Param({"2"})
     public int threads;
 
-    private Path game;
+    @Param({"true"})
+    public boolean world;
+
+    @Param({"rcl", "infer"})
+    public String commands;
+
+    /** A game log to convert instead of the simulated game; empty for the simulated one. */
+    @Param({""})
+    public String game;
+
+    private Path directory;
     private Path rcg;
     private Path rcl;
     private Path out;
 
     @Setup
     public void play() throws IOException {
-        game = Files.createTempDirectory("gamelog-bench");
-        Simulator simulator = new Simulator(new GameSetup(new GameSetup.Team("Teal", 11, Teachers.byName("krislet")),
-                new GameSetup.Team("Amber", 11, Teachers.byName("krislet")), cycles, 1, game.resolve("players")))
-                .recordTo(game);
-        simulator.run(t -> { });
-        for (Path file : simulator.recorded()) {
-            if (file.toString().endsWith(".rcg")) {
-                rcg = file;
-            } else {
-                rcl = file;
+        directory = Files.createTempDirectory("gamelog-bench");
+        if (game.isEmpty()) {
+            Simulator simulator = new Simulator(new GameSetup(new GameSetup.Team("Teal", 11, Teachers.byName("krislet")),
+                    new GameSetup.Team("Amber", 11, Teachers.byName("krislet")), cycles, 1,
+                    directory.resolve("players"))).recordTo(directory);
+            simulator.run(t -> { });
+            for (Path file : simulator.recorded()) {
+                if (file.toString().endsWith(".rcg")) {
+                    rcg = file;
+                } else {
+                    rcl = file;
+                }
             }
+        } else {
+            rcg = Path.of(game);
+            rcl = GameLogs.commandLogBeside(rcg);
         }
-        out = game.resolve("scenes");
+        out = directory.resolve("scenes");
         Files.createDirectories(out);
         System.out.printf(Locale.ROOT, "%nGameLogBench: %s (%.1f MB) and %s (%.1f MB)%n", rcg.getFileName(),
                 Files.size(rcg) / 1e6, rcl.getFileName(), Files.size(rcl) / 1e6);
@@ -76,38 +91,21 @@ public class GameLogBench {
 
     @TearDown
     public void remove() throws IOException {
-        try (Stream<Path> files = Files.walk(game)) {
+        try (Stream<Path> files = Files.walk(directory)) {
             files.sorted(Comparator.reverseOrder()).forEach(path -> path.toFile().delete());
         }
     }
 
     @Benchmark
     public long allPlayers() throws IOException {
-        List<SceneFileWriter> writers = new ArrayList<>();
-        try {
-            GameLogConverter.Result result = new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.HALFWAY,
-                    GameLogConverter.everyone(), threads).convert(rcg, rcl, observer -> {
-                        SceneFileWriter writer = SceneFileWriter.create(out.resolve(observer.team() + "_"
-                                + observer.uniformNumber() + ".json.gz"), SceneFileHeader.of(Grid.DEFAULT,
-                                new SceneSource(rcg.getFileName().toString(), observer)));
-                        writers.add(writer);
-                        return writer::write;
-                    });
-            long scenes = 0;
-            for (SceneFileWriter writer : writers) {
-                writer.commit();
-            }
-            for (GameLogConverter.PlayerResult player : result.players()) {
-                scenes += player.report().scenes();
-            }
-            System.out.printf(Locale.ROOT, "%n%d shows, %d players, %d scenes, heap used %.0f MB%n", result.frames(),
-                    result.players().size(), scenes,
-                    (Runtime.getRuntime().totalMemory() - Runtime.getRuntime().freeMemory()) / 1e6);
-            return scenes;
-        } finally {
-            for (SceneFileWriter writer : writers) {
-                writer.close();
-            }
-        }
+        GameLogConverter converter = new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.dice(1),
+                GameLogConverter.everyone(), threads).world(world);
+        GameLogs logs = new GameLogs(rcg, commands.equals("infer") ? null : rcl);
+        GameSceneFiles.Written written = GameSceneFiles.write(converter, Grid.DEFAULT, logs,
+                key -> out.resolve(key + ".json.gz"));
+        System.out.printf(Locale.ROOT, "%n%d shows, %d players, %d scenes, heap used %.0f MB%n",
+                written.result().frames(), written.result().players().size(), written.scenes(),
+                (Runtime.getRuntime().totalMemory() - Runtime.getRuntime().freeMemory()) / 1e6);
+        return written.scenes();
     }
 }
