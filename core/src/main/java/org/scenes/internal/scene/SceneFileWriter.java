@@ -310,27 +310,39 @@ public final class SceneFileWriter implements AutoCloseable {
             json.writeNumber((long) value);
             return;
         }
-        // Most values are tenths (distances, changes): their text as Double.toString writes it, cheaper
+        // Most values are tenths (distances, changes) or hundredths (world models): their text as
+        // Double.toString writes it, cheaper. Checked for every hundredth below 10^6 in magnitude
+        // (SceneFileWriterTest): JDK 17's Double.toString gives them their two decimals.
         double tenths = Math.rint(value * 10);
         if (tenths != 0 && Math.abs(tenths) < 1e7 && tenths / 10 == value) {
-            json.writeNumber(number, 0, tenths((long) tenths));
+            json.writeNumber(number, 0, decimals((long) tenths, 1));
+            return;
+        }
+        double hundredths = Math.rint(value * 100);
+        if (hundredths != 0 && Math.abs(hundredths) < 1e8 && hundredths / 100 == value) {
+            json.writeNumber(number, 0, decimals((long) hundredths, 2));
         } else {
             json.writeNumber(value);
         }
     }
 
-    /** {@code tenths / 10} with one decimal into {@link #number}; returns its length. */
-    private int tenths(long tenths) {
+    /**
+     * {@code scaled / 10^places} with {@code places} decimals (1 or 2) into {@link #number}, as
+     * {@link Double#toString} writes such a value; returns its length.
+     */
+    private int decimals(long scaled, int places) {
         int at = number.length;
-        long rest = Math.abs(tenths);
-        number[--at] = (char) ('0' + rest % 10);
+        long rest = Math.abs(scaled);
+        for (int i = 0; i < places; i++) {
+            number[--at] = (char) ('0' + rest % 10);
+            rest /= 10;
+        }
         number[--at] = '.';
-        rest /= 10;
         do {
             number[--at] = (char) ('0' + rest % 10);
             rest /= 10;
         } while (rest > 0);
-        if (tenths < 0) {
+        if (scaled < 0) {
             number[--at] = '-';
         }
         int length = number.length - at;

@@ -1,6 +1,7 @@
 package org.scenes.internal.convert;
 
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Comparator;
@@ -10,6 +11,7 @@ import java.util.stream.Stream;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.Measurement;
 import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
@@ -19,11 +21,16 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
+import org.openjdk.jmh.infra.Blackhole;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Grid;
+import org.scenes.internal.gamelog.CommandLogReader;
+import org.scenes.internal.gamelog.CommandSource;
+import org.scenes.internal.gamelog.GameLogReader;
 import org.scenes.internal.gamelog.GameLogs;
+import org.scenes.internal.inference.InferredCommandLog;
 import org.scenes.internal.vision.Fading;
 
 /**
@@ -35,6 +42,12 @@ import org.scenes.internal.vision.Fading;
  * setup, recorded as rcssserver records), or the game log named by {@code game} (its command log
  * beside it), e.g. one of the real HELIOS games. The JVM's heap is capped at 256 MB: conversion
  * streams both logs. One operation is a whole game; {@code -prof gc} gives its allocation.
+ *
+ * <p>The other benchmarks split the cost: {@link #plainJson} writes the same scene files without
+ * gzip, {@link #noFiles} hands the scenes to a blackhole (rebuilding, parsing, world models,
+ * pairing, and the inference for {@code infer}), {@link #readGameLog} only reads the game log's
+ * shows. Each operation prints the process's CPU time it took (JIT and GC threads included),
+ * the figure to read on a machine whose cores are shared.
  */
 @State(Scope.Benchmark)
 @BenchmarkMode(Mode.SingleShotTime)
@@ -46,7 +59,8 @@ public class GameLogBench {
     @Param({"6000"})
     public int cycles;
 
-    @Param({"2"})
+    /** One thread by default: the operation's time is then its CPU time on a free core. */
+    @Param({"1"})
     public int threads;
 
     @Param({"true"})
@@ -63,6 +77,7 @@ public class GameLogBench {
     private Path rcg;
     private Path rcl;
     private Path out;
+    private long cpuAtStart;
 
     @Setup
     public void play() throws IOException {
@@ -89,6 +104,21 @@ public class GameLogBench {
                 Files.size(rcg) / 1e6, rcl.getFileName(), Files.size(rcl) / 1e6);
     }
 
+    @Setup(Level.Invocation)
+    public void startClock() {
+        cpuAtStart = cpuNanos();
+    }
+
+    @TearDown(Level.Invocation)
+    public void printClock() {
+        System.out.printf(Locale.ROOT, "%nprocess CPU %.2f s%n", (cpuNanos() - cpuAtStart) / 1e9);
+    }
+
+    private static long cpuNanos() {
+        return ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean())
+                .getProcessCpuTime();
+    }
+
     @TearDown
     public void remove() throws IOException {
         try (Stream<Path> files = Files.walk(directory)) {
@@ -98,12 +128,42 @@ public class GameLogBench {
 
     @Benchmark
     public long allPlayers() throws IOException {
-        GameLogConverter converter = new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.dice(1),
-                GameLogConverter.everyone(), threads).world(world);
-        GameLogs logs = new GameLogs(rcg, commands.equals("infer") ? null : rcl);
-        GameSceneFiles.Written written = GameSceneFiles.write(converter, Grid.DEFAULT, logs,
-                key -> out.resolve(key + ".json.gz"));
-        System.out.printf(Locale.ROOT, "%n%d shows, %d players, %d scenes, heap used %.0f MB%n",
+        return write(".json.gz");
+    }
+
+    @Benchmark
+    public long plainJson() throws IOException {
+        return write(".json");
+    }
+
+    @Benchmark
+    public long noFiles(Blackhole scenes) throws IOException {
+        GameLogs logs = logs();
+        try (CommandSource source = logs.inferred() ? InferredCommandLog.of(rcg) : CommandLogReader.open(rcl)) {
+            return converter().convert(rcg, source, observer -> scenes::consume).frames();
+        }
+    }
+
+    @Benchmark
+    public long readGameLog() throws IOException {
+        long[] players = new long[1];
+        GameLogReader.forEach(rcg, frame -> players[0] += frame.players().size());
+        return players[0];
+    }
+
+    private GameLogConverter converter() {
+        return new GameLogConverter(Grid.DEFAULT, Pairing.AUTO, Fading.dice(1), GameLogConverter.everyone(), threads)
+                .world(world);
+    }
+
+    private GameLogs logs() {
+        return new GameLogs(rcg, commands.equals("infer") ? null : rcl);
+    }
+
+    private long write(String suffix) throws IOException {
+        GameSceneFiles.Written written = GameSceneFiles.write(converter(), Grid.DEFAULT, logs(),
+                key -> out.resolve(key + suffix));
+        System.out.printf(Locale.ROOT, "%n%d shows, %d players, %d scenes, heap used %.0f MB",
                 written.result().frames(), written.result().players().size(), written.scenes(),
                 (Runtime.getRuntime().totalMemory() - Runtime.getRuntime().freeMemory()) / 1e6);
         return written.scenes();
