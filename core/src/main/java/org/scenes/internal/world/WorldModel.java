@@ -260,15 +260,18 @@ public final class WorldModel {
         double sign = mirrored ? -1 : 1;
         double bodyDirection = Double.isNaN(head) ? Double.NaN
                 : Localisation.normalize(head - neck + (mirrored ? 180 : 0));
-        List<World.Player> players = new ArrayList<>(named.size() + unnamed.size());
+        // an array made into an immutable list once: World keeps such a list as it is
+        World.Player[] seenPlayers = new World.Player[named.size() + unnamed.size()];
+        int count = 0;
         for (Seen seen : unnamed) {
-            players.add(new World.Player(seen.relation(), seen.unum(), round(sign * seen.x()), round(sign * seen.y()),
-                    Math.max(0, cycle - seen.time())));
+            seenPlayers[count++] = new World.Player(seen.relation(), seen.unum(), round(sign * seen.x()),
+                    round(sign * seen.y()), Math.max(0, cycle - seen.time()));
         }
         for (Seen seen : named.values()) {
-            players.add(new World.Player(seen.relation(), seen.unum(), round(sign * seen.x()), round(sign * seen.y()),
-                    Math.max(0, cycle - seen.time())));
+            seenPlayers[count++] = new World.Player(seen.relation(), seen.unum(), round(sign * seen.x()),
+                    round(sign * seen.y()), Math.max(0, cycle - seen.time()));
         }
+        List<World.Player> players = List.of(seenPlayers);
         int own = side == Side.RIGHT ? scoreRight : scoreLeft;
         int opponent = side == Side.RIGHT ? scoreLeft : scoreRight;
         return new World(round(sign * x), round(sign * y), round(bodyDirection), neck, round(sign * vx),
