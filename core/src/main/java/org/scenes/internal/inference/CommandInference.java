@@ -52,7 +52,8 @@ final class CommandInference {
          * The value to three decimals without trailing zeros, as {@code String.format("%.3f")} rounds
          * (half up on {@link Double#toString}'s digits), {@code -0} as 0. From a thousandth to 10^7 in
          * magnitude, where the two agree (CommandTextTest), by {@link BigDecimal}: the formatter and
-         * its regular expressions were a fifth of converting a game with inferred commands.
+         * its regular expressions took a fifth of the Java time of converting a HELIOS game with
+         * inferred commands.
          */
         static String num(double value) {
             double magnitude = Math.abs(value);

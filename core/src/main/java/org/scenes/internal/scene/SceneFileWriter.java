@@ -311,8 +311,8 @@ public final class SceneFileWriter implements AutoCloseable {
             return;
         }
         // Most values are tenths (distances, changes) or hundredths (world models): their text as
-        // Double.toString writes it, cheaper. Checked for every hundredth below 10^6 in magnitude
-        // (SceneFileWriterTest): JDK 17's Double.toString gives them their two decimals.
+        // Double.toString writes it, cheaper. JDK 17's Double.toString gives every hundredth below
+        // 10^6 in magnitude its two decimals (all of them checked once; SceneFileWriterTest a sample).
         double tenths = Math.rint(value * 10);
         if (tenths != 0 && Math.abs(tenths) < 1e7 && tenths / 10 == value) {
             json.writeNumber(number, 0, decimals((long) tenths, 1));
