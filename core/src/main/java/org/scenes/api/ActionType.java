@@ -28,6 +28,8 @@ public enum ActionType {
 
     private final boolean worldChanging;
     private final String[] parameters;
+    /** Computed once: scene files ask for it per action. */
+    private final String key = name().toLowerCase(Locale.ROOT);
 
     ActionType(boolean worldChanging, String... parameters) {
         this.worldChanging = worldChanging;
@@ -68,7 +70,7 @@ public enum ActionType {
      * @return the lower-case name
      */
     public String key() {
-        return name().toLowerCase(Locale.ROOT);
+        return key;
     }
 
     /**

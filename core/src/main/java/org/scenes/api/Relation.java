@@ -20,13 +20,16 @@ public enum Relation {
     /** A player whose team could not be read, or a goal while the observer's side is unknown. */
     UNKNOWN;
 
+    /** Computed once: scene files and world models ask for it per object. */
+    private final String key = name().toLowerCase(Locale.ROOT);
+
     /**
      * Lower-case name used in scene files.
      *
      * @return the key, e.g. {@code opponent}
      */
     public String key() {
-        return name().toLowerCase(Locale.ROOT);
+        return key;
     }
 
     /**

@@ -72,7 +72,7 @@ public final class WorldModel {
     private double seenBallY;
 
     /** Players seen with team and number, by relation and number; the rest of the latest see. */
-    private final Map<String, Seen> named = new LinkedHashMap<>();
+    private final Map<Long, Seen> named = new LinkedHashMap<>();
     private final List<Seen> unnamed = new ArrayList<>();
 
     private String playMode = "";
@@ -197,7 +197,7 @@ public final class WorldModel {
                         : object.team().equals(team) ? Relation.TEAMMATE : Relation.OPPONENT;
                 Seen seen = new Seen(relation, object.uniformNumber(), ox, oy, see.time());
                 if (relation != Relation.UNKNOWN && object.uniformNumber() > 0) {
-                    named.put(relation.key() + object.uniformNumber(), seen);
+                    named.put(namedKey(relation, object.uniformNumber()), seen);
                 } else {
                     unnamed.add(seen);
                 }
@@ -249,21 +249,29 @@ public final class WorldModel {
         playMode = word;
     }
 
+    /** A seen player's key in {@link #named}: its relation and number (no text made per player seen). */
+    private static long namedKey(Relation relation, int unum) {
+        return (long) relation.ordinal() << 32 | (unum & 0xffffffffL);
+    }
+
     /** The model at {@code cycle} in the player's own frame (the right team's turned by 180 degrees). */
     public World snapshot(int cycle) {
         boolean mirrored = side == Side.RIGHT;
         double sign = mirrored ? -1 : 1;
         double bodyDirection = Double.isNaN(head) ? Double.NaN
                 : Localisation.normalize(head - neck + (mirrored ? 180 : 0));
-        List<World.Player> players = new ArrayList<>(named.size() + unnamed.size());
+        // an array made into an immutable list once: World keeps such a list as it is
+        World.Player[] seenPlayers = new World.Player[named.size() + unnamed.size()];
+        int count = 0;
         for (Seen seen : unnamed) {
-            players.add(new World.Player(seen.relation(), seen.unum(), round(sign * seen.x()), round(sign * seen.y()),
-                    Math.max(0, cycle - seen.time())));
+            seenPlayers[count++] = new World.Player(seen.relation(), seen.unum(), round(sign * seen.x()),
+                    round(sign * seen.y()), Math.max(0, cycle - seen.time()));
         }
         for (Seen seen : named.values()) {
-            players.add(new World.Player(seen.relation(), seen.unum(), round(sign * seen.x()), round(sign * seen.y()),
-                    Math.max(0, cycle - seen.time())));
+            seenPlayers[count++] = new World.Player(seen.relation(), seen.unum(), round(sign * seen.x()),
+                    round(sign * seen.y()), Math.max(0, cycle - seen.time()));
         }
+        List<World.Player> players = List.of(seenPlayers);
         int own = side == Side.RIGHT ? scoreRight : scoreLeft;
         int opponent = side == Side.RIGHT ? scoreLeft : scoreRight;
         return new World(round(sign * x), round(sign * y), round(bodyDirection), neck, round(sign * vx),
