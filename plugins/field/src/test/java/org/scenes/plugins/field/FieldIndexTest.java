@@ -76,6 +76,23 @@ class FieldIndexTest {
         assertSameAsScan(stored, scenes(random, 120), Map.of(), 1, 10);
     }
 
+    /** One group (play on, ball known and out of reach), so its tree is deep and splits a dimension again and again. */
+    @Test
+    void theIndexFindsTheScansNeighboursInOneDeepTree() {
+        Random random = new Random(13);
+        List<Scene> stored = new ArrayList<>();
+        for (int i = 0; i < 20_000 + 100; i++) {
+            double x = random.nextGaussian() * 15;
+            double y = random.nextGaussian() * 10;
+            World world = new World(x, y, random.nextDouble() * 360 - 180, 0, 0, 0, 8000 - random.nextInt(3000), 1, 0,
+                    x + 2 + Math.abs(random.nextGaussian() * 8), y + random.nextGaussian() * 8, random.nextGaussian() * 0.5,
+                    random.nextGaussian() * 0.5, 0, List.of(), "play_on", 0, 0);
+            stored.add(new Scene(i, new Observer("T", Side.LEFT, 7), List.of(), List.of(Action.dash(50)), null, 0, world));
+        }
+        List<Scene> queries = new ArrayList<>(stored.subList(20_000, stored.size()));
+        assertSameAsScan(stored.subList(0, 20_000), queries, Map.of(), 1, 10);
+    }
+
     /** Fewer unlocated scenes than k: an unlocated query then gets located ones at {@code missing}, lowest index first. */
     @Test
     void fewerUnlocatedScenesThanKStillRankByIndex() {
