@@ -60,7 +60,7 @@ import org.scenes.internal.scene.SceneFileReader;
 @OutputTimeUnit(TimeUnit.MICROSECONDS)
 @Warmup(iterations = 3, time = 2)
 @Measurement(iterations = 5, time = 2)
-@Fork(value = 1, jvmArgsAppend = "-Xmx3g")
+@Fork(value = 1, jvmArgsAppend = "-Xmx4g")
 public class FieldIndexBench {
     private static final int QUERIES = 1024;
     private static final String[] STORED_GAMES = {"sc1", "sc3", "sc4"};
@@ -93,21 +93,12 @@ public class FieldIndexBench {
         KnowledgeBase stored;
         if (knowledge.equals("helios")) {
             Path root = Path.of(System.getProperty("scenes.helios", "/work/tmp/hel"));
-            List<Scene> real = new ArrayList<>();
-            for (String game : STORED_GAMES) {
-                real.addAll(read(root.resolve(game), "HELIOS_"));
-            }
-            Random random = new Random(42);
-            KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
-            for (int i = 0; i < scenes; i++) {
-                builder.add(jittered(real.get(random.nextInt(real.size())), random));
-            }
-            stored = builder.build();
             List<Scene> test = read(root.resolve(QUERY_GAME), "HELIOS_A_");
             queries = new ArrayList<>(QUERIES);
             for (int i = 0; i < QUERIES; i++) {
                 queries.add(test.get((int) ((long) i * test.size() / QUERIES)));
             }
+            stored = jitteredKnowledge(root);
         } else {
             KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
             SyntheticScenes.generate(BenchSets.KNOWLEDGE_SEED, scenes, Grid.DEFAULT, builder::add);
@@ -122,6 +113,20 @@ public class FieldIndexBench {
         selector = registry.selector("first-valid", PluginConfig.DEFAULT);
         System.out.printf("%n%,d %s scenes stored, index built, in %.1f s%n", stored.size(), knowledge,
                 (System.nanoTime() - start) / 1e9);
+    }
+
+    /** The stored scenes; the real ones they are drawn from are garbage once this returns. */
+    private KnowledgeBase jitteredKnowledge(Path root) {
+        List<Scene> real = new ArrayList<>();
+        for (String game : STORED_GAMES) {
+            real.addAll(read(root.resolve(game), "HELIOS_"));
+        }
+        Random random = new Random(42);
+        KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
+        for (int i = 0; i < scenes; i++) {
+            builder.add(jittered(real.get(random.nextInt(real.size())), random));
+        }
+        return builder.build();
     }
 
     /** Every scene of the files in {@code directory} whose names start with {@code prefix}, in name order. */
