@@ -11,16 +11,16 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.scenes.agent.imitation.ImitationTeam;
 import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.ServerAddress;
-import org.scenes.agent.sim.GameSetup;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Side;
 import org.scenes.evaluate.Arena;
 import org.scenes.evaluate.Comparison;
 import org.scenes.evaluate.Dagger;
-import org.scenes.evaluate.Evaluation;
 import org.scenes.evaluate.Disagreements;
+import org.scenes.evaluate.Evaluation;
 import org.scenes.evaluate.ExternalShadow;
 import org.scenes.evaluate.ExternalTeam;
 import org.scenes.evaluate.HtmlReport;
@@ -31,6 +31,7 @@ import org.scenes.evaluate.ServerLogGames;
 import org.scenes.evaluate.Tables;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.simulator.GameSetup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -95,6 +96,20 @@ final class EvaluateCommand implements Callable<Integer> {
             description = "Pace the imitator like the Krislet client's think loop: decide on the latest see every N"
                     + " steps (Krislet: 2); 0 answers every see, as 'scenes play' does. Default: ${DEFAULT-VALUE}.")
     int thinkSteps;
+
+    @Option(names = "--knowledge", paramLabel = "counterpart|team", converter = ImitationTeamOptions.KnowledgeConverter.class,
+            description = "With SCENES: an imitation team with roles, as 'scenes play' assembles it: each player on its"
+                    + " counterpart's scenes (the recorded player with its uniform number; counterpart) or everyone's"
+                    + " (team), with its counterpart's kick-off moves, set-play kicks and goalie flag; --dagger's labels"
+                    + " join the labelling player's counterpart's scenes too. Default: no roles, every player on all"
+                    + " the scenes.")
+    ImitationTeam.Knowledge knowledge;
+
+    @Option(names = "--version", paramLabel = "V", defaultValue = "9",
+            description = "With --server: the protocol version our players (the imitator, and teams played in process)"
+                    + " send in their inits, 7 to 19; a --shadow-command gets its player's messages. Default:"
+                    + " ${DEFAULT-VALUE}.")
+    int version;
 
     @Option(names = "--dagger", paramLabel = "N", defaultValue = "0",
             description = "After the evaluation, N rounds of DAgger: the scenes the imitator built in its games (the"
@@ -172,15 +187,11 @@ final class EvaluateCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         if (teacherGames != null || imitatorGames != null || team != null) {
-            if (dagger != 0) {
-                throw new UsageException("--dagger: plays and corrects the imitator; not with --teacher-games (the"
-                        + " figures of existing game logs)");
-            }
-            if (shadowCommand != null || disagreements != null) {
-                throw new UsageException((shadowCommand != null ? "--shadow-command" : "--disagreements")
-                        + ": a shadow plays beside the imitator's games; not with --teacher-games (the figures of"
-                        + " existing game logs)");
-            }
+            require(dagger == 0, "--dagger: plays and corrects the imitator; not with --teacher-games (the figures of"
+                    + " existing game logs)");
+            require(shadowCommand == null && disagreements == null, (shadowCommand != null ? "--shadow-command"
+                    : "--disagreements") + ": a shadow plays beside the imitator's games; not with --teacher-games (the"
+                    + " figures of existing game logs)");
             return fromGameLogs();
         }
         Setup setup = setup();
@@ -225,23 +236,18 @@ final class EvaluateCommand implements Callable<Integer> {
 
     /** {@code --teacher-games DIR --imitator-games DIR}: the figures of existing game logs. */
     private int fromGameLogs() throws IOException {
-        if (teacherGames == null || imitatorGames == null) {
-            throw new UsageException(teacherGames == null && imitatorGames == null
-                    ? "--team: goes with --teacher-games DIR --imitator-games DIR"
-                    : "--teacher-games and --imitator-games: give both (the teacher's and the imitator's game logs)");
-        }
-        if (!sceneFiles.isEmpty() || server != null) {
-            throw new UsageException("--teacher-games: evaluates existing game logs; it takes no SCENES and no --server");
-        }
+        require(teacherGames != null && imitatorGames != null, teacherGames == null && imitatorGames == null
+                ? "--team: goes with --teacher-games DIR --imitator-games DIR"
+                : "--teacher-games and --imitator-games: give both (the teacher's and the imitator's game logs)");
+        require(sceneFiles.isEmpty() && server == null,
+                "--teacher-games: evaluates existing game logs; it takes no SCENES and no --server");
         long started = System.nanoTime();
         List<Path> teacherLogs = gameLogs("--teacher-games", teacherGames);
         List<Path> imitatorLogs = gameLogs("--imitator-games", imitatorGames);
-        if (teacherLogs.size() != imitatorLogs.size()) {
-            // the divergences and the Turing folds pair game i of one side with game i of the other
-            throw new UsageException("--teacher-games " + teacherGames + " holds " + teacherLogs.size()
-                    + " game logs and --imitator-games " + imitatorGames + " " + imitatorLogs.size()
-                    + ": give as many of each (game i of one side is compared with game i of the other)");
-        }
+        // the divergences and the Turing folds pair game i of one side with game i of the other
+        require(teacherLogs.size() == imitatorLogs.size(), "--teacher-games " + teacherGames + " holds "
+                + teacherLogs.size() + " game logs and --imitator-games " + imitatorGames + " " + imitatorLogs.size()
+                + ": give as many of each (game i of one side is compared with game i of the other)");
         ServerLogGames.Read read;
         try (TerminalProgress bar = TerminalProgress.start("Reading games", teacherLogs.size() + imitatorLogs.size(),
                 " games", 1)) {
@@ -299,7 +305,7 @@ final class EvaluateCommand implements Callable<Integer> {
     /** Everything the evaluation needs, checked. */
     record Setup(String teacherName, GameSetup.Team teacher, GameSetup.Team opponent, Side side, MatchConfig config,
                  PluginRegistry registry, List<Path> sceneFiles, int trainGames, int cycles, List<Long> seeds,
-                 int thinkSteps, int dagger, ExternalShadow shadow) {
+                 ImitationTeam.Knowledge knowledge, int thinkSteps, int dagger, ExternalShadow shadow) {
     }
 
     /** The evaluation's games (of the last DAgger round), figures, DAgger rounds (or none) and what was compared. */
@@ -309,64 +315,39 @@ final class EvaluateCommand implements Callable<Integer> {
 
     private Setup setup() {
         List<MatchConfig> configs = match.configs();
-        if (configs.size() != 1) {
-            throw new UsageException("evaluate uses one configuration: give one --metric and one --k");
-        }
-        if (cycles < 1) {
-            throw new UsageException("--cycles: must be at least 1, not " + cycles);
-        }
-        if (seeds < 1) {
-            throw new UsageException("--seeds: must be at least 1, not " + seeds);
-        }
-        if (sceneFiles.isEmpty() && trainGames < 1) {
-            throw new UsageException("--train-games: must be at least 1 when no scene files are given, not " + trainGames);
-        }
+        require(configs.size() == 1, "evaluate uses one configuration: give one --metric and one --k");
+        require(cycles >= 1, "--cycles: must be at least 1, not " + cycles);
+        require(seeds >= 1, "--seeds: must be at least 1, not " + seeds);
+        require(!sceneFiles.isEmpty() || trainGames >= 1,
+                "--train-games: must be at least 1 when no scene files are given, not " + trainGames);
         List<Long> seedList = new ArrayList<>();
         for (int i = 0; i < seeds; i++) {
             seedList.add(firstSeed + i);
         }
-        if (thinkSteps < 0) {
-            throw new UsageException("--think-steps: must be 0 or more, not " + thinkSteps);
-        }
-        if (dagger < 0) {
-            throw new UsageException("--dagger: must be 0 or more rounds, not " + dagger);
-        }
-        if (dagger > 0 && teacherCommand != null && shadowCommand == null) {
-            throw new UsageException("--dagger: labels with a shadow teacher; with --teacher-command give the teacher"
-                    + " program as --shadow-command too (or a built-in --teacher)");
-        }
-        if (disagreements != null && teacherCommand != null && shadowCommand == null) {
-            throw new UsageException("--disagreements: an external teacher has no shadow in process; give the teacher"
-                    + " program as --shadow-command too");
-        }
-        if (shadowCommand != null && shadowCommand.isBlank()) {
-            throw new UsageException("--shadow-command: an empty command");
-        }
-        if (!(serverWait > 0) || serverWait > 86_400) {
-            throw new UsageException("--server-wait: give seconds between 0 and 86400, not " + serverWait);
-        }
-        if (disagreements != null && sceneFiles.stream().anyMatch(f -> f.toAbsolutePath().normalize()
-                .equals(disagreements.toAbsolutePath().normalize()))) {
-            throw new UsageException("--disagreements: " + disagreements + " is an input (SCENES); an output never"
-                    + " overwrites an input");
-        }
+        require(thinkSteps >= 0, "--think-steps: must be 0 or more, not " + thinkSteps);
+        require(dagger >= 0, "--dagger: must be 0 or more rounds, not " + dagger);
+        require(knowledge == null || !sceneFiles.isEmpty(),
+                "--knowledge: roles come from the uniform numbers of scene files; give SCENES");
+        boolean externalTeacherAlone = teacherCommand != null && shadowCommand == null;
+        require(dagger == 0 || !externalTeacherAlone, "--dagger: labels with a shadow teacher; with --teacher-command"
+                + " give the teacher program as --shadow-command too (or a built-in --teacher)");
+        require(disagreements == null || !externalTeacherAlone, "--disagreements: an external teacher has no shadow in"
+                + " process; give the teacher program as --shadow-command too");
+        require(shadowCommand == null || !shadowCommand.isBlank(), "--shadow-command: an empty command");
+        require(serverWait > 0 && serverWait <= 86_400,
+                "--server-wait: give seconds between 0 and 86400, not " + serverWait);
+        require(disagreements == null || sceneFiles.stream().noneMatch(f -> f.toAbsolutePath().normalize()
+                .equals(disagreements.toAbsolutePath().normalize())), "--disagreements: " + disagreements
+                + " is an input (SCENES); an output never overwrites an input");
         if (teacherCommand != null || opponentCommand != null) {
-            if (teacherCommand != null && opponentCommand != null) {
-                throw new UsageException("--teacher-command and --opponent-command: one external team a game for now"
-                        + " (ours joins first, the external one after it)");
-            }
+            require(teacherCommand == null || opponentCommand == null, "--teacher-command and --opponent-command:"
+                    + " one external team a game for now (ours joins first, the external one after it)");
             String option = teacherCommand != null ? "--teacher-command" : "--opponent-command";
-            if (server == null || serverLogs == null) {
-                throw new UsageException(option + ": an external team plays on a server and is measured from its"
-                        + " logs: give --server HOST:PORT and --server-logs DIR");
-            }
-            if (sceneFiles.isEmpty()) {
-                throw new UsageException(option + ": give the SCENES to learn the imitator from (the teacher's games"
-                        + " are not played in process with an external team)");
-            }
-            if ((teacherCommand != null ? teacherCommand : opponentCommand).isBlank()) {
-                throw new UsageException(option + ": an empty command");
-            }
+            require(server != null && serverLogs != null, option + ": an external team plays on a server and is"
+                    + " measured from its logs: give --server HOST:PORT and --server-logs DIR");
+            require(!sceneFiles.isEmpty(), option + ": give the SCENES to learn the imitator from (the teacher's games"
+                    + " are not played in process with an external team)");
+            require(!(teacherCommand != null ? teacherCommand : opponentCommand).isBlank(), option + ": an empty command");
         }
         GameSetup.Team teacherTeam = teacherCommand != null
                 ? new GameSetup.Team("Teal", players, new ExternalTeam(teacherCommand))
@@ -379,15 +360,20 @@ final class EvaluateCommand implements Callable<Integer> {
                 Duration.ofMillis(Math.round(serverWait * 1000)));
         return new Setup(teacherCommand != null ? "the command '" + teacherCommand + "'" : teacher, teacherTeam,
                 opponentTeam, teacherCommand != null ? Side.RIGHT : Side.LEFT, configs.get(0), top.global.registry(),
-                sceneFiles, trainGames, cycles, seedList, thinkSteps, dagger, shadow);
+                sceneFiles, trainGames, cycles, seedList, knowledge, thinkSteps, dagger, shadow);
+    }
+
+    /** The option checks' one shape: a usage error (exit code 2) saying {@code message} unless {@code holds}. */
+    private static void require(boolean holds, String message) {
+        if (!holds) {
+            throw new UsageException(message);
+        }
     }
 
     /** The embedded simulator, or with --server the live server. */
     private Arena arena() {
         if (server == null) {
-            if (serverLogs != null) {
-                throw new UsageException("--server-logs: needs --server (the embedded simulator's games have positions)");
-            }
+            require(serverLogs == null, "--server-logs: needs --server (the embedded simulator's games have positions)");
             return Arena.embedded();
         }
         ServerAddress address;
@@ -396,13 +382,17 @@ final class EvaluateCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new UsageException("--server: " + e.getMessage());
         }
-        if (serverLogs != null && !Files.isDirectory(serverLogs)) {
-            throw new UsageException("--server-logs: " + serverLogs + " is not a directory");
-        }
+        require(serverLogs == null || Files.isDirectory(serverLogs), "--server-logs: " + serverLogs + " is not a directory");
         PrintWriter err = spec.commandLine().getErr();
         // an init is given 5 s: one answered after its player gave up leaves a player on the server
-        return new LiveArena(ClientOptions.of(address, "Teal").withTimeouts(Duration.ofSeconds(5), Duration.ofSeconds(10)),
-                serverLogs, Duration.ofMillis(Math.round(serverWait * 1000)), line -> {
+        ClientOptions client;
+        try {
+            client = ClientOptions.of(address, "Teal").withVersion(version);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("--version: " + e.getMessage());
+        }
+        return new LiveArena(client.withTimeouts(Duration.ofSeconds(5), Duration.ofSeconds(10)), serverLogs,
+                Duration.ofMillis(Math.round(serverWait * 1000)), line -> {
                     synchronized (err) {
                         err.println(line);
                         err.flush();
@@ -437,10 +427,13 @@ final class EvaluateCommand implements Callable<Integer> {
                     + " cycles against the same opponent, seeds " + trainingSeeds + " (" + imitator.scenes() + " scenes)");
         } else {
             // a file the knowledge base cannot hold is failed work (exit 1), its message names the file
-            KnowledgeBase knowledge = KnowledgeBase.load(setup.sceneFiles(), matching.transforms());
-            imitator = Learner.of(knowledge, matching);
+            imitator = setup.knowledge() == null
+                    ? Learner.of(KnowledgeBase.load(setup.sceneFiles(), matching.transforms()), matching)
+                    : Learner.roles(setup.sceneFiles(), matching, setup.knowledge());
             about.put("imitator learnt from", setup.sceneFiles().size() + " scene files (" + imitator.scenes()
                     + " scenes): " + String.join(" ", setup.sceneFiles().stream().map(Path::toString).toList()));
+            about.put("roles", imitator.roles() == null ? "none: every player on all the scenes"
+                    : imitator.roles().describe());
         }
         about.put("matching", setup.config().describe());
         about.put("imitator tempo", setup.thinkSteps() == 0 ? "answers every see"
@@ -464,7 +457,7 @@ final class EvaluateCommand implements Callable<Integer> {
                 : setup.teacherName() + " in process");
         Evaluation.Results results;
         Comparison comparison;
-        List<Dagger.Round> rounds = setup.dagger() == 0 ? List.of() : dagger(setup, plan, imitator, matching, arena, out);
+        List<Dagger.Round> rounds = setup.dagger() == 0 ? List.of() : dagger(setup, plan, imitator, arena, out);
         if (rounds.isEmpty()) {
             try (TerminalProgress bar = TerminalProgress.start("Evaluating", plan.totalCycles(), " cycles", 1)) {
                 results = Evaluation.run(plan, arena, bar.stepper());
@@ -492,10 +485,10 @@ final class EvaluateCommand implements Callable<Integer> {
     }
 
     /** DAgger's rounds 0 to {@code --dagger}, a row printed and a progress bar per round. */
-    private static List<Dagger.Round> dagger(Setup setup, Evaluation.Plan plan, Learner.Imitator imitator,
-                                             Learner.Matching matching, Arena arena, PrintWriter out)
+    private static List<Dagger.Round> dagger(Setup setup, Evaluation.Plan plan, Learner.Imitator imitator, Arena arena,
+                                             PrintWriter out)
             throws IOException {
-        Dagger dagger = new Dagger(plan, imitator.knowledge(), matching, setup.thinkSteps());
+        Dagger dagger = new Dagger(plan, imitator, setup.thinkSteps());
         if (out != null) {
             out.println(Dagger.Round.header());
             out.flush();

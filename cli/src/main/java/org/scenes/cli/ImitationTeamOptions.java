@@ -2,12 +2,12 @@ package org.scenes.cli;
 
 import java.nio.file.Path;
 import java.util.List;
-import org.scenes.agent.BrainFactory;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.imitation.ImitationTeam;
 import org.scenes.api.PluginRegistry;
 import org.scenes.evaluate.PacedBrain;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.simulator.BrainFactory;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.TypeConversionException;

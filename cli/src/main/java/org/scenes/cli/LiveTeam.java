@@ -7,10 +7,10 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import org.scenes.agent.BrainFactory;
 import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.PlayerReport;
 import org.scenes.agent.net.TeamRunner;
+import org.scenes.simulator.BrainFactory;
 
 /** Runs one team on a server until the game ends or the user stops it, then prints the players' reports. */
 final class LiveTeam {

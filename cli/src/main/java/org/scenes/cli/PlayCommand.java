@@ -7,11 +7,12 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.scenes.agent.imitation.ImitationBrain;
-import org.scenes.agent.sim.GameResult;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.api.PluginRegistry;
 import org.scenes.agent.imitation.ImitationTeam;
+import org.scenes.api.PluginRegistry;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.simulator.GameResult;
+import org.scenes.simulator.GameSetup;
+import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -19,7 +20,6 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine;
 
 /**
  * {@code scenes play}: imitating players, learnt from scene files, play a game in the embedded
@@ -121,7 +121,7 @@ final class PlayCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         out.printf(Locale.ROOT, "%-14s %d scenes from %d files, %s; %s%n", "Learnt", team.scenes(), sceneFiles.size(),
                 team.describe(), config.describe());
-        org.scenes.agent.sim.Simulator simulator = new org.scenes.agent.sim.Simulator(setup);
+        org.scenes.simulator.Simulator simulator = new org.scenes.simulator.Simulator(setup);
         if (recordDir != null) {
             simulator.recordTo(recordDir);
         }

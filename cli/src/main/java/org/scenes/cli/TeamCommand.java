@@ -1,8 +1,8 @@
 package org.scenes.cli;
 
 import java.util.concurrent.Callable;
-import org.scenes.agent.BrainFactory;
-import org.scenes.agent.teacher.Teachers;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.teacher.Teachers;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;

@@ -15,9 +15,6 @@ import java.util.List;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Grid;
 import org.scenes.api.Scene;
 import org.scenes.internal.convert.SceneConverter;
@@ -25,6 +22,9 @@ import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileWriter;
 import org.scenes.internal.scene.SceneSource;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * {@code scenes experiment}: result files, and the proof that a configuration gives the same

@@ -18,9 +18,9 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.server.GameSeries;
-import org.scenes.agent.server.ServerConfig;
-import org.scenes.agent.server.ServerResult;
+import org.scenes.simulator.server.GameSeries;
+import org.scenes.simulator.server.ServerConfig;
+import org.scenes.simulator.server.ServerResult;
 import org.scenes.testing.Processes;
 
 /**
@@ -97,6 +97,62 @@ class ExternalTeamEvaluateTest {
             assertTrue(root.at("/figures/executedDash/teacher/mean").asDouble() > 0.2);
         }
         Processes.assertNoneRunning("7355");
+    }
+
+    @Test
+    void anImitationTeamWithRolesPlaysOnTheServerInTheProtocolVersionAsked() throws Exception {
+        Path perPlayer = dir.resolve("per-player");
+        CommandRunner convert = new CommandRunner();
+        assertEquals(ExitCodes.OK, convert.run("convert", shared.resolve("players/Teal_1.lsf.gz"),
+                shared.resolve("players/Teal_2.lsf.gz"), "--out-dir", perPlayer), convert.err());
+        Path logs = Files.createDirectories(dir.resolve("logs"));
+        try (Server server = new Server(logs, 2, 100)) {
+            CommandRunner cli = new CommandRunner();
+            int status = cli.run("evaluate", "--server", "127.0.0.1:" + server.port, "--server-logs", logs,
+                    "--players", "2", "--opponent", "krislet:2", "--cycles", "100", "--seeds", "1", "--metric",
+                    "ball-goal", "--knowledge", "counterpart", "--version", "18", perPlayer.resolve("Teal_1.json.gz"),
+                    perPlayer.resolve("Teal_2.json.gz"), "--json");
+            assertEquals(ExitCodes.OK, status, cli.err());
+            JsonNode root = ConfigFiles.JSON.readTree(cli.out());
+            assertTrue(root.at("/about/roles").asText().startsWith("counterpart knowledge, 2 recorded players"),
+                    root.get("about").toString());
+            List<String> inits = new java.util.ArrayList<>();
+            try (java.util.stream.Stream<Path> files = Files.list(logs)) {
+                for (Path rcl : files.filter(f -> f.toString().endsWith(".rcl")).toList()) {
+                    Files.readAllLines(rcl).stream().filter(l -> l.contains("(init Teal")).forEach(inits::add);
+                }
+            }
+            assertEquals(4, inits.size(), "two players in each of two games: " + inits);
+            assertTrue(inits.stream().allMatch(l -> l.contains("(version 18)")), inits.toString());
+        }
+        // DAgger beside an external teacher: its program as the shadow; the teacher's figures only the logs give
+        Path daggerLogs = Files.createDirectories(dir.resolve("dagger-logs"));
+        try (Server server = new Server(daggerLogs, 3, 100)) {
+            CommandRunner cli = new CommandRunner();
+            int status = cli.run("evaluate", "--server", "127.0.0.1:" + server.port, "--server-logs", daggerLogs,
+                    "--server-wait", "60", "--teacher-command", teamCommand("7356"), "--shadow-command",
+                    teamCommand("7357").replace("{players}", "1"), "--players", "1", "--opponent", "krislet:1",
+                    "--cycles", "100", "--seeds", "1", "--metric", "ball-goal", "--knowledge", "counterpart",
+                    perPlayer.resolve("Teal_1.json.gz"), "--dagger", "1");
+            assertEquals(ExitCodes.OK, status, cli.err());
+            assertEquals(3, server.served().size(), "the teacher's game and two rounds of the imitator's");
+            String teacherRow = cli.out().lines().filter(l -> l.startsWith("teacher ")).findFirst().orElseThrow();
+            assertTrue(teacherRow.matches("teacher\\s+\\d+\\.\\d\\d\\s+-\\s+-\\s*"),
+                    "goals from the logs; no stuck share or distance without the teacher's traces: " + teacherRow);
+            String secondRound = cli.out().lines().filter(l -> l.startsWith("1 ")).findFirst().orElseThrow();
+            // round, scenes, added, goals, mix JSD, stuck, to ball, agreement, Turing: the mix's divergence from the
+            // executed commands of the logs, the agreement with the shadow program
+            String[] cells = secondRound.trim().split("\\s+");
+            assertTrue(cells[4].matches("\\d\\.\\d{4}") && cells[7].matches("\\d+\\.\\d%"), secondRound);
+        }
+        Processes.assertNoneRunning("7356");
+        Processes.assertNoneRunning("7357");
+        CommandRunner usage = new CommandRunner();
+        assertEquals(ExitCodes.USAGE, usage.run("evaluate", "--knowledge", "counterpart"));
+        assertTrue(usage.err().contains("--knowledge: roles come from the uniform numbers of scene files"),
+                usage.err());
+        assertEquals(ExitCodes.USAGE, usage.run("evaluate", "--server", "127.0.0.1:6000", "--version", "99", scenes));
+        assertTrue(usage.err().contains("--version: protocol version must be 7 to 19, not 99"), usage.err());
     }
 
     @Test

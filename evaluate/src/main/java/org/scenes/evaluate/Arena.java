@@ -3,10 +3,10 @@ package org.scenes.evaluate;
 import java.io.IOException;
 import java.util.function.Consumer;
 import java.util.function.IntConsumer;
-import org.scenes.agent.sim.GameResult;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
 import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.simulator.GameResult;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
 
 /**
  * Where the games of an evaluation are played: the embedded simulator ({@link #embedded}), or a

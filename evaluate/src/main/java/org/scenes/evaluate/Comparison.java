@@ -62,6 +62,11 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
                 GameFigures::firstTouch));
         if (traced) {
             figures.add(figure("stuckShare", "stuck share", true, teacher, imitator, GameFigures::stuckShare));
+        }
+        // agreement is the imitator's with its shadow: there whenever it had one, even beside an untraced teacher
+        boolean shadowed = results.imitator().stream().noneMatch(g -> g.traces().isEmpty())
+                && imitator.stream().anyMatch(f -> !Double.isNaN(f.agreement()));
+        if (shadowed) {
             figures.add(figure("agreement", "student-driven agreement", true, teacher, imitator, GameFigures::agreement));
             figures.add(figure("typeAgreement", "agreement, action type only", true, teacher, imitator,
                     GameFigures::typeAgreement));
@@ -110,6 +115,11 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
                 pooledExecuted(imitatorLog), executedDivergence, positions(teacherLog), positions(imitatorLog), turing,
                 targets(figures, traced ? "action-mix divergence" : "executed action-mix divergence",
                         traced ? divergence : executedDivergence, turing), seeds);
+    }
+
+    /** Whether the comparison has the figure: some are measured only with traces or server logs. */
+    public boolean has(String key) {
+        return figures.stream().anyMatch(f -> f.key().equals(key));
     }
 
     public Figure figure(String key) {

@@ -7,13 +7,13 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Random;
+import java.util.TreeMap;
 import java.util.function.LongConsumer;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
 import org.scenes.agent.imitation.ImitationBrain;
-import org.scenes.agent.sim.GameSetup;
 import org.scenes.api.Scene;
-import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.GameSetup;
 
 /**
  * Learning from the corrections (DAgger, dataset aggregation: Ross, Gordon and Bagnell 2011),
@@ -42,19 +42,40 @@ public final class Dagger {
                     "goals", "mix JSD", "stuck", "to ball", "agreement", "Turing");
         }
 
-        /** The teacher's figures in the columns of {@link #row} that it has. */
+        /** The teacher's figures in the columns of {@link #row} that it has ("-": not measured). */
         public String teacherRow() {
-            return String.format(Locale.ROOT, "%-8s %8s %7s %8.2f %8s %6.1f%% %8.1f %9s %7s", "teacher", "", "",
-                    comparison.figure("goalsPer1000").teacher().mean(), "", 100 * figure("stuckShare", true),
-                    comparison.figure("ballDistance").teacher().mean(), "", "");
+            return String.format(Locale.ROOT, "%-8s %8s %7s %8s %8s %7s %8s %9s %7s", "teacher", "", "",
+                    cell(figure("goalsPer1000", true), 1, "%.2f"), "", cell(figure("stuckShare", true), 100, "%.1f%%"),
+                    cell(figure("ballDistance", true), 1, "%.1f"), "", "");
         }
 
-        /** Goals per 1000 cycles, action-mix JSD, stuck share, distance to the ball, agreement, Turing accuracy. */
+        /**
+         * Goals per 1000 cycles, action-mix JSD, stuck share, distance to the ball, agreement, Turing
+         * accuracy ("-": not measured, such as the stuck share of an external teacher without traces).
+         */
         public String row() {
-            return String.format(Locale.ROOT, "%-8d %8d %7d %8.2f %8.4f %6.1f%% %8.1f %8.1f%% %6.1f%%", number, scenes,
-                    added, figure("goalsPer1000", false), comparison.divergence().mean(),
-                    100 * figure("stuckShare", false), figure("ballDistance", false), 100 * figure("agreement", false),
-                    100 * comparison.turing().accuracy());
+            return String.format(Locale.ROOT, "%-8d %8d %7d %8s %8.4f %7s %8s %9s %6.1f%%", number, scenes,
+                    added, cell(figure("goalsPer1000", false), 1, "%.2f"), divergence(),
+                    cell(figure("stuckShare", false), 100, "%.1f%%"), cell(figure("ballDistance", false), 1, "%.1f"),
+                    cell(figure("agreement", false), 100, "%.1f%%"), 100 * comparison.turing().accuracy());
+        }
+
+        /**
+         * The action mix's divergence from the teacher's: of the commands sent on sees when both were
+         * traced, else of the commands the server's logs show executed (an external teacher).
+         */
+        private double divergence() {
+            double sent = comparison.divergence().mean();
+            return Double.isNaN(sent) ? comparison.executedDivergence().mean() : sent;
+        }
+
+        /** A figure for JSON: null when it was not measured. */
+        private static Double measured(double value) {
+            return Double.isNaN(value) ? null : value;
+        }
+
+        private static String cell(double value, double scale, String format) {
+            return Double.isNaN(value) ? "-" : String.format(Locale.ROOT, format, scale * value);
         }
 
         /** The row's figures by name, for JSON. */
@@ -64,36 +85,41 @@ public final class Dagger {
             json.put("scenes", scenes);
             json.put("added", added);
             json.put("labelled", labelled);
-            json.put("goalsPer1000", figure("goalsPer1000", false));
-            json.put("divergence", comparison.divergence().mean());
-            json.put("stuckShare", figure("stuckShare", false));
-            json.put("ballDistance", figure("ballDistance", false));
-            json.put("agreement", figure("agreement", false));
+            json.put("goalsPer1000", measured(figure("goalsPer1000", false)));
+            json.put("divergence", divergence());
+            json.put("stuckShare", measured(figure("stuckShare", false)));
+            json.put("ballDistance", measured(figure("ballDistance", false)));
+            json.put("agreement", measured(figure("agreement", false)));
             json.put("turing", comparison.turing().accuracy());
             return json;
         }
 
+        /** The figure's mean, NaN when it was not measured. */
         private double figure(String key, boolean teacher) {
+            if (!comparison.has(key)) {
+                return Double.NaN;
+            }
             Comparison.Figure figure = comparison.figure(key);
             return (teacher ? figure.teacher() : figure.imitator()).mean();
         }
     }
 
     private final Evaluation.Plan plan;
-    private final Learner.Matching matching;
     private final int thinkSteps;
-    private KnowledgeBase knowledge;
+    private Learner.Imitator imitator;
     private int added;
-    private List<List<Scene>> corrections = List.of();
+    /** The last round's labelled scenes, one sequence per imitating player and game. */
+    private List<ShadowLabels> corrections = List.of();
     private List<PlayedGame> teacherGames;
     private int rounds;
 
     /**
      * Rounds on {@code plan}'s teacher, opponent, cycles and seeds (its imitator is not used),
-     * starting from {@code knowledge}, matched as {@code matching} says; the imitator decides every
-     * {@code thinkSteps} steps ({@link PacedBrain}).
+     * starting from {@code imitator} (with its roles, when it has them: each player's labels join
+     * its counterpart's knowledge too); the imitator decides every {@code thinkSteps} steps
+     * ({@link PacedBrain}).
      */
-    public Dagger(Evaluation.Plan plan, KnowledgeBase knowledge, Learner.Matching matching, int thinkSteps) {
+    public Dagger(Evaluation.Plan plan, Learner.Imitator imitator, int thinkSteps) {
         if (plan.shadow() == null) {
             throw new IllegalArgumentException("DAgger labels with a shadow teacher: the teacher in process, or an"
                     + " external one beside each imitating player");
@@ -102,8 +128,7 @@ public final class Dagger {
             throw new IllegalArgumentException("think steps must be 0 or more, not " + thinkSteps);
         }
         this.plan = plan;
-        this.knowledge = knowledge;
-        this.matching = matching;
+        this.imitator = imitator;
         this.thinkSteps = thinkSteps;
     }
 
@@ -119,13 +144,16 @@ public final class Dagger {
      */
     public Round next(Arena arena, LongConsumer progress) throws IOException {
         if (!corrections.isEmpty()) {
-            knowledge = extended(knowledge, corrections);
+            Map<Integer, List<List<Scene>>> byPlayer = new TreeMap<>();
+            for (ShadowLabels player : corrections) {
+                byPlayer.computeIfAbsent(player.unum(), unum -> new ArrayList<>()).add(player.labelled());
+            }
+            imitator = imitator.plus(byPlayer);
         }
-        Learner.Imitator imitator = Learner.of(knowledge, matching);
         boolean first = teacherGames == null;
         List<PlayedGame> teacher = first ? new ArrayList<>() : teacherGames;
         List<PlayedGame> imitating = new ArrayList<>();
-        List<List<Scene>> labelled = new ArrayList<>();
+        List<ShadowLabels> labelled = new ArrayList<>();
         long[] done = {0};
         for (long seed : plan.seeds()) {
             if (first) {
@@ -137,13 +165,12 @@ public final class Dagger {
                     labelling.imitator());
             imitating.add(Evaluation.play(PlayedGame.Role.IMITATOR, team, labelling.shadow(), plan, seed, arena, done,
                     progress));
-            for (ShadowLabels player : labelling.players) {
-                labelled.add(player.labelled());
-            }
+            labelled.addAll(labelling.players);
         }
         teacherGames = teacher;
         Evaluation.Results results = new Evaluation.Results(teacher, imitating);
-        Round round = new Round(rounds++, knowledge.size(), added, labelled.stream().mapToInt(List::size).sum(),
+        Round round = new Round(rounds++, imitator.scenes(), added,
+                labelled.stream().mapToInt(player -> player.labelled().size()).sum(),
                 Comparison.of(results), results);
         corrections = labelled;
         added = round.labelled();
@@ -152,18 +179,7 @@ public final class Dagger {
 
     /** The scenes the last round labelled, one sequence per imitating player and game, in seed and uniform number order. */
     List<List<Scene>> corrections() {
-        return corrections;
-    }
-
-    /** {@code base}'s stored scenes and the labelled sequences through fresh transforms each. */
-    KnowledgeBase extended(KnowledgeBase base, List<List<Scene>> sequences) {
-        KnowledgeBase.Builder builder = KnowledgeBase.builder(base.grid());
-        // stored scenes are already transformed: copied as they are
-        base.scenes().forEach(builder::add);
-        for (List<Scene> sequence : sequences) {
-            builder.addSequence(sequence, matching.transforms().get());
-        }
-        return builder.build();
+        return corrections.stream().map(ShadowLabels::labelled).toList();
     }
 
     /**

@@ -7,13 +7,13 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Random;
 import java.util.function.LongConsumer;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
-import org.scenes.agent.sim.GameResult;
-import org.scenes.agent.sim.GameSetup;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.GameLogs;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.GameResult;
+import org.scenes.simulator.GameSetup;
 
 /**
  * Teacher and imitator in the same situations: for every seed, one game with the teacher team on

@@ -13,11 +13,11 @@ import java.util.Objects;
 import java.util.Random;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
 import org.scenes.internal.protocol.InitReply;
 import org.scenes.internal.protocol.MessageParser;
 import org.scenes.internal.protocol.ProtocolException;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
 
 /**
  * A shadow teacher that is a program speaking the soccer server's protocol (HELIOS base's

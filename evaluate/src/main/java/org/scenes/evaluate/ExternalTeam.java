@@ -8,15 +8,15 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
 
 /**
  * A team that is not ours: a command started for each game ({@code bash -c}, in a session of its
  * own so that the whole process group can be ended), its players connecting to the server by
  * themselves. The command is a template: {@code {host}}, {@code {port}}, {@code {team}} and
  * {@code {players}} are replaced by the server's address, the team name and its number of players.
- * It stands where a team's brains stand ({@link org.scenes.agent.sim.GameSetup.Team#brains()}),
+ * It stands where a team's brains stand ({@link org.scenes.simulator.GameSetup.Team#brains()}),
  * but only a live server ({@link LiveArena}) can play it: it makes no brain in process.
  */
 public record ExternalTeam(String command) implements BrainFactory {

@@ -6,13 +6,11 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.Map;
 import java.util.function.LongConsumer;
 import java.util.stream.Stream;
-import org.scenes.agent.BrainFactory;
 import org.scenes.agent.imitation.ImitationBrain;
-import org.scenes.agent.sim.GameResult;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
+import org.scenes.agent.imitation.ImitationTeam;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginRegistry;
@@ -24,6 +22,10 @@ import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.target.Replay;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.GameResult;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
 
 /**
  * Learns an imitator from its teacher's own games, in process, through the same steps a user
@@ -31,11 +33,26 @@ import org.scenes.internal.validate.MatchConfig;
  * directory that is deleted afterwards.
  */
 public final class Learner {
-    /** The learnt imitator: its brains and the knowledge base they match in. */
-    public record Imitator(BrainFactory brains, KnowledgeBase knowledge) {
+    /**
+     * The learnt imitator: its brains, the knowledge base they match in (the team's, with roles),
+     * its roles or null, and its matching.
+     */
+    public record Imitator(BrainFactory brains, KnowledgeBase knowledge, ImitationTeam roles, Matching matching) {
         /** How many scenes it learnt from. */
         public int scenes() {
             return knowledge.size();
+        }
+
+        /**
+         * The imitator with more scenes, by the uniform number of the player that built them
+         * (DAgger's labelled sequences): with roles, each player's join its counterpart's too.
+         */
+        public Imitator plus(Map<Integer, List<List<Scene>>> sequences) {
+            if (roles == null) {
+                return of(knowledge.plus(sequences.values().stream().flatMap(List::stream).toList(),
+                        matching.transforms()), matching);
+            }
+            return of(roles.plus(sequences, matching.transforms(), matching::recognizer), matching);
         }
     }
 
@@ -48,6 +65,11 @@ public final class Learner {
                         java.util.function.Supplier<ActionSelector> selector,
                         java.util.function.Supplier<List<SceneTransform>> transforms) {
             this(metric, k, selector, transforms, Replay.RAW);
+        }
+
+        /** Nearest scenes in {@code knowledge} as this matching finds them. */
+        Recognizer recognizer(KnowledgeBase knowledge) {
+            return new Recognizer(knowledge, metric, k, SceneTransform.queryImage(transforms.get()));
         }
 
         /** The matching a configuration (of {@code validate}, {@code tune}) describes. */
@@ -96,12 +118,24 @@ public final class Learner {
         }
     }
 
-    /** An imitator on a knowledge base already built (from scene files, say). */
+    /** An imitator on a knowledge base already built (from scene files, say), every player on all of it. */
     public static Imitator of(KnowledgeBase knowledge, Matching matching) {
-        Recognizer recognizer = new Recognizer(knowledge, matching.metric(), matching.k(),
-                SceneTransform.queryImage(matching.transforms().get()));
-        return new Imitator(ImitationBrain.factory(recognizer, matching.selector(), matching.transforms(),
-                ImitationBrain.Guards.OFF, matching.replay()), knowledge);
+        return new Imitator(ImitationBrain.factory(matching.recognizer(knowledge), matching.selector(),
+                matching.transforms(), ImitationBrain.Guards.OFF, matching.replay()), knowledge, null, matching);
+    }
+
+    /**
+     * An imitation team with roles from scene files (as {@code scenes play} assembles one): each
+     * player on its counterpart's or the team's knowledge, with its counterpart's kick-off moves,
+     * set-play kicks and goalie flag.
+     */
+    public static Imitator roles(List<Path> files, Matching matching, ImitationTeam.Knowledge knowledge) {
+        return of(ImitationTeam.load(files, matching.transforms(), matching::recognizer, knowledge), matching);
+    }
+
+    private static Imitator of(ImitationTeam team, Matching matching) {
+        return new Imitator(team.brains(matching.selector(), matching.transforms(), ImitationBrain.Guards.OFF,
+                matching.replay()), team.knowledge(), team, matching);
     }
 
     private static void deleteTree(Path directory) throws IOException {

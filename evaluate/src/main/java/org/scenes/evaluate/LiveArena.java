@@ -15,14 +15,9 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
 import java.util.function.IntConsumer;
 import java.util.stream.Stream;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
 import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.PlayerReport;
 import org.scenes.agent.net.TeamRunner;
-import org.scenes.agent.sim.GameResult;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.GameLogReader;
@@ -31,6 +26,11 @@ import org.scenes.internal.protocol.InitReply;
 import org.scenes.internal.protocol.Message;
 import org.scenes.internal.protocol.MessageParser;
 import org.scenes.internal.protocol.SenseBody;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.GameResult;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
 
 /**
  * Games on a live soccer server (rcssserver, or {@code scenes server}) through the project's UDP
@@ -252,11 +252,15 @@ public final class LiveArena implements Arena {
      * Brains made as each player's init is answered, seeded as the embedded simulator seeds
      * them, behind the scoreboard.
      */
-    private static BrainFactory seeded(BrainFactory brains, long seed, Side side, Scoreboard board,
+    static BrainFactory seeded(BrainFactory brains, long seed, Side side, Scoreboard board,
                                        AtomicInteger connected, AtomicReference<String> wrongSide,
                                        Consumer<String> notices) {
+        // the runner makes the players' brains in order and starts each player once the one before was answered,
+        // so the server numbers them 1, 2, ... in the order made (answers are handled on the players' own threads)
+        AtomicInteger made = new AtomicInteger();
         return (teamName, ignored) -> new Brain() {
             private final MessageParser parser = new MessageParser();
+            private final int expected = made.incrementAndGet();
             private Brain inner;
             private int unum;
 
@@ -274,9 +278,8 @@ public final class LiveArena implements Arena {
                     }
                     unum = init.uniformNumber();
                     inner = brains.create(teamName, new Random(Simulator.brainSeed(seed, side, unum)));
-                    int expected = connected.incrementAndGet();
+                    connected.incrementAndGet();
                     if (unum != expected) {
-                        // players connect one after another, so the server numbers them 1, 2, ...
                         notices.accept(teamName + " player " + expected + " was given uniform number " + unum
                                 + ": the server holds a player of an earlier try (answered too late?); the game"
                                 + " is played, but not with the numbers and seeds of the game in process");
@@ -339,7 +342,7 @@ public final class LiveArena implements Arena {
     }
 
     /** What the players hear of the game: the clock, the score, time over, and their kick counters. */
-    private static final class Scoreboard {
+    static final class Scoreboard {
         final AtomicInteger time = new AtomicInteger();
         final AtomicInteger[] score = {new AtomicInteger(), new AtomicInteger()};
         final ConcurrentHashMap<String, Integer> kickCounters = new ConcurrentHashMap<>();

@@ -4,11 +4,11 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.IntConsumer;
-import org.scenes.agent.BrainFactory;
-import org.scenes.agent.sim.GameResult;
-import org.scenes.agent.sim.GameSetup;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.GameResult;
+import org.scenes.simulator.GameSetup;
 
 /** One game between two teams, both traced, each with an optional shadow brain beside its players. */
 public final class Match {

@@ -1,8 +1,8 @@
 package org.scenes.evaluate;
 
 import java.util.function.Consumer;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
 
 /**
  * Gives a brain the think loop of the Krislet client: it decides at most once per {@code steps}

@@ -1,9 +1,9 @@
 package org.scenes.evaluate;
 
 import java.util.List;
-import org.scenes.agent.sim.GameResult;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.simulator.GameResult;
 
 /**
  * One game seen from one side: who played there, which side it was, the seed, the result, the

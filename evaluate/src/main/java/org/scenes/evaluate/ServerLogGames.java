@@ -11,12 +11,12 @@ import java.util.Map;
 import java.util.Set;
 import java.util.function.IntConsumer;
 import java.util.stream.Stream;
-import org.scenes.agent.sim.GameResult;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.GameLogReader;
 import org.scenes.internal.gamelog.GameLogs;
 import org.scenes.internal.gamelog.PlayerState;
+import org.scenes.simulator.GameResult;
 
 /**
  * Games read from the server's logs alone, for an evaluation of any team: each game log

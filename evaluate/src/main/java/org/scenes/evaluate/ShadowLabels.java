@@ -3,13 +3,14 @@ package org.scenes.evaluate;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
-import org.scenes.agent.Brain;
 import org.scenes.api.Action;
 import org.scenes.api.Scene;
 import org.scenes.internal.protocol.CommandType;
+import org.scenes.internal.protocol.InitReply;
 import org.scenes.internal.protocol.Message;
 import org.scenes.internal.protocol.MessageParser;
 import org.scenes.internal.protocol.PlayerCommand;
+import org.scenes.simulator.Brain;
 
 /**
  * DAgger's labels for one imitating player: each scene the imitator built from a see, with the
@@ -31,6 +32,7 @@ final class ShadowLabels {
     private final List<Action[]> replies = new ArrayList<>();
     private int imitatorSees;
     private int shadowSees;
+    private int unum;
 
     /** The imitator's brain, its sees numbered; its scenes go to {@link #built}. */
     Brain imitator(Brain brain) {
@@ -39,6 +41,10 @@ final class ShadowLabels {
             public void receive(String message, Consumer<String> send) {
                 if (message.startsWith("(see ")) {
                     imitatorSees++;
+                } else if (message.startsWith("(init ")
+                        // its own parser: the shadow's replies may be parsed on another thread
+                        && parse(new MessageParser(), message) instanceof InitReply init) {
+                    unum = init.uniformNumber();
                 }
                 brain.receive(message, send);
             }
@@ -110,13 +116,7 @@ final class ShadowLabels {
         if (shadowSees == 0) {
             return; // the kick-off move before any see, as conversion drops it
         }
-        Message message;
-        try {
-            message = parser.parse(text);
-        } catch (RuntimeException e) {
-            return;
-        }
-        if (!(message instanceof PlayerCommand command) || command.toAction() == null) {
+        if (!(parse(parser, text) instanceof PlayerCommand command) || command.toAction() == null) {
             return;
         }
         while (replies.size() < shadowSees) {
@@ -127,6 +127,20 @@ final class ShadowLabels {
         if (slot >= 0 && reply[slot] == null) {
             reply[slot] = command.toAction();
         }
+    }
+
+    /** The message, or null when it does not parse. */
+    private static Message parse(MessageParser parser, String text) {
+        try {
+            return parser.parse(text);
+        } catch (RuntimeException e) {
+            return null;
+        }
+    }
+
+    /** The uniform number the server gave the imitating player (0 before its init was answered). */
+    int unum() {
+        return unum;
     }
 
     /** The scenes built so far with the shadow's replies as their actions, in see order. */

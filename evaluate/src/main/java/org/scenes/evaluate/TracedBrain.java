@@ -2,7 +2,6 @@ package org.scenes.evaluate;
 
 import java.util.Objects;
 import java.util.function.Consumer;
-import org.scenes.agent.Brain;
 import org.scenes.api.ObjectKind;
 import org.scenes.internal.protocol.CommandType;
 import org.scenes.internal.protocol.Message;
@@ -10,6 +9,7 @@ import org.scenes.internal.protocol.MessageParser;
 import org.scenes.internal.protocol.PlayerCommand;
 import org.scenes.internal.protocol.See;
 import org.scenes.internal.protocol.VisualObject;
+import org.scenes.simulator.Brain;
 
 /**
  * A brain that drives the player and, beside it, an optional shadow brain fed exactly the same

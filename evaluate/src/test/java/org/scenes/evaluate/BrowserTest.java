@@ -19,8 +19,8 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.teacher.Teachers;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * The pages in a real browser: headless Chromium (Debian's {@code chromium}) opens them without
@@ -69,7 +69,7 @@ class BrowserTest {
         GameSetup.Team teal = new GameSetup.Team("Teal", 3, Teachers.byName("krislet"));
         GameSetup.Team amber = new GameSetup.Team("Amber", 3, Teachers.byName("statebased"));
         List<org.scenes.internal.gamelog.GameFrame> frames = new ArrayList<>();
-        new org.scenes.agent.sim.Simulator(new GameSetup(teal, amber, 300, 3, null)).run(t -> { }, frames::add);
+        new org.scenes.simulator.Simulator(new GameSetup(teal, amber, 300, 3, null)).run(t -> { }, frames::add);
         Path page = directory.resolve("replay.html");
         ReplayPage.write(page, "Teal against Amber", frames);
         String dom = open(page, "replay.png");

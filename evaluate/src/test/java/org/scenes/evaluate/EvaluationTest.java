@@ -6,10 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.PluginRegistry;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.teacher.Teachers;
 
 class EvaluationTest {
     private static final GameSetup.Team TEACHER = new GameSetup.Team("Teal", 3, Teachers.byName("krislet"));

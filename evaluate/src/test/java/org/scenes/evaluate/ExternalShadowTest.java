@@ -20,16 +20,16 @@ import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
 import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.ServerAddress;
-import org.scenes.agent.server.GameSeries;
-import org.scenes.agent.server.ServerConfig;
-import org.scenes.agent.server.ServerResult;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.server.GameSeries;
+import org.scenes.simulator.server.ServerConfig;
+import org.scenes.simulator.server.ServerResult;
+import org.scenes.simulator.teacher.Teachers;
 import org.scenes.testing.Processes;
 
 /**

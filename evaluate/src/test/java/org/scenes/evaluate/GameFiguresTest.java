@@ -5,12 +5,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.scenes.agent.sim.GameResult;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.PlayerState;
 import org.scenes.internal.protocol.MessageParser;
 import org.scenes.internal.protocol.PlayerCommand;
+import org.scenes.simulator.GameResult;
 
 class GameFiguresTest {
     private static final MessageParser PARSER = new MessageParser();

@@ -20,15 +20,15 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.ServerAddress;
-import org.scenes.agent.server.GameSeries;
-import org.scenes.agent.server.ServerConfig;
-import org.scenes.agent.server.ServerResult;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.server.GameSeries;
+import org.scenes.simulator.server.ServerConfig;
+import org.scenes.simulator.server.ServerResult;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * {@code scenes evaluate --server}: the evaluation's games played on the project's own server

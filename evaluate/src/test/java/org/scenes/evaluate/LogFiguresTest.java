@@ -15,14 +15,14 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.BrainFactory;
-import org.scenes.agent.sim.GameResult;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.protocol.CommandType;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.GameResult;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.teacher.Teachers;
 
 /** The figures of the server's logs, checked against the simulator's own games. */
 class LogFiguresTest {
@@ -173,7 +173,7 @@ class LogFiguresTest {
      * Players that move to a spot once, then answer every see: number 1 (beside the centre spot)
      * with a kick of no power, the others with a turn of nothing.
      */
-    private static final BrainFactory STATUES = (team, random) -> new org.scenes.agent.Brain() {
+    private static final BrainFactory STATUES = (team, random) -> new org.scenes.simulator.Brain() {
         private int unum;
 
         @Override

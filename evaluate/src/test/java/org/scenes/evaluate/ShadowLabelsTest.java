@@ -6,11 +6,11 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
 import org.junit.jupiter.api.Test;
-import org.scenes.agent.Brain;
 import org.scenes.api.Action;
 import org.scenes.api.ActionType;
 import org.scenes.api.Observer;
 import org.scenes.api.Scene;
+import org.scenes.simulator.Brain;
 
 class ShadowLabelsTest {
     private static final List<String> MESSAGES = List.of("(init l 1 before_kick_off)", "(player_type (id 0))",
@@ -81,6 +81,15 @@ class ShadowLabelsTest {
                     Double.NaN)), labelled.get(0).actions());
             assertEquals(List.of(new Action(ActionType.KICK, 100, 0)), labelled.get(1).actions());
         }
+    }
+
+    @Test
+    void theLabelsBelongToTheUniformNumberTheServerGaveTheImitator() {
+        ShadowLabels labels = new ShadowLabels();
+        Brain imitator = labels.imitator(imitator(labels));
+        assertEquals(0, labels.unum(), "unknown before the init is answered");
+        imitator.receive("(init r 7 before_kick_off)", command -> { });
+        assertEquals(7, labels.unum());
     }
 
     @Test

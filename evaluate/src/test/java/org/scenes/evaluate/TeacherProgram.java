@@ -5,7 +5,7 @@ import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.PlayerReport;
 import org.scenes.agent.net.ServerAddress;
 import org.scenes.agent.net.TeamRunner;
-import org.scenes.agent.teacher.Teachers;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * A built-in teacher as a program of its own, for tests of external shadows: {@code HOST PORT TEAM
@@ -19,9 +19,9 @@ public final class TeacherProgram {
     public static void main(String[] args) throws InterruptedException {
         int dieAt = args.length > 4 ? Integer.parseInt(args[4]) : Integer.MAX_VALUE;
         ClientOptions options = ClientOptions.of(new ServerAddress(args[0], Integer.parseInt(args[1])), args[2]);
-        org.scenes.agent.BrainFactory teacher = Teachers.byName(args[3]);
-        org.scenes.agent.BrainFactory dying = (team, random) -> {
-            org.scenes.agent.Brain brain = teacher.create(team, random);
+        org.scenes.simulator.BrainFactory teacher = Teachers.byName(args[3]);
+        org.scenes.simulator.BrainFactory dying = (team, random) -> {
+            org.scenes.simulator.Brain brain = teacher.create(team, random);
             return (message, send) -> {
                 if (message.startsWith("(sense_body ") && Integer.parseInt(message.split(" ")[1]) >= dieAt) {
                     System.out.println("dying at " + message.split(" ")[1]);

@@ -2,8 +2,8 @@ package org.scenes.options;
 
 import java.nio.file.Path;
 import org.scenes.internal.experiment.Sweep;
-import org.scenes.script.ScriptFailure;
-import org.scenes.script.Sweeps;
+import org.scenes.plugins.script.ScriptFailure;
+import org.scenes.plugins.script.Sweeps;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 

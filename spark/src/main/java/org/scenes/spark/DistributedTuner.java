@@ -69,6 +69,7 @@ final class DistributedTuner implements Tuner.Evaluation {
 
     /** The search of {@link Tuner#tune}, step for step. */
     Tuner.Result tune(List<MatchConfig> starts, List<Tuner.Dimension> dimensions, int sweeps) {
+        Tuner.checkVariants(starts, dimensions);
         Tuner.Descent descent = Tuner.descend(starts, dimensions, sweeps, this);
         return Tuner.Result.of(descent, pooled.get(descent.best()), asked.size());
     }

@@ -63,7 +63,8 @@ final class TuneCommand implements Callable<Integer> {
                 out.println(line);
                 out.flush();
             });
-            result = tuner.tune(Tuner.defaultStarts(MatchConfig.DEFAULT.withSeed(tuning.seed())), Tuner.defaultSearch(), sweeps);
+            result = tuner.tune(Tuner.defaultStarts(MatchConfig.DEFAULT.withSeed(tuning.seed())),
+                    Tuner.defaultSearch(top.options.registry()), sweeps);
             validated = tuner.validated();
         }
         write(hadoop, result.config(), Tuning.crossValidation(result, chosen, goal, train));

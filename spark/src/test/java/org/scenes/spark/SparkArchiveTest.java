@@ -12,9 +12,9 @@ import java.util.List;
 import java.util.zip.GZIPOutputStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.teacher.Teachers;
 
 /** {@code scenes-spark convert ARCHIVE_DIR} writes what {@code scenes convert ARCHIVE_DIR} writes, and resumes. */
 class SparkArchiveTest {

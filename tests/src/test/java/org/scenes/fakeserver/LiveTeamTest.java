@@ -20,13 +20,13 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
 import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.PlayerReport;
 import org.scenes.agent.net.PlayerReport.Outcome;
 import org.scenes.agent.net.ServerAddress;
 import org.scenes.agent.net.TeamRunner;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
 
 /** The client runtime against the fake server on loopback: init, port switch, synchronous play, failures. */
 class LiveTeamTest {
@@ -448,8 +448,8 @@ class LiveTeamTest {
         // an imitator of a teacher whose scenes hold no move; it asks to be the goalie (its counterpart was)
         BrainFactory stays = new BrainFactory() {
             @Override
-            public org.scenes.agent.Brain create(String team, java.util.Random random) {
-                return new org.scenes.agent.Brain() {
+            public org.scenes.simulator.Brain create(String team, java.util.Random random) {
+                return new org.scenes.simulator.Brain() {
                     @Override
                     public void receive(String message, java.util.function.Consumer<String> send) {
                         if (message.startsWith("(player_type")) {

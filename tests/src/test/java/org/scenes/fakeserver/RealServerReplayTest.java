@@ -22,14 +22,12 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.scenes.agent.BrainFactory;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.net.ClientOptions;
-import org.scenes.agent.net.PlayerReport.Outcome;
 import org.scenes.agent.net.PlayerReport;
+import org.scenes.agent.net.PlayerReport.Outcome;
 import org.scenes.agent.net.ServerAddress;
 import org.scenes.agent.net.TeamRunner;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Action;
 import org.scenes.api.Grid;
 import org.scenes.api.ObjectKind;
@@ -42,6 +40,8 @@ import org.scenes.internal.convert.Pairing;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
+import org.scenes.simulator.BrainFactory;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * What one player received from a real rcssserver 19 (protocol 5, 7, 9, 15, 19), replayed by the

@@ -19,13 +19,6 @@ import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.PlayerReport;
 import org.scenes.agent.net.ServerAddress;
 import org.scenes.agent.net.TeamRunner;
-import org.scenes.agent.server.ServerConfig;
-import org.scenes.agent.server.ServerResult;
-import org.scenes.agent.server.SoccerServer;
-import org.scenes.agent.sim.GameResult;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.Grid;
 import org.scenes.api.ObjectKind;
@@ -35,6 +28,13 @@ import org.scenes.api.SeenObject;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
+import org.scenes.simulator.GameResult;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.server.ServerConfig;
+import org.scenes.simulator.server.ServerResult;
+import org.scenes.simulator.server.SoccerServer;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * The runtime's two kinds of team, started the one way ({@link TeamRunner}), play a whole

@@ -24,11 +24,6 @@ import org.junit.jupiter.api.io.TempDir;
 import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.LivePlayer;
 import org.scenes.agent.net.ServerAddress;
-import org.scenes.agent.server.ServerConfig;
-import org.scenes.agent.server.ServerResult;
-import org.scenes.agent.server.SoccerServer;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Grid;
 import org.scenes.api.Side;
 import org.scenes.internal.convert.ConversionReport;
@@ -40,6 +35,11 @@ import org.scenes.logproxy.ClientKind;
 import org.scenes.logproxy.LogProxy;
 import org.scenes.logproxy.ProxyConfig;
 import org.scenes.logproxy.Route;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.server.ServerConfig;
+import org.scenes.simulator.server.ServerResult;
+import org.scenes.simulator.server.SoccerServer;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * The project's agents (teachers on the live runtime, over UDP) play one full game on

@@ -14,12 +14,6 @@ import java.util.Random;
 import java.util.TreeMap;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.sim.Engine;
-import org.scenes.agent.sim.GameRecorder;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Seat;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Grid;
 import org.scenes.internal.convert.GameLogConverter;
 import org.scenes.internal.convert.Pairing;
@@ -29,6 +23,12 @@ import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileWriter;
 import org.scenes.internal.scene.SceneSource;
 import org.scenes.internal.vision.Fading;
+import org.scenes.simulator.Engine;
+import org.scenes.simulator.GameRecorder;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Seat;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * Scenes rebuilt from the server's logs of a simulated game against the scenes of the players'

@@ -10,9 +10,6 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Grid;
 import org.scenes.internal.convert.GameLogConverter;
 import org.scenes.internal.convert.GameSceneFiles;
@@ -22,6 +19,9 @@ import org.scenes.internal.gamelog.GameLogs;
 import org.scenes.internal.inference.CommandCheck;
 import org.scenes.internal.protocol.CommandType;
 import org.scenes.internal.vision.Fading;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * The commands inferred from a simulated game's log alone against its command log (the

@@ -30,8 +30,8 @@ class PluginsUseOnlyTheApiTest {
      * plugin; it may use the experiment classes.
      */
     private static final Set<String> SWEEP_LANGUAGE = Set.of(
-            "plugins/script/src/main/java/org/scenes/script/SweepScript.java",
-            "plugins/script/src/main/java/org/scenes/script/Sweeps.java");
+            "plugins/script/src/main/java/org/scenes/plugins/script/SweepScript.java",
+            "plugins/script/src/main/java/org/scenes/plugins/script/Sweeps.java");
 
     @Test
     void pluginSourcesNameNoInternalPackage() throws IOException {

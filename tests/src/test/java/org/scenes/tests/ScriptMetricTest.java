@@ -124,7 +124,7 @@ class ScriptMetricTest {
         assertEquals("query scene " + index + " (cycle " + cycle + "): " + failing + ":3: IllegalStateException: "
                 + "cannot compare this one (comparing the query scene of cycle " + cycle
                 + " with the stored scene of cycle " + train.get(0).cycle() + ")", failure.getMessage());
-        assertInstanceOf(org.scenes.script.ScriptFailure.class, failure.getCause());
+        assertInstanceOf(org.scenes.plugins.script.ScriptFailure.class, failure.getCause());
     }
 
     private static boolean cycleSeenBefore(int index) {

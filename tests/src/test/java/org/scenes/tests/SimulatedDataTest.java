@@ -11,7 +11,6 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.scenes.agent.sim.SyntheticScenes;
 import org.scenes.api.Grid;
 import org.scenes.api.Neighbour;
 import org.scenes.api.PluginConfig;
@@ -29,6 +28,7 @@ import org.scenes.internal.protocol.CommandType;
 import org.scenes.internal.protocol.Message;
 import org.scenes.internal.protocol.MessageParser;
 import org.scenes.internal.protocol.Unknown;
+import org.scenes.simulator.SyntheticScenes;
 
 /**
  * What the tests on the shared real recordings check that does not depend on real data, checked

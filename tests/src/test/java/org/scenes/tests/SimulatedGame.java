@@ -6,9 +6,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Comparator;
 import java.util.stream.Stream;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * Player logs the project makes itself: one seeded 5 v 5 game of Krislet teachers in the embedded

@@ -3,8 +3,8 @@ package org.scenes.tests;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.nio.file.Path;
 import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.HashMap;
@@ -14,12 +14,6 @@ import java.util.Random;
 import java.util.TreeMap;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.sim.Engine;
-import org.scenes.agent.sim.GameRecorder;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Seat;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Grid;
 import org.scenes.api.Side;
 import org.scenes.internal.convert.GameLogConverter;
@@ -27,6 +21,12 @@ import org.scenes.internal.convert.Pairing;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.vision.Fading;
 import org.scenes.internal.world.WorldAccuracy;
+import org.scenes.simulator.Engine;
+import org.scenes.simulator.GameRecorder;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Seat;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.teacher.Teachers;
 
 /**
  * The world model of scenes against the true positions of the game log, on a seeded simulated

@@ -5,8 +5,6 @@ import java.util.Objects;
 import java.util.Random;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
 import org.scenes.api.Action;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.ActionType;
@@ -32,6 +30,8 @@ import org.scenes.internal.target.Steering;
 import org.scenes.internal.validate.Validator;
 import org.scenes.internal.world.ServerDefaults;
 import org.scenes.internal.world.WorldModel;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
 
 /**
  * The imitating player: every {@code see} becomes a scene exactly as the converter makes one
@@ -253,8 +253,7 @@ public final class ImitationBrain implements Brain {
         perCycle = recognizer.splitsBySeeAge();
         ImitationTeam.Counterpart counterpart = roles.counterpart(unum);
         counterpartMoves = counterpart == null ? List.of() : counterpart.moves();
-        setPlayKicks = counterpart == null || counterpart.setPlayKicks() == null ? SetPlayKicks.NONE
-                : counterpart.setPlayKicks();
+        setPlayKicks = roles.setPlayKicks(unum);
     }
 
     /**

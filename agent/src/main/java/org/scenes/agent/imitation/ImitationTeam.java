@@ -10,7 +10,6 @@ import java.util.Objects;
 import java.util.TreeMap;
 import java.util.function.Function;
 import java.util.function.Supplier;
-import org.scenes.agent.BrainFactory;
 import org.scenes.api.Action;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.ActionType;
@@ -21,6 +20,7 @@ import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.internal.scene.SceneSource;
 import org.scenes.internal.target.Replay;
+import org.scenes.simulator.BrainFactory;
 
 /**
  * What an imitation team knows, by role: the whole team's scenes, and for each recorded player
@@ -71,11 +71,20 @@ public final class ImitationTeam {
     private final Recognizer team;
     private final Map<Integer, Counterpart> counterparts;
     private final Knowledge knowledge;
+    /** Every recorded player's set-play kicks together. */
+    private final SetPlayKicks teamSetPlayKicks;
 
     private ImitationTeam(Recognizer team, Map<Integer, Counterpart> counterparts, Knowledge knowledge) {
         this.team = Objects.requireNonNull(team, "team");
         this.counterparts = Collections.unmodifiableMap(new TreeMap<>(counterparts));
         this.knowledge = Objects.requireNonNull(knowledge, "knowledge");
+        SetPlayKicks kicks = SetPlayKicks.NONE;
+        for (Counterpart counterpart : this.counterparts.values()) {
+            if (counterpart.setPlayKicks() != null) {
+                kicks = kicks.with(counterpart.setPlayKicks());
+            }
+        }
+        teamSetPlayKicks = kicks;
     }
 
     /** A team without roles: every player matches {@code recognizer}'s scenes, as one pool. */
@@ -123,6 +132,27 @@ public final class ImitationTeam {
         return new ImitationTeam(team, counterparts, knowledge);
     }
 
+    /**
+     * This team with more scenes: DAgger's labelled sequences, by the uniform number of the player
+     * that built them. All join the team's knowledge; each player's also join its counterpart's
+     * (when it has its own). Moves, set-play kicks and goalies stay as recorded.
+     *
+     * @param recognizers makes the recognizer (metric, k) of a knowledge base
+     */
+    public ImitationTeam plus(Map<Integer, List<List<Scene>>> sequences, Supplier<List<SceneTransform>> transforms,
+                              Function<KnowledgeBase, Recognizer> recognizers) {
+        List<List<Scene>> all = sequences.values().stream().flatMap(List::stream).toList();
+        Map<Integer, Counterpart> corrected = new TreeMap<>();
+        for (Counterpart counterpart : counterparts.values()) {
+            List<List<Scene>> own = sequences.getOrDefault(counterpart.unum(), List.of());
+            Recognizer recognizer = counterpart.recognizer() == null || own.isEmpty() ? counterpart.recognizer()
+                    : recognizers.apply(counterpart.recognizer().knowledge().plus(own, transforms));
+            corrected.put(counterpart.unum(), new Counterpart(counterpart.unum(), counterpart.goalie(), recognizer,
+                    counterpart.moves(), counterpart.setPlayKicks()));
+        }
+        return new ImitationTeam(recognizers.apply(team.knowledge().plus(all, transforms)), corrected, knowledge);
+    }
+
     /** The first move of each run of scenes whose primary action is a move. */
     static List<Action> kickOffMoves(Iterable<Scene> scenes) {
         List<Action> moves = new ArrayList<>();
@@ -148,7 +178,7 @@ public final class ImitationTeam {
                                ImitationBrain.Guards guards, Replay replay) {
         return new BrainFactory() {
             @Override
-            public org.scenes.agent.Brain create(String teamName, java.util.Random random) {
+            public org.scenes.simulator.Brain create(String teamName, java.util.Random random) {
                 return new ImitationBrain(teamName, ImitationTeam.this, selectors.get(), transforms, random, guards,
                         replay);
             }
@@ -166,6 +196,16 @@ public final class ImitationTeam {
         return team;
     }
 
+    /**
+     * The set-play kicks player {@code unum} takes: its counterpart's, and the team's for the kinds
+     * its counterpart never took ({@link SetPlayKicks#orTeams}).
+     */
+    SetPlayKicks setPlayKicks(int unum) {
+        Counterpart counterpart = counterparts.get(unum);
+        return counterpart == null || counterpart.setPlayKicks() == null ? teamSetPlayKicks
+                : counterpart.setPlayKicks().orTeams(teamSetPlayKicks);
+    }
+
     /** The recorded player with this uniform number, or null. */
     Counterpart counterpart(int unum) {
         return counterparts.get(unum);
@@ -175,6 +215,11 @@ public final class ImitationTeam {
     Recognizer recognizer(int unum) {
         Counterpart counterpart = counterparts.get(unum);
         return counterpart != null && counterpart.recognizer() != null ? counterpart.recognizer() : team;
+    }
+
+    /** The team's knowledge base: every player's scenes. */
+    public KnowledgeBase knowledge() {
+        return team.knowledge();
     }
 
     /** Scenes in the team's knowledge base. */

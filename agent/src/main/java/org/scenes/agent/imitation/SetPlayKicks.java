@@ -71,6 +71,20 @@ final class SetPlayKicks {
     }
 
     /**
+     * These kicks, and for the kinds this player never took, {@code team}'s: a player that stands
+     * at the ball of a set play its counterpart never took (the ball came to it, or its
+     * knowledge sent it there) takes it as its team did, rather than waiting at the ball for ever.
+     */
+    SetPlayKicks orTeams(SetPlayKicks team) {
+        if (team.byKind.keySet().stream().allMatch(byKind::containsKey)) {
+            return this;
+        }
+        Map<String, List<Kick>> merged = new HashMap<>(team.byKind);
+        merged.putAll(byKind);
+        return new SetPlayKicks(merged);
+    }
+
+    /**
      * The kick to take now: in a set play of the player's own team that has lasted {@code waited}
      * cycles, at least the median of the recorded waits of that kind, the first recorded kick of
      * that kind; null before, in other play modes, or when the player never took one of that kind.

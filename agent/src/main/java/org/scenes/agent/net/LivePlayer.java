@@ -11,7 +11,6 @@ import java.util.TreeMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
-import org.scenes.agent.Brain;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.net.Connection.Datagram;
 import org.scenes.agent.net.PlayerReport.Outcome;
@@ -24,6 +23,7 @@ import org.scenes.internal.protocol.ProtocolException;
 import org.scenes.internal.protocol.See;
 import org.scenes.internal.protocol.SenseBody;
 import org.scenes.internal.protocol.ServerNotice;
+import org.scenes.simulator.Brain;
 
 /**
  * One player on a real (or fake) soccer server: its socket, its brain, its health.

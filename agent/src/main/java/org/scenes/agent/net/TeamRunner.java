@@ -6,7 +6,7 @@ import java.util.Objects;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
-import org.scenes.agent.BrainFactory;
+import org.scenes.simulator.BrainFactory;
 
 /**
  * A team on a soccer server: N players in this JVM, a thread each, every brain made by one

@@ -10,10 +10,6 @@ import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.sim.GameResult;
-import org.scenes.agent.sim.GameSetup;
-import org.scenes.agent.sim.Simulator;
-import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.Grid;
 import org.scenes.api.ObjectKind;
@@ -23,6 +19,10 @@ import org.scenes.api.SeenObject;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
+import org.scenes.simulator.GameResult;
+import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
+import org.scenes.simulator.teacher.Teachers;
 
 /** Learn from a simulated Krislet game, then play in the simulator with what was learnt. */
 class ImitationBrainTest {

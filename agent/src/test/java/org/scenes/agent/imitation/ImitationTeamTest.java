@@ -2,6 +2,7 @@ package org.scenes.agent.imitation;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -11,8 +12,6 @@ import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.scenes.agent.Brain;
-import org.scenes.agent.BrainFactory;
 import org.scenes.api.Action;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.Grid;
@@ -27,6 +26,8 @@ import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileWriter;
 import org.scenes.internal.scene.SceneSource;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
 
 /** Roles: each imitating player plays on its counterpart's scenes and takes its kick-off moves. */
 class ImitationTeamTest {
@@ -110,6 +111,60 @@ class ImitationTeamTest {
         assertFalse(neverMoved.repeatsKickOffMove(), "its teacher never moved after a goal: neither does it");
         Brain withoutRoles = new ImitationBrain("Teal", team.recognizer(3), FIRST, List::of, new Random(1));
         assertTrue(withoutRoles.repeatsKickOffMove(), "a brain without roles keeps the runtime's repeat");
+    }
+
+    /** What the player with this number answers to a ball 18 m ahead. */
+    private static List<String> answerAt18(BrainFactory brains, int unum) {
+        Brain brain = brains.create("Teal", new Random(1));
+        List<String> sent = new ArrayList<>();
+        brain.receive("(init l " + unum + " before_kick_off)", s -> { });
+        brain.receive("(see 50 ((b) 18 0))", sent::add);
+        return sent;
+    }
+
+    @Test
+    void labelledScenesJoinTheirPlayersCounterpartAndTheTeam() throws IOException {
+        ImitationTeam team = team(ImitationTeam.Knowledge.COUNTERPART);
+        Observer two = new Observer("Teal", Side.LEFT, 2);
+        // player 2's label: a dash at a ball 20 m ahead, nearer 18 m than any recorded scene (10 m, 30 m)
+        ImitationTeam labelled = team.plus(java.util.Map.of(2, List.of(List.of(
+                        new Scene(60, two, ballAt(20), List.of(Action.dash(77)))))), List::of,
+                knowledge -> new Recognizer(knowledge, () -> ImitationBrainTest.BALL, 1));
+        BrainFactory brains = labelled.brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF);
+        assertEquals(List.of("(dash 77)"), answerAt18(brains, 2));
+        assertEquals(List.of("(kick 100 0)"), answerAt18(brains, 1), "player 1's own scenes did not change");
+        assertEquals(team.scenes() + 1, labelled.scenes(), "the team's knowledge holds the label too");
+        assertEquals(List.of("(turn 30)"), answerAt18(team.brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF), 2),
+                "the team it was made from is unchanged");
+        assertTrue(brains.goalie(1), "roles stay");
+        assertEquals("(move -20 10)", play(brains, 2).get(0), "and the counterpart's kick-off move");
+    }
+
+    @Test
+    void aPlayerWhoseCounterpartNeverTookAKickOffTakesItAsTheTeamDid() throws IOException {
+        List<Path> files = new ArrayList<>();
+        for (int unum : new int[] {3, 4}) {
+            Observer player = new Observer("Teal", Side.LEFT, unum);
+            List<Scene> scenes = new ArrayList<>();
+            for (int t = 0; t <= 25; t++) {
+                // player 3 waits 25 cycles at its kick-off, then kicks; player 4 only turns
+                Action action = unum == 3 && t == 25 ? Action.kick(40, 90) : Action.turn(10);
+                scenes.add(new Scene(t, player, List.of(), List.of(action), null, 0, new org.scenes.api.World(-0.3, 0,
+                        0, 0, 0, 0, 8000, 1, 0, 0, 0, 0, 0, 0, List.of(), "kick_off_l", 0, 0)));
+            }
+            Path file = directory.resolve("Teal_" + unum + ".json");
+            SceneFileWriter.write(file, new SceneFile(SceneFileHeader.of(Grid.DEFAULT,
+                    new SceneSource("Teal_" + unum + ".lsf", player)), scenes));
+            files.add(file);
+        }
+        ImitationTeam team = ImitationTeam.load(files, List::of,
+                knowledge -> new Recognizer(knowledge, () -> ImitationBrainTest.BALL, 1),
+                ImitationTeam.Knowledge.COUNTERPART);
+        assertEquals(Action.kick(40, 90), team.setPlayKicks(4).due("kick_off_l", Side.LEFT, 25).primaryAction());
+        assertNull(team.setPlayKicks(4).due("kick_off_l", Side.LEFT, 24));
+        assertEquals(Action.kick(40, 90), team.setPlayKicks(3).due("kick_off_l", Side.LEFT, 25).primaryAction());
+        assertEquals(Action.kick(40, 90), team.setPlayKicks(9).due("kick_off_l", Side.LEFT, 30).primaryAction(),
+                "no counterpart: the team's");
     }
 
     @Test

@@ -54,6 +54,36 @@ class SetPlayKicksTest {
         assertNull(SetPlayKicks.ownKind("goal_l", Side.LEFT));
     }
 
+    /** A free kick of the left team: the player waits {@code wait} cycles, then kicks. */
+    private static List<Scene> freeKick(int start, int wait, List<Scene> kicks) {
+        List<Scene> scenes = new ArrayList<>();
+        for (int t = 0; t < wait; t++) {
+            scenes.add(at(start + t, "free_kick_l", Action.turn(30)));
+        }
+        Scene kick = at(start + wait, "free_kick_l", Action.kick(80, 10));
+        kicks.add(kick);
+        scenes.add(kick);
+        scenes.add(at(start + wait + 1, "play_on", Action.dash(100)));
+        return scenes;
+    }
+
+    @Test
+    void aKindThePlayerNeverTookIsTakenAsItsTeamTookIt() {
+        List<Scene> own = new ArrayList<>();
+        List<Scene> others = new ArrayList<>();
+        SetPlayKicks player = SetPlayKicks.of(kickOff(0, 20, own));
+        List<Scene> team = new ArrayList<>(kickOff(0, 50, others));
+        team.addAll(freeKick(100, 15, others));
+        SetPlayKicks withTeam = player.orTeams(SetPlayKicks.of(team));
+        // its own kick-off, after its own wait; the team's free kick, after the team's wait
+        assertSame(own.get(0), withTeam.due("kick_off_l", Side.LEFT, 20));
+        assertNull(withTeam.due("free_kick_l", Side.LEFT, 14));
+        assertSame(others.get(1), withTeam.due("free_kick_l", Side.LEFT, 15));
+        assertNull(player.due("free_kick_l", Side.LEFT, 1000), "alone it never takes a free kick");
+        assertSame(player, player.orTeams(SetPlayKicks.of(kickOff(0, 5, new ArrayList<>()))),
+                "nothing the team took that it did not");
+    }
+
     @Test
     void filesOfOnePlayerMergeAndAPlayerThatNeverKickedHasNone() {
         List<Scene> kicks = new ArrayList<>();

@@ -7,6 +7,7 @@ import java.util.List;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
+import org.scenes.coverage.Condenser;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.scene.SceneFileHeader;
@@ -14,7 +15,6 @@ import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.internal.scene.SceneFileWriter;
 import org.scenes.internal.scene.SceneSource;
 import org.scenes.internal.validate.MatchConfig;
-import org.scenes.plugins.coverage.Condenser;
 
 /**
  * {@code scenes condense}: a smaller knowledge base that predicts the dropped scenes as the whole

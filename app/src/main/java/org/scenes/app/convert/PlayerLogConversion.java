@@ -88,14 +88,8 @@ public final class PlayerLogConversion {
                 try (LazySceneFileWriter writer = new LazySceneFileWriter(request.file(), request.settings().grid(),
                         sourceName(logs))) {
                     for (Path log : logs) {
-                        ConversionReport report = converter.convert(log, SceneConverter.SceneSink.of(writer::write,
-                                writer::goalie), text::step);
-                        total.add(report);
-                        boolean noScenes = noScenes(report);
-                        if (noScenes) {
-                            failed.add(log);
-                        }
-                        listener.logDone(log, report, noScenes);
+                        ConversionReport report = convertLog(converter, log, writer, total, failed, text);
+                        listener.logDone(log, report, noScenes(report));
                         text.logDone(log);
                     }
                     if (failed.isEmpty()) {
@@ -111,13 +105,9 @@ public final class PlayerLogConversion {
                     Path target = request.directory().resolve(names.get(i) + ".json.gz");
                     try (LazySceneFileWriter writer = new LazySceneFileWriter(target, request.settings().grid(),
                             log.getFileName().toString())) {
-                        ConversionReport report = converter.convert(log, SceneConverter.SceneSink.of(writer::write,
-                                writer::goalie), text::step);
-                        total.add(report);
+                        ConversionReport report = convertLog(converter, log, writer, total, failed, text);
                         boolean noScenes = noScenes(report);
-                        if (noScenes) {
-                            failed.add(log);
-                        } else {
+                        if (!noScenes) {
                             writer.commit();
                             written.add(target);
                         }
@@ -130,6 +120,22 @@ public final class PlayerLogConversion {
             progress.end();
         }
         return new Result(total, written(), List.copyOf(failed), (System.nanoTime() - started) / 1e9);
+    }
+
+    /**
+     * Converts one log into {@code writer}, adding its counts to {@code total} and the log to
+     * {@code failed} when it gave no scene; the caller commits the file.
+     */
+    private static ConversionReport convertLog(SceneConverter converter, Path log, LazySceneFileWriter writer,
+                                               ConversionReport total, List<Path> failed, TextProgress text)
+            throws IOException {
+        ConversionReport report = converter.convert(log, SceneConverter.SceneSink.of(writer::write, writer::goalie),
+                text::step);
+        total.add(report);
+        if (noScenes(report)) {
+            failed.add(log);
+        }
+        return report;
     }
 
     /** A log with messages but no scene is a failed conversion; an empty log is not. */

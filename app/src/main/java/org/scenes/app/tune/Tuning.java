@@ -68,7 +68,7 @@ public final class Tuning {
         long start = System.nanoTime();
         Tuner tuner = new Tuner(read(request.train()), registry, request.protocol(), request.objective(), log);
         Tuner.Result result = tuner.tune(Tuner.defaultStarts(MatchConfig.DEFAULT.withSeed(request.seed())),
-                Tuner.defaultSearch(), sweeps);
+                Tuner.defaultSearch(registry), sweeps);
         return new Outcome(result.config(), crossValidation(result, request.protocol(), request.objective(),
                 request.trainNames()), tuner.tried(), result.evaluated(), result.evaluated(),
                 (System.nanoTime() - start) / 1e9, result.figures(), result.score());

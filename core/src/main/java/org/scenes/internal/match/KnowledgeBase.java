@@ -23,15 +23,18 @@ import org.scenes.internal.scene.SceneFileReader;
 public final class KnowledgeBase {
     private final Grid grid;
     private final CompactScenes scenes;
+    /** The first scenes, in order, that a recorded player played; those after them are labels ({@link #plus}). */
+    private final int played;
     /** The scenes as the objects they were given as, when the caller keeps them anyway; else null. */
     private final List<Scene> held;
     /** The split by see age, made on first use (null before); {@link #ONE_AGE} when every scene has one age. */
     private volatile SortedMap<Integer, AgePart> byAge;
     private static final SortedMap<Integer, AgePart> ONE_AGE = Collections.emptySortedMap();
 
-    private KnowledgeBase(Grid grid, CompactScenes scenes, List<Scene> held) {
+    private KnowledgeBase(Grid grid, CompactScenes scenes, int played, List<Scene> held) {
         this.grid = grid;
         this.scenes = scenes;
+        this.played = played;
         this.held = held;
     }
 
@@ -49,7 +52,7 @@ public final class KnowledgeBase {
      */
     public static KnowledgeBase held(Grid grid, List<Scene> scenes) {
         KnowledgeBase compact = of(grid, scenes);
-        return new KnowledgeBase(grid, compact.scenes, List.copyOf(scenes));
+        return new KnowledgeBase(grid, compact.scenes, compact.played, List.copyOf(scenes));
     }
 
     /** The scenes of one see age, as a knowledge base of their own, and where each is in the whole. */
@@ -127,7 +130,7 @@ public final class KnowledgeBase {
                 throw new IllegalStateException("the knowledge base was already built");
             }
             scenes.trim();
-            KnowledgeBase knowledge = new KnowledgeBase(grid, scenes, null);
+            KnowledgeBase knowledge = new KnowledgeBase(grid, scenes, scenes.size(), null);
             scenes = null;
             return knowledge;
         }
@@ -225,6 +228,32 @@ public final class KnowledgeBase {
 
     public Grid grid() {
         return grid;
+    }
+
+    /**
+     * These stored scenes (already transformed: copied as they are) followed by {@code sequences},
+     * each through fresh transforms: how DAgger's labelled scenes join a knowledge base. A label
+     * is a teacher's reply to a scene another player (the imitator) played on, so what followed
+     * it in its sequence is not where its action led: it counts as no player's play
+     * ({@link #played}).
+     */
+    public KnowledgeBase plus(List<List<Scene>> sequences, Supplier<List<SceneTransform>> transforms) {
+        Builder builder = builder(grid);
+        scenes().forEach(builder::add);
+        for (List<Scene> sequence : sequences) {
+            builder.addSequence(sequence, transforms.get());
+        }
+        KnowledgeBase built = builder.build();
+        return new KnowledgeBase(grid, built.scenes, played, null);
+    }
+
+    /**
+     * How many of the first scenes a recorded player played in order, so that what came after a
+     * scene in its sequence is what its action led to; the scenes after them are labels
+     * ({@link #plus}).
+     */
+    public int played() {
+        return played;
     }
 
     /** The scenes in order, each decoded anew when read: iterate once rather than index repeatedly. */

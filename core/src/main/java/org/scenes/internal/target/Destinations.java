@@ -61,12 +61,21 @@ public final class Destinations {
     public static Destinations of(KnowledgeBase knowledge) {
         Objects.requireNonNull(knowledge, "knowledge");
         synchronized (CACHE) {
-            return CACHE.computeIfAbsent(knowledge, base -> of(base.scenes()));
+            return CACHE.computeIfAbsent(knowledge, base -> of(base.scenes(), base.played()));
         }
     }
 
-    /** The destinations of scenes in stored order; each scene is read once (a knowledge base decodes on every read). */
+    /** The destinations of scenes all played in stored order. */
     static Destinations of(List<Scene> scenes) {
+        return of(scenes, scenes.size());
+    }
+
+    /**
+     * The destinations of scenes in stored order, the first {@code played} of them played (the
+     * others, DAgger's labels, have none); each scene is read once (a knowledge base decodes on
+     * every read).
+     */
+    static Destinations of(List<Scene> scenes, int played) {
         int n = scenes.size();
         int[] cycle = new int[n];
         Observer[] observer = new Observer[n];
@@ -94,13 +103,13 @@ public final class Destinations {
         boolean[] toBall = new boolean[n];
         Arrays.fill(x, Double.NaN);
         Arrays.fill(y, Double.NaN);
-        for (i = 0; i < n; i++) {
+        for (i = 0; i < played; i++) {
             if (mode[i] == null || Double.isNaN(atX[i])) {
                 continue;
             }
             boolean reachedBall = false;
             boolean placed = false;
-            for (int j = i + 1; j < n; j++) {
+            for (int j = i + 1; j < played; j++) {
                 int gap = cycle[j] - cycle[i];
                 if (gap < 0 || gap > (placed ? CHASE : AHEAD) + SLACK || !Objects.equals(observer[j], observer[i])
                         || !mode[i].equals(mode[j]) || moved[j]) {

@@ -150,6 +150,7 @@ public final class Tuner {
     }
 
     public Result tune(List<MatchConfig> starts, List<Dimension> dimensions, int sweeps) {
+        checkVariants(starts, dimensions);
         Descent descent = descend(starts, dimensions, sweeps, this::evaluate);
         return Result.of(descent, folds.get(descent.best()).pooled(), scores.size());
     }
@@ -200,6 +201,18 @@ public final class Tuner {
         return new Descent(best, bestScore);
     }
 
+    /**
+     * Applies every variant to every start, scoring nothing: a variant setting a value its metric does
+     * not declare ({@link DeclaredDimensions}) fails here, before the first validation.
+     */
+    public static void checkVariants(List<MatchConfig> starts, List<Dimension> dimensions) {
+        for (MatchConfig start : starts) {
+            for (Dimension dimension : dimensions) {
+                variants(dimension, start);
+            }
+        }
+    }
+
     private static List<MatchConfig> variants(Dimension dimension, MatchConfig config) {
         return dimension.variants().stream().map(variant -> variant.apply(config)).toList();
     }
@@ -220,44 +233,48 @@ public final class Tuner {
     /**
      * The built-in search: memory, the side of the heading, the goals and distance rings, k and
      * selector, and last the metric family (which keeps the others' settings), so each start's
-     * family is tuned before families are compared.
+     * family is tuned before families are compared. Which metrics take the side, ring and own-goal
+     * variants, and whether they accept the values tried, is what each metric declares for tuning.
+     *
+     * @param registry the plugins, whose metrics' declared tune dimensions the variants follow
      */
-    public static List<Dimension> defaultSearch() {
+    public static List<Dimension> defaultSearch(PluginRegistry registry) {
+        DeclaredDimensions declared = new DeclaredDimensions(registry);
         List<Dimension> dimensions = new ArrayList<>();
         ObjectWeights ballGoal = ObjectWeights.parse("ball=1,goal=1");
         dimensions.add(new Dimension("memory", List.of(
-                c -> memory(c, 0, 0, 1),
-                c -> memory(c, 0, 10, 1),
-                c -> memory(c, 0, 100, 1),
-                c -> memory(c, 0.5, 100, 1),
+                c -> memory(declared, c, 0, 0, 1),
+                c -> memory(declared, c, 0, 10, 1),
+                c -> memory(declared, c, 0, 100, 1),
+                c -> memory(declared, c, 0.5, 100, 1),
                 // the previous action first, then the previous scene's objects: Krislet's kicks and turn signs
-                c -> memory(c, 0.3, 1000, 1),
+                c -> memory(declared, c, 0.3, 1000, 1),
                 // the previous scene's directions at a tenth or three tenths of the current one's
-                c -> memory(c, 0.7, 1000, 0.3),
-                c -> memory(c, 0.3, 1000, 0.1),
-                c -> memory(c, 1, 0, 1))));
+                c -> memory(declared, c, 0.7, 1000, 0.3),
+                c -> memory(declared, c, 0.3, 1000, 0.1),
+                c -> memory(declared, c, 1, 0, 1))));
         dimensions.add(new Dimension("side", List.of(
-                c -> withSide(c, 0),
-                c -> withSide(c, 100),
-                c -> withSide(c, 300),
-                c -> withSide(c, 1000))));
+                c -> withSide(declared, c, 0),
+                c -> withSide(declared, c, 100),
+                c -> withSide(declared, c, 300),
+                c -> withSide(declared, c, 1000))));
         dimensions.add(new Dimension("goals and rings", List.of(
-                c -> withGoalsAndRings(c, 1, 1000),
-                c -> withGoalsAndRings(c, 0, 1000),
-                c -> withGoalsAndRings(c, 1, 3000),
-                c -> withGoalsAndRings(c, 0, 3000))));
+                c -> withGoalsAndRings(declared, c, 1, 1000),
+                c -> withGoalsAndRings(declared, c, 0, 1000),
+                c -> withGoalsAndRings(declared, c, 1, 3000),
+                c -> withGoalsAndRings(declared, c, 0, 3000))));
         dimensions.add(new Dimension("k and selector", List.of(
                 c -> c.withK(1).withSelector("first-valid", Map.of()),
                 c -> c.withK(3).withSelector("vote", Map.of()),
                 c -> c.withK(5).withSelector("vote", Map.of()),
                 c -> c.withK(3).withSelector("vote", Map.of("params", "average")))));
         dimensions.add(new Dimension("metric", List.of(
-                c -> keepMemory(c, c.withMetric("ball-goal", Map.of()).withObjectWeights(ballGoal)),
-                c -> keepMemory(c, c.withMetric("ball-goal", Map.of("angle-weight", "10", "row-weight", "10")).withObjectWeights(ballGoal)),
-                c -> keepMemory(c, c.withMetric("continuous", polar(1, 10)).withObjectWeights(ballGoal)),
-                c -> keepMemory(c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                c -> keepMemory(declared, c, c.withMetric("ball-goal", Map.of()).withObjectWeights(ballGoal)),
+                c -> keepMemory(declared, c, c.withMetric("ball-goal", Map.of("angle-weight", "10", "row-weight", "10")).withObjectWeights(ballGoal)),
+                c -> keepMemory(declared, c, c.withMetric("continuous", polar(1, 10)).withObjectWeights(ballGoal)),
+                c -> keepMemory(declared, c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
                         .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.05"))),
-                c -> keepMemory(c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
+                c -> keepMemory(declared, c, c.withMetric("continuous", withRows(withPenalty(polar(30, 10), 20000, 10000), 1000))
                         .withObjectWeights(ObjectWeights.parse("ball=1,goal=0.3"))))));
         return dimensions;
     }
@@ -266,29 +283,31 @@ public final class Tuner {
      * The own goal's share of the goal weight (0: only the goal attacked counts, as for Krislet)
      * and the distance rings' weight, where an object-set metric weighs rings; otherwise unchanged.
      */
-    static MatchConfig withGoalsAndRings(MatchConfig config, double ownGoal, double rows) {
-        if (!objectSet(config)) {
+    static MatchConfig withGoalsAndRings(DeclaredDimensions declared, MatchConfig config, double ownGoal, double rows) {
+        if (!declared.objectSet(config)) {
             return config;
         }
         MatchConfig with = config.withMetricOption("own-goal-weight", ownGoal == 1 ? null : format(ownGoal));
-        boolean rings = Double.parseDouble(config.metricOptions().getOrDefault("row-weight", "0")) > 0;
-        return rings ? with.withMetricOption("row-weight", format(rows)) : with;
+        String ring = DeclaredDimensions.ROWS;
+        boolean rings = Double.parseDouble(config.metricOptions().getOrDefault(ring, "0")) > 0;
+        return rings ? with.withMetricOption(ring, declared.value(config.metric(), ring, rows)) : with;
     }
 
     /**
      * A metric variant keeps the memory and side settings already chosen (the previous scene's
-     * direction weight as a share of the direction weight), so the dimensions stay independent.
+     * direction weight as a share of the direction weight), so the dimensions stay independent. The
+     * variant's own options are checked against what its metric declares for tuning.
      */
-    static MatchConfig keepMemory(MatchConfig old, MatchConfig changed) {
+    static MatchConfig keepMemory(DeclaredDimensions declared, MatchConfig old, MatchConfig changed) {
         Map<String, String> options = old.metricOptions();
-        MatchConfig kept = withMemory(changed, Double.parseDouble(options.getOrDefault("memory", "0")),
+        MatchConfig kept = withMemory(declared.checked(changed), Double.parseDouble(options.getOrDefault("memory", "0")),
                 Double.parseDouble(options.getOrDefault("memory-action", "0")));
         if (options.containsKey("memory-direction-weight")) {
-            kept = withPreviousDirection(kept, Double.parseDouble(options.get("memory-direction-weight"))
+            kept = withPreviousDirection(declared, kept, Double.parseDouble(options.get("memory-direction-weight"))
                     / Double.parseDouble(options.getOrDefault("direction-weight", "1")));
         }
-        kept = withSide(kept, Double.parseDouble(options.getOrDefault("side-weight", "0")));
-        if (options.containsKey("own-goal-weight") && objectSet(kept)) {
+        kept = withSide(declared, kept, Double.parseDouble(options.getOrDefault(DeclaredDimensions.SIDE, "0")));
+        if (options.containsKey("own-goal-weight") && declared.objectSet(kept)) {
             kept = kept.withMetricOption("own-goal-weight", options.get("own-goal-weight"));
         }
         return kept;
@@ -298,34 +317,28 @@ public final class Tuner {
      * A memory variant: the previous scene at {@code weight}, its directions at {@code share} of the
      * current one's (1: the same, the metric's default), the previous action at {@code actionWeight}.
      */
-    private static MatchConfig memory(MatchConfig config, double weight, double actionWeight, double share) {
+    private static MatchConfig memory(DeclaredDimensions declared, MatchConfig config, double weight, double actionWeight,
+                                      double share) {
         MatchConfig with = withMemory(config, weight, actionWeight);
-        return share != 1 ? withPreviousDirection(with, share) : with.withMetricOption("memory-direction-weight", null);
+        return share != 1 ? withPreviousDirection(declared, with, share) : with.withMetricOption("memory-direction-weight", null);
     }
 
-    /** The object-set metrics (continuous, projection, cell): the ones with side and previous-direction weights. */
-    static boolean objectSet(MatchConfig config) {
-        return switch (config.metric()) {
-            case "continuous", "projection", "cell" -> true;
-            default -> false;
-        };
-    }
-
-    /** The side weight of an object-set metric (0: none); other metrics unchanged. */
-    static MatchConfig withSide(MatchConfig config, double weight) {
-        if (!objectSet(config)) {
+    /** The side weight of an object-set metric (0: none, else a value it declares); other metrics unchanged. */
+    static MatchConfig withSide(DeclaredDimensions declared, MatchConfig config, double weight) {
+        if (!declared.objectSet(config)) {
             return config;
         }
-        return config.withMetricOption("side-weight", weight > 0 ? format(weight) : null);
+        String side = DeclaredDimensions.SIDE;
+        return config.withMetricOption(side, weight > 0 ? declared.value(config.metric(), side, weight) : null);
     }
 
     /**
      * The previous scene's direction weight as {@code share} of the current one's, where an
      * object-set metric in polar space remembers the previous scene; otherwise unchanged.
      */
-    static MatchConfig withPreviousDirection(MatchConfig config, double share) {
+    static MatchConfig withPreviousDirection(DeclaredDimensions declared, MatchConfig config, double share) {
         Map<String, String> options = config.metricOptions();
-        if (!objectSet(config) || !"polar".equals(options.get("space")) || !options.containsKey("memory")) {
+        if (!declared.objectSet(config) || !"polar".equals(options.get("space")) || !options.containsKey("memory")) {
             return config;
         }
         return config.withMetricOption("memory-direction-weight",
@@ -334,7 +347,7 @@ public final class Tuner {
 
     private static Map<String, String> withRows(Map<String, String> options, double rowWeight) {
         Map<String, String> with = new HashMap<>(options);
-        with.put("row-weight", format(rowWeight));
+        with.put(DeclaredDimensions.ROWS, format(rowWeight));
         return with;
     }
 
@@ -370,7 +383,7 @@ public final class Tuner {
         return config.withMetric(config.metric(), options).withTransforms(List.of("memory"));
     }
 
-    private static String format(double value) {
+    static String format(double value) {
         return value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
     }
 }

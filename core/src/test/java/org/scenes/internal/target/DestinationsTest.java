@@ -1,6 +1,8 @@
 package org.scenes.internal.target;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 
@@ -8,11 +10,13 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.scenes.api.Action;
+import org.scenes.api.Grid;
 import org.scenes.api.Neighbour;
 import org.scenes.api.Observer;
 import org.scenes.api.Scene;
 import org.scenes.api.Side;
 import org.scenes.api.World;
+import org.scenes.internal.match.KnowledgeBase;
 
 class DestinationsTest {
     private static final Observer SEVEN = new Observer("T", Side.LEFT, 7);
@@ -50,6 +54,25 @@ class DestinationsTest {
         // two neighbours: the mean
         assertArrayEquals(new double[] {10.5, 0}, destinations.target(List.of(neighbour(0), neighbour(1)), here, null),
                 1e-9);
+    }
+
+    @Test
+    void labelsAddedToAKnowledgeBaseLendNoDestinationAndTakeNoneFromThePlayedScenes() {
+        List<Scene> played = run(SEVEN, 20, 0, 0);
+        // the imitator's scenes labelled by its shadow: a run on, as if played after the recorded one
+        List<Scene> labels = run(SEVEN, 40, 0, 0).subList(20, 40);
+        KnowledgeBase base = KnowledgeBase.of(Grid.DEFAULT, played);
+        KnowledgeBase labelled = base.plus(List.of(labels), List::of);
+        assertEquals(20, labelled.played());
+        assertEquals(40, labelled.size());
+        World here = played.get(0).world();
+        Destinations destinations = Destinations.of(labelled);
+        assertNull(destinations.target(List.of(neighbour(20)), here, null), "a label's next scenes are not its play");
+        // the last played scenes do not run on into the labels
+        assertNull(destinations.target(List.of(neighbour(15)), here, null));
+        assertNotNull(Destinations.of(KnowledgeBase.of(Grid.DEFAULT, run(SEVEN, 30, 0, 0)))
+                .target(List.of(neighbour(15)), here, null), "the same scenes, all played, have destinations");
+        assertArrayEquals(new double[] {10, 0}, destinations.target(List.of(neighbour(0)), here, null), 1e-9);
     }
 
     @Test

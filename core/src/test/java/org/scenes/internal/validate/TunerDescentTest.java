@@ -56,53 +56,6 @@ class TunerDescentTest {
     }
 
     @Test
-    void theBuiltInSearchCarriesSideAndPreviousDirectionAcrossMetricVariants() {
-        Tuner.Dimension metric = dimension("metric");
-        Tuner.Dimension memory = dimension("memory");
-        Tuner.Dimension side = dimension("side");
-        MatchConfig polar = metric.variants().get(3).apply(MatchConfig.DEFAULT);
-        assertEquals("continuous", polar.metric());
-        assertEquals("10", polar.metricOptions().get("direction-weight"));
-        // memory 0.7 with the previous scene's directions at 0.3 of the current ones: 3 per degree
-        MatchConfig remembered = memory.variants().get(5).apply(polar);
-        assertEquals("0.7", remembered.metricOptions().get("memory"));
-        assertEquals("3", remembered.metricOptions().get("memory-direction-weight"));
-        MatchConfig sided = side.variants().get(2).apply(remembered);
-        assertEquals("300", sided.metricOptions().get("side-weight"));
-        // another polar family keeps both, and plain memory drops the previous direction weight again
-        MatchConfig other = metric.variants().get(4).apply(sided);
-        assertEquals("300", other.metricOptions().get("side-weight"));
-        assertEquals("3", other.metricOptions().get("memory-direction-weight"));
-        assertEquals(0.3, other.objectWeights().goal(), 0.0);
-        assertEquals(null, memory.variants().get(4).apply(other).metricOptions().get("memory-direction-weight"));
-        assertEquals(null, side.variants().get(0).apply(other).metricOptions().get("side-weight"));
-        // ball-goal has neither option: the variants leave it as it is
-        MatchConfig ballGoal = metric.variants().get(0).apply(sided);
-        assertEquals(ballGoal, side.variants().get(3).apply(ballGoal));
-        assertEquals(null, ballGoal.metricOptions().get("side-weight"));
-        assertEquals(null, ballGoal.metricOptions().get("memory-direction-weight"));
-        assertEquals("0.7", ballGoal.metricOptions().get("memory"));
-    }
-
-    @Test
-    void theGoalsAndRingsVariantsSetTheOwnGoalShareAndTheRingWeight() {
-        Tuner.Dimension goals = dimension("goals and rings");
-        MatchConfig polar = Tuner.defaultStarts(MatchConfig.DEFAULT).get(1);
-        MatchConfig attackedOnly = goals.variants().get(3).apply(polar);
-        assertEquals("0", attackedOnly.metricOptions().get("own-goal-weight"));
-        assertEquals("3000", attackedOnly.metricOptions().get("row-weight"));
-        MatchConfig back = goals.variants().get(0).apply(attackedOnly);
-        assertEquals(null, back.metricOptions().get("own-goal-weight"));
-        assertEquals("1000", back.metricOptions().get("row-weight"));
-        // a polar family without rings stays without them; ball-goal is left as it is
-        MatchConfig noRings = dimension("metric").variants().get(2).apply(attackedOnly);
-        assertEquals("0", noRings.metricOptions().get("own-goal-weight"), "the metric variant keeps the share");
-        assertEquals(null, goals.variants().get(2).apply(noRings).metricOptions().get("row-weight"));
-        MatchConfig ballGoal = Tuner.defaultStarts(MatchConfig.DEFAULT).get(0);
-        assertEquals(ballGoal, goals.variants().get(3).apply(ballGoal));
-    }
-
-    @Test
     void severalStartsKeepTheBestEnd() {
         // scores by k; from k=1 the descent cannot leave (k=3 is worse), from k=5 it reaches k=7
         Map<Integer, Double> byK = Map.of(1, 0.6, 3, 0.5, 5, 0.55, 7, 0.9);
@@ -119,10 +72,6 @@ class TunerDescentTest {
         assertEquals(0.9, both.score(), 0.0);
         assertEquals(List.of(1, 1, 3, 5, 5, 7, 7, 7), seen.stream().map(MatchConfig::k).toList(),
                 "each start descends in turn until a sweep improves nothing");
-    }
-
-    private static Tuner.Dimension dimension(String name) {
-        return Tuner.defaultSearch().stream().filter(d -> d.name().equals(name)).findFirst().orElseThrow();
     }
 
     @Test

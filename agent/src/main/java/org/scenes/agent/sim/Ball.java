@@ -1,5 +1,0 @@
-package org.scenes.agent.sim;
-
-/** The ball. */
-final class Ball extends MovingObject {
-}

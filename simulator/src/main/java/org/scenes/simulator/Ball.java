@@ -1,0 +1,5 @@
+package org.scenes.simulator;
+
+/** The ball. */
+final class Ball extends MovingObject {
+}
