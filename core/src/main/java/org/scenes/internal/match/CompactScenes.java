@@ -128,6 +128,15 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
         return new Reader(chunks.get(start >>> CHUNK_BITS), start & CHUNK - 1).scene();
     }
 
+    /** The see age of a scene, read without decoding the rest of it. */
+    int seeAge(int index) {
+        if (index < 0 || index >= size) {
+            throw new IndexOutOfBoundsException("scene " + index + " of " + size);
+        }
+        int start = starts[index];
+        return new Reader(chunks.get(start >>> CHUNK_BITS), start & CHUNK - 1).seeAge();
+    }
+
     @Override
     public int size() {
         return size;
@@ -294,6 +303,12 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
         Reader(byte[] chunk, int position) {
             this.bytes = chunk;
             this.position = position;
+        }
+
+        /** The see age at the start of a scene, from its first two fields. */
+        int seeAge() {
+            varint(); // the cycle
+            return (varint() & 1) == 1 ? (int) varint() : 0;
         }
 
         Scene scene() {

@@ -2,7 +2,10 @@ package org.scenes.internal.match;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
+import java.util.SortedMap;
+import java.util.TreeMap;
 import java.util.function.Supplier;
 import org.scenes.api.Grid;
 import org.scenes.api.Scene;
@@ -22,17 +25,74 @@ public final class KnowledgeBase {
     private final CompactScenes scenes;
     /** The first scenes, in order, that a recorded player played; those after them are labels ({@link #plus}). */
     private final int played;
+    /** The scenes as the objects they were given as, when the caller keeps them anyway; else null. */
+    private final List<Scene> held;
+    /** The split by see age, made on first use (null before); {@link #ONE_AGE} when every scene has one age. */
+    private volatile SortedMap<Integer, AgePart> byAge;
+    private static final SortedMap<Integer, AgePart> ONE_AGE = Collections.emptySortedMap();
 
-    private KnowledgeBase(Grid grid, CompactScenes scenes, int played) {
+    private KnowledgeBase(Grid grid, CompactScenes scenes, int played, List<Scene> held) {
         this.grid = grid;
         this.scenes = scenes;
         this.played = played;
+        this.held = held;
     }
 
     public static KnowledgeBase of(Grid grid, List<Scene> scenes) {
         Builder builder = builder(grid);
         scenes.forEach(builder::add);
         return builder.build();
+    }
+
+    /**
+     * As {@link #of}, but reading gives the very objects of {@code scenes} instead of decoding them:
+     * for a caller that keeps them anyway (cross-validation, which builds a recognizer per fold and
+     * configuration), so packing a metric does not decode the whole knowledge base each time. The
+     * scenes are equal either way, since the compact form is lossless.
+     */
+    public static KnowledgeBase held(Grid grid, List<Scene> scenes) {
+        KnowledgeBase compact = of(grid, scenes);
+        return new KnowledgeBase(grid, compact.scenes, compact.played, List.copyOf(scenes));
+    }
+
+    /** The scenes of one see age, as a knowledge base of their own, and where each is in the whole. */
+    public record AgePart(KnowledgeBase knowledge, int[] indices) {
+    }
+
+    /**
+     * The knowledge base split by see age (see {@link Recognizer}), ascending; empty when every
+     * scene has one age. Made once per knowledge base, so every recognizer built on it shares it.
+     */
+    public SortedMap<Integer, AgePart> byAge() {
+        SortedMap<Integer, AgePart> split = byAge;
+        if (split == null) {
+            synchronized (this) {
+                split = byAge;
+                if (split == null) {
+                    split = splitByAge();
+                    byAge = split;
+                }
+            }
+        }
+        return split;
+    }
+
+    private SortedMap<Integer, AgePart> splitByAge() {
+        TreeMap<Integer, List<Integer>> indices = new TreeMap<>();
+        for (int i = 0; i < size(); i++) {
+            indices.computeIfAbsent(scenes.seeAge(i), age -> new ArrayList<>()).add(i);
+        }
+        if (indices.size() < 2) {
+            return ONE_AGE;
+        }
+        TreeMap<Integer, AgePart> parts = new TreeMap<>();
+        indices.forEach((age, members) -> {
+            List<Scene> part = new ArrayList<>(members.size());
+            members.forEach(i -> part.add(scene(i)));
+            parts.put(age, new AgePart(held != null ? held(grid, part) : of(grid, part),
+                    members.stream().mapToInt(Integer::intValue).toArray()));
+        });
+        return Collections.unmodifiableSortedMap(parts);
     }
 
     /** Collects scenes one at a time, so a knowledge base never needs them all as objects at once. */
@@ -70,7 +130,7 @@ public final class KnowledgeBase {
                 throw new IllegalStateException("the knowledge base was already built");
             }
             scenes.trim();
-            KnowledgeBase knowledge = new KnowledgeBase(grid, scenes, scenes.size());
+            KnowledgeBase knowledge = new KnowledgeBase(grid, scenes, scenes.size(), null);
             scenes = null;
             return knowledge;
         }
@@ -184,7 +244,7 @@ public final class KnowledgeBase {
             builder.addSequence(sequence, transforms.get());
         }
         KnowledgeBase built = builder.build();
-        return new KnowledgeBase(grid, built.scenes, played);
+        return new KnowledgeBase(grid, built.scenes, played, null);
     }
 
     /**
@@ -198,7 +258,7 @@ public final class KnowledgeBase {
 
     /** The scenes in order, each decoded anew when read: iterate once rather than index repeatedly. */
     public List<Scene> scenes() {
-        return scenes;
+        return held != null ? held : scenes;
     }
 
     public int size() {
@@ -206,7 +266,7 @@ public final class KnowledgeBase {
     }
 
     public Scene scene(int index) {
-        return scenes.get(index);
+        return held != null ? held.get(index) : scenes.get(index);
     }
 
     /** Bytes of heap the stored scenes take (not counting what metrics pack from them). */

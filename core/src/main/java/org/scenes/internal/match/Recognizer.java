@@ -3,6 +3,7 @@ package org.scenes.internal.match;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.NavigableMap;
+import java.util.SortedMap;
 import java.util.TreeMap;
 import java.util.function.Supplier;
 import java.util.function.UnaryOperator;
@@ -106,20 +107,13 @@ public final class Recognizer {
      */
     private static NavigableMap<Integer, AgePartition> partitionByAge(KnowledgeBase knowledge,
                                                                             Supplier<SceneMetric> metricFactory, int k) {
-        TreeMap<Integer, List<Integer>> indices = new TreeMap<>();
-        for (int i = 0; i < knowledge.size(); i++) {
-            indices.computeIfAbsent(knowledge.scene(i).seeAge(), age -> new ArrayList<>()).add(i);
-        }
-        if (indices.size() < 2) {
+        SortedMap<Integer, KnowledgeBase.AgePart> parts = knowledge.byAge(); // split once per knowledge base
+        if (parts.isEmpty()) {
             return null;
         }
         TreeMap<Integer, AgePartition> partitions = new TreeMap<>();
-        indices.forEach((age, members) -> {
-            List<Scene> scenes = new ArrayList<>(members.size());
-            members.forEach(i -> scenes.add(knowledge.scene(i)));
-            partitions.put(age, new AgePartition(new Recognizer(KnowledgeBase.of(knowledge.grid(), scenes),
-                    metricFactory, k, false, null), members.stream().mapToInt(Integer::intValue).toArray()));
-        });
+        parts.forEach((age, part) -> partitions.put(age, new AgePartition(new Recognizer(part.knowledge(),
+                metricFactory, k, false, null), part.indices())));
         return partitions;
     }
 

@@ -77,7 +77,8 @@ public final class Folds {
         Sequences sequences = sequences(files, config, registry);
         List<ValidationReport> reports = new ArrayList<>();
         for (int i = 0; i < files.size(); i++) {
-            KnowledgeBase train = KnowledgeBase.of(grid, sequences.training(i, protocol));
+            // the sequences are held for every fold anyway: the knowledge base reads them instead of decoding
+            KnowledgeBase train = KnowledgeBase.held(grid, sequences.training(i, protocol));
             reports.add(Validator.run(train, sequences.test(i), config, registry, parallel, progress));
         }
         return new Folds(reports, protocol);

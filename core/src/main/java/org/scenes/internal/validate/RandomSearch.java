@@ -337,7 +337,7 @@ public final class RandomSearch {
                     }
                 }
             }
-            return KnowledgeBase.of(files.get(0).grid(), scenes);
+            return KnowledgeBase.held(files.get(0).grid(), scenes); // the sequences are kept: no decoding per pack
         });
     }
 

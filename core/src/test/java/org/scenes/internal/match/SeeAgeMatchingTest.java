@@ -1,6 +1,9 @@
 package org.scenes.internal.match;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.Map;
@@ -47,5 +50,30 @@ class SeeAgeMatchingTest {
         List<Scene> scenes = List.of(aged(1, 0, Action.turn(0), 5), aged(2, 0, Action.dash(80), 6));
         Recognizer recognizer = new Recognizer(KnowledgeBase.of(Grid.DEFAULT, scenes), METRIC, 2);
         assertEquals(2, recognizer.nearest(aged(9, 1, Action.turn(5), 5)).size());
+    }
+
+    @Test
+    void theSplitByAgeIsMadeOncePerKnowledgeBaseAndAHeldOneMatchesAlike() {
+        List<Scene> scenes = List.of(aged(1, 0, Action.turn(0), 5), aged(2, 1, Action.dash(80), 5),
+                aged(3, 0, Action.turn(0), 20), aged(4, 1, Action.dash(30), 20), aged(5, 2, Action.kick(50, 0), 9));
+        KnowledgeBase compact = KnowledgeBase.of(Grid.DEFAULT, scenes);
+        KnowledgeBase held = KnowledgeBase.held(Grid.DEFAULT, scenes);
+        assertSame(compact.byAge(), compact.byAge(), "recognizers built on one knowledge base share its split");
+        assertEquals(List.of(0, 1, 2), List.copyOf(held.byAge().keySet()));
+        assertArrayEquals(new int[] {1, 3}, held.byAge().get(1).indices());
+        assertSame(scenes.get(3), held.byAge().get(1).knowledge().scene(1), "a held part gives the objects it was given");
+        assertEquals(scenes, compact.scenes());
+        assertSame(scenes.get(4), held.scene(4));
+        assertTrue(KnowledgeBase.of(Grid.DEFAULT, scenes.subList(0, 1)).byAge().isEmpty(), "one age: no split");
+        for (int k = 1; k <= 3; k++) {
+            Recognizer fromCompact = new Recognizer(compact, METRIC, k);
+            Recognizer fromHeld = new Recognizer(held, METRIC, k);
+            for (int age = 0; age <= 3; age++) {
+                for (double ball : new double[] {4, 12, 30}) {
+                    Scene query = aged(9, age, Action.turn(5), ball);
+                    assertEquals(fromCompact.nearest(query), fromHeld.nearest(query), "age " + age + ", ball " + ball);
+                }
+            }
+        }
     }
 }

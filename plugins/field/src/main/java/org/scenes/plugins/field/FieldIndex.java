@@ -1,10 +1,12 @@
 package org.scenes.plugins.field;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import org.scenes.api.PackedMetric;
 import org.scenes.api.Scene;
 import org.scenes.api.TopK;
@@ -13,34 +15,48 @@ import org.scenes.api.TopK;
  * An exact index for {@code field}: scenes are grouped by what adds a fixed cost (play mode,
  * whether the ball is known and within reach, whether the player is its team's nearest to it,
  * whether the world is located), and each group's weighted features
- * go into a k-d tree. A query visits groups in ascending fixed cost and stops once that alone
- * passes the k-th best distance; within a group it descends the nearer child first and skips any
- * box whose nearest point is farther than the k-th best. Offered distances are computed with the
+ * go into a k-d tree split at the median of the dimension that varies most. A query visits groups
+ * in ascending fixed cost (their order kept per query state) and stops once that alone passes the
+ * k-th best distance; within a group it descends the query's side first and skips any region
+ * whose lower bound (updated incrementally, one dimension per node) or leaf box is farther than
+ * the k-th best. Offered distances are computed with the
  * very operations of {@link FieldMetricProvider.FieldMetric#distance}, so they are the scan's bit
  * for bit; pruning keeps a relative margin of {@link #SLACK} for the rounding of box bounds, so
- * it never skips a scene the scan would keep.
+ * it never skips a scene the scan would keep. Of scenes at one distance only the k lowest indices
+ * can enter, so scenes without a located world are offered k at most.
  */
 final class FieldIndex implements PackedMetric.PackedScenes {
-    /** Scenes per leaf: a scan of 40 costs about what the boxes above it do (bench --synthetic: 40 to 64 best). */
-    private static final int LEAF = 40;
+    /**
+     * Scenes per leaf: with the incremental bound an inner node costs little, so leaves are smaller
+     * than the 40 that suited full box costs (10^6 jittered HELIOS scenes, k 10: p99 106 us at 24).
+     */
+    private static final int LEAF = 24;
     private static final double SLACK = 1e-9;
     private static final int DIMENSIONS = FieldMetricProvider.FEATURES;
 
+    /** Query states whose plan is kept, at most: play modes are a few dozen, times eight ball states. */
+    private static final int MAX_PLANS = 1024;
+
     private final FieldMetricProvider.FieldMetric metric;
     private final List<Group> groups;
-    /** Scenes without a located world: at {@code missing} from every located query, 0 from another. */
+    /** Scenes without a located world, ascending: at {@code missing} from every located query, 0 from another. */
     private final int[] unlocated;
+    /** Scenes with a located world, ascending. */
+    private final int[] located;
+    private final Map<String, Plan> plans = new ConcurrentHashMap<>();
 
-    private FieldIndex(FieldMetricProvider.FieldMetric metric, List<Group> groups, int[] unlocated) {
+    private FieldIndex(FieldMetricProvider.FieldMetric metric, List<Group> groups, int[] unlocated, int[] located) {
         this.metric = metric;
         this.groups = groups;
         this.unlocated = unlocated;
+        this.located = located;
     }
 
     static FieldIndex build(FieldMetricProvider.FieldMetric metric, List<Scene> scenes) {
         Map<String, List<Integer>> byKey = new LinkedHashMap<>();
         Map<String, FieldMetricProvider.Features> keyFeatures = new LinkedHashMap<>();
         List<Integer> unlocated = new ArrayList<>();
+        List<Integer> located = new ArrayList<>();
         FieldMetricProvider.Features[] features = new FieldMetricProvider.Features[scenes.size()];
         for (int i = 0; i < scenes.size(); i++) {
             features[i] = metric.encode(scenes.get(i));
@@ -48,6 +64,7 @@ final class FieldIndex implements PackedMetric.PackedScenes {
                 unlocated.add(i);
                 continue;
             }
+            located.add(i);
             String key = features[i].mode() + '\u0000' + features[i].ballKnown() + '\u0000' + features[i].kickable()
                     + '\u0000' + features[i].chaser();
             byKey.computeIfAbsent(key, unused -> new ArrayList<>()).add(i);
@@ -55,40 +72,68 @@ final class FieldIndex implements PackedMetric.PackedScenes {
         }
         List<Group> groups = new ArrayList<>();
         byKey.forEach((key, members) -> groups.add(Group.of(keyFeatures.get(key), members, features)));
-        return new FieldIndex(metric, groups, unlocated.stream().mapToInt(Integer::intValue).toArray());
+        return new FieldIndex(metric, groups, unlocated.stream().mapToInt(Integer::intValue).toArray(),
+                located.stream().mapToInt(Integer::intValue).toArray());
     }
 
     @Override
     public void scan(Scene query, TopK top) {
         FieldMetricProvider.Features q = metric.encode(query);
+        // Equal distances rank by index, so of scenes all at one distance only the k lowest indices can enter.
+        int k = top.capacity();
         if (q.values() == null) {
             // an unlocated query is missing away from every located scene, 0 from an unlocated one
-            for (int index : unlocated) {
-                top.offer(0, index);
+            for (int i = 0; i < Math.min(k, unlocated.length); i++) {
+                top.offer(0, unlocated[i]);
             }
-            for (Group group : groups) {
-                for (int index : group.members) {
-                    top.offer(metric.missing(), index);
-                }
+            for (int i = 0; i < Math.min(k, located.length); i++) {
+                top.offer(metric.missing(), located[i]);
             }
             return;
         }
-        for (int index : unlocated) {
-            top.offer(metric.missing(), index);
+        for (int i = 0; i < Math.min(k, unlocated.length); i++) {
+            top.offer(metric.missing(), unlocated[i]);
         }
-        double[] fixed = new double[groups.size()];
-        Integer[] order = new Integer[groups.size()];
-        for (int g = 0; g < fixed.length; g++) {
-            fixed[g] = metric.fixedCost(q, groups.get(g).key);
-            order[g] = g;
-        }
-        java.util.Arrays.sort(order, Comparator.comparingDouble(g -> fixed[g]));
-        for (int g : order) {
-            if (pruned(fixed[g], top)) {
+        Plan plan = plan(q);
+        for (int at = 0; at < plan.order.length; at++) {
+            double fixed = plan.fixed[at];
+            if (pruned(fixed, top)) {
                 break;
             }
-            groups.get(g).search(0, q.values(), fixed[g], top);
+            groups.get(plan.order[at]).search(q.values(), fixed, top);
         }
+    }
+
+    /**
+     * The groups in ascending fixed cost from a query of this play mode and ball state, made once
+     * per such state and kept (a game has a few dozen); the sort is stable, so equal costs keep build order.
+     */
+    private Plan plan(FieldMetricProvider.Features q) {
+        String key = q.mode() + '\u0000' + q.ballKnown() + '\u0000' + q.kickable() + '\u0000' + q.chaser();
+        Plan plan = plans.get(key);
+        if (plan != null) {
+            return plan;
+        }
+        double[] costs = new double[groups.size()];
+        Integer[] order = new Integer[groups.size()];
+        for (int g = 0; g < costs.length; g++) {
+            costs[g] = metric.fixedCost(q, groups.get(g).key);
+            order[g] = g;
+        }
+        Arrays.sort(order, Comparator.comparingDouble(g -> costs[g]));
+        plan = new Plan(new int[order.length], new double[order.length]);
+        for (int at = 0; at < order.length; at++) {
+            plan.order[at] = order[at];
+            plan.fixed[at] = costs[order[at]];
+        }
+        if (plans.size() < MAX_PLANS) {
+            plans.putIfAbsent(key, plan);
+        }
+        return plan;
+    }
+
+    /** The groups a query visits, in order, and the fixed cost of each. */
+    private record Plan(int[] order, double[] fixed) {
     }
 
     /** Whether a sum of squares of at least {@code lower} cannot enter {@code top}. */
@@ -108,6 +153,9 @@ final class FieldIndex implements PackedMetric.PackedScenes {
         final int[] end;
         final int[] left;
         final int[] right;
+        /** per inner node: the dimension it splits and the value there (left holds no more, right no less) */
+        final int[] splitDimension;
+        final double[] splitValue;
         final double[] low;
         final double[] high;
         int nodes;
@@ -120,6 +168,8 @@ final class FieldIndex implements PackedMetric.PackedScenes {
             end = new int[capacity];
             left = new int[capacity];
             right = new int[capacity];
+            splitDimension = new int[capacity];
+            splitValue = new double[capacity];
             low = new double[capacity * DIMENSIONS];
             high = new double[capacity * DIMENSIONS];
         }
@@ -144,25 +194,39 @@ final class FieldIndex implements PackedMetric.PackedScenes {
             left[node] = -1;
             right[node] = -1;
             int widest = 0;
-            double widestSpread = -1;
+            double widestVariance = -1;
             for (int d = 0; d < DIMENSIONS; d++) {
                 double min = Double.POSITIVE_INFINITY;
                 double max = Double.NEGATIVE_INFINITY;
+                double sum = 0;
                 for (int i = from; i < to; i++) {
                     double v = values[i * DIMENSIONS + d];
                     min = Math.min(min, v);
                     max = Math.max(max, v);
+                    sum += v;
                 }
                 low[node * DIMENSIONS + d] = min;
                 high[node * DIMENSIONS + d] = max;
-                if (max - min > widestSpread) {
-                    widestSpread = max - min;
-                    widest = d;
+                if (max > min) {
+                    // split where the members vary most, not where the range is widest: a few far scenes
+                    // (a ball across the pitch) would otherwise choose the dimension (HELIOS: p99 143 -> 120 us)
+                    double mean = sum / (to - from);
+                    double variance = Double.MIN_VALUE;
+                    for (int i = from; i < to; i++) {
+                        double deviation = values[i * DIMENSIONS + d] - mean;
+                        variance += deviation * deviation;
+                    }
+                    if (variance > widestVariance) {
+                        widestVariance = variance;
+                        widest = d;
+                    }
                 }
             }
-            if (to - from > LEAF && widestSpread > 0) {
+            if (to - from > LEAF && widestVariance > 0) {
                 int middle = (from + to) >>> 1;
                 select(from, to, middle, widest);
+                splitDimension[node] = widest;
+                splitValue[node] = values[middle * DIMENSIONS + widest];
                 left[node] = split(from, middle);
                 right[node] = split(middle, to);
             }
@@ -221,11 +285,33 @@ final class FieldIndex implements PackedMetric.PackedScenes {
             return sum;
         }
 
-        void search(int node, double[] q, double fixed, TopK top) {
-            if (pruned(fixed + boxCost(node, q), top)) {
+        /** Offers the members that can enter, descending from the root. */
+        void search(double[] q, double fixed, TopK top) {
+            double[] offsets = new double[DIMENSIONS];
+            double cost = 0;
+            for (int d = 0; d < DIMENSIONS; d++) {
+                double v = q[d];
+                offsets[d] = v < low[d] ? low[d] - v : v > high[d] ? v - high[d] : 0;
+                cost += offsets[d] * offsets[d];
+            }
+            search(0, cost, offsets, q, fixed, top);
+        }
+
+        /**
+         * Offers the members of {@code node}'s subtree that can enter. {@code cost} is the sum of
+         * {@code offsets}' squares, the query's distance along each dimension from the node's
+         * region as its ancestors' splits bound it: a lower bound updated in one dimension per
+         * node (Arya and Mount's incremental distance), where recomputing the box would take all
+         * nine; a leaf checks its tight box before its scenes.
+         */
+        private void search(int node, double cost, double[] offsets, double[] q, double fixed, TopK top) {
+            if (pruned(fixed + cost, top)) {
                 return;
             }
             if (left[node] < 0) {
+                if (pruned(fixed + boxCost(node, q), top)) {
+                    return;
+                }
                 for (int i = start[node]; i < end[node]; i++) {
                     // the operations of FieldMetric.distance, in its order; a sum past the bound cannot enter
                     double bound = top.bound();
@@ -241,12 +327,14 @@ final class FieldIndex implements PackedMetric.PackedScenes {
                 }
                 return;
             }
-            double toLeft = boxCost(left[node], q);
-            double toRight = boxCost(right[node], q);
-            int first = toLeft <= toRight ? left[node] : right[node];
-            int second = first == left[node] ? right[node] : left[node];
-            search(first, q, fixed, top);
-            search(second, q, fixed, top);
+            int d = splitDimension[node];
+            double gap = q[d] - splitValue[node];
+            // the query's side first; the other side lies at least |gap| away along d
+            search(gap < 0 ? left[node] : right[node], cost, offsets, q, fixed, top);
+            double before = offsets[d];
+            offsets[d] = gap;
+            search(gap < 0 ? right[node] : left[node], cost - before * before + gap * gap, offsets, q, fixed, top);
+            offsets[d] = before;
         }
     }
 }

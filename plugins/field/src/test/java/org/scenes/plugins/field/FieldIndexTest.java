@@ -1,6 +1,7 @@
 package org.scenes.plugins.field;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -63,22 +64,62 @@ class FieldIndexTest {
         queries.addAll(stored.subList(0, 50));
         for (Map<String, String> options : List.of(Map.<String, String>of(), Map.of("ball-frame", "body"),
                 Map.of("position-weight", "0", "play-mode-penalty", "0.5"))) {
-            PluginConfig config = PluginConfig.DEFAULT.withOptions(options);
-            FieldMetricProvider.FieldMetric metric = (FieldMetricProvider.FieldMetric) PluginRegistry.load()
-                    .metric("field", config);
-            KnowledgeBase knowledge = KnowledgeBase.of(Grid.DEFAULT, stored);
-            for (int k : new int[] {1, 5, 15}) {
-                Recognizer recognizer = new Recognizer(knowledge, () -> PluginRegistry.load().metric("field", config), k);
-                for (Scene query : queries) {
-                    List<Neighbour> expected = exhaustive(metric, stored, query).subList(0, k);
-                    List<Neighbour> actual = recognizer.nearest(query);
-                    assertEquals(k, actual.size());
-                    for (int i = 0; i < k; i++) {
-                        String where = "neighbour " + i + ", k=" + k + ", options " + options + ", query " + query.world();
-                        assertEquals(expected.get(i).index(), actual.get(i).index(), where);
-                        assertEquals(Double.doubleToLongBits(expected.get(i).distance()),
-                                Double.doubleToLongBits(actual.get(i).distance()), where);
-                    }
+            assertSameAsScan(stored, queries, options, 1, 5, 15);
+        }
+    }
+
+    /** Deeper trees, neighbours decoded from the compact store (above 4096 scenes), k of a HELIOS imitator. */
+    @Test
+    void theIndexFindsTheScansNeighboursInALargerKnowledgeBase() {
+        Random random = new Random(11);
+        List<Scene> stored = scenes(random, 12_000);
+        assertSameAsScan(stored, scenes(random, 120), Map.of(), 1, 10);
+    }
+
+    /** One group (play on, ball known and out of reach), so its tree is deep and splits a dimension again and again. */
+    @Test
+    void theIndexFindsTheScansNeighboursInOneDeepTree() {
+        Random random = new Random(13);
+        List<Scene> stored = new ArrayList<>();
+        for (int i = 0; i < 20_000 + 100; i++) {
+            double x = random.nextGaussian() * 15;
+            double y = random.nextGaussian() * 10;
+            World world = new World(x, y, random.nextDouble() * 360 - 180, 0, 0, 0, 8000 - random.nextInt(3000), 1, 0,
+                    x + 2 + Math.abs(random.nextGaussian() * 8), y + random.nextGaussian() * 8, random.nextGaussian() * 0.5,
+                    random.nextGaussian() * 0.5, 0, List.of(), "play_on", 0, 0);
+            stored.add(new Scene(i, new Observer("T", Side.LEFT, 7), List.of(), List.of(Action.dash(50)), null, 0, world));
+        }
+        List<Scene> queries = new ArrayList<>(stored.subList(20_000, stored.size()));
+        assertSameAsScan(stored.subList(0, 20_000), queries, Map.of(), 1, 10);
+    }
+
+    /** Fewer unlocated scenes than k: an unlocated query then gets located ones at {@code missing}, lowest index first. */
+    @Test
+    void fewerUnlocatedScenesThanKStillRankByIndex() {
+        Random random = new Random(5);
+        List<Scene> stored = scenes(random, 60);
+        List<Scene> queries = scenes(random, 300);
+        assertTrue(queries.stream().anyMatch(q -> !q.world().located()), "some queries are unlocated");
+        assertTrue(stored.stream().filter(s -> !s.world().located()).count() < 15);
+        assertSameAsScan(stored, queries, Map.of(), 1, 15, 60);
+    }
+
+    private static void assertSameAsScan(List<Scene> stored, List<Scene> queries, Map<String, String> options, int... ks) {
+        PluginConfig config = PluginConfig.DEFAULT.withOptions(options);
+        FieldMetricProvider.FieldMetric metric = (FieldMetricProvider.FieldMetric) PluginRegistry.load()
+                .metric("field", config);
+        KnowledgeBase knowledge = KnowledgeBase.of(Grid.DEFAULT, stored);
+        for (int k : ks) {
+            Recognizer recognizer = new Recognizer(knowledge, () -> PluginRegistry.load().metric("field", config), k);
+            for (Scene query : queries) {
+                List<Neighbour> expected = exhaustive(metric, stored, query).subList(0, k);
+                List<Neighbour> actual = recognizer.nearest(query);
+                assertEquals(k, actual.size());
+                for (int i = 0; i < k; i++) {
+                    String where = "neighbour " + i + ", k=" + k + ", options " + options + ", query " + query.world();
+                    assertEquals(expected.get(i).index(), actual.get(i).index(), where);
+                    assertEquals(Double.doubleToLongBits(expected.get(i).distance()),
+                            Double.doubleToLongBits(actual.get(i).distance()), where);
                 }
             }
         }
