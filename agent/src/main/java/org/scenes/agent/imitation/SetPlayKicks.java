@@ -46,6 +46,12 @@ final class SetPlayKicks {
                 continue;
             }
             if (!world.playMode().equals(mode)) {
+                // the kick that ended a set play may carry the next play mode already: its world
+                // model heard the referee's play_on of the same cycle (so HELIOS base's kick-offs)
+                String ended = ownKind(mode, scene.observer().side());
+                if (ended != null && !kicked && scene.actionType() == ActionType.KICK) {
+                    byKind.computeIfAbsent(ended, k -> new ArrayList<>()).add(new Kick(scene, scene.cycle() - since));
+                }
                 mode = world.playMode();
                 since = scene.cycle();
                 kicked = false;

@@ -59,6 +59,22 @@ class SetPlayKicksTest {
     }
 
     @Test
+    void aKickWhoseSceneHeardTheRefereesPlayOnStillEndedItsSetPlay() {
+        List<Scene> scenes = new ArrayList<>();
+        for (int t = 0; t < 25; t++) {
+            scenes.add(at(t, "kick_off_l", Action.turn(30)));
+        }
+        // the kick's world model already heard play_on (HELIOS base's recorded kick-offs)
+        Scene kick = at(25, "play_on", Action.kick(60, 0));
+        scenes.add(kick);
+        scenes.add(at(26, "play_on", Action.kick(100, 0)));
+        SetPlayKicks recorded = SetPlayKicks.of(scenes);
+        assertEquals(1, recorded.size());
+        assertSame(kick, recorded.due("kick_off_l", Side.LEFT, 25));
+        assertNull(recorded.due("kick_off_l", Side.LEFT, 24));
+    }
+
+    @Test
     void aKindThePlayerNeverTookIsTakenAsItsTeamTookIt() {
         List<Scene> own = new ArrayList<>();
         List<Scene> others = new ArrayList<>();
