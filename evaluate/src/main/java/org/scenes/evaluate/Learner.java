@@ -6,14 +6,18 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.Random;
+import java.util.function.Consumer;
 import java.util.function.LongConsumer;
 import java.util.stream.Stream;
+import org.scenes.agent.Brain;
 import org.scenes.agent.BrainFactory;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.sim.GameResult;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.sim.Simulator;
 import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionType;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
@@ -100,8 +104,44 @@ public final class Learner {
     public static Imitator of(KnowledgeBase knowledge, Matching matching) {
         Recognizer recognizer = new Recognizer(knowledge, matching.metric(), matching.k(),
                 SceneTransform.queryImage(matching.transforms().get()));
-        return new Imitator(ImitationBrain.factory(recognizer, matching.selector(), matching.transforms(),
-                ImitationBrain.Guards.OFF, matching.replay()), knowledge);
+        BrainFactory brains = ImitationBrain.factory(recognizer, matching.selector(), matching.transforms(),
+                ImitationBrain.Guards.OFF, matching.replay());
+        return new Imitator(teacherMoved(knowledge) ? brains : withoutKickOffRepeats(brains), knowledge);
+    }
+
+    /** Whether any scene's action is a {@code move}: the teacher placed itself again during its games. */
+    static boolean teacherMoved(KnowledgeBase knowledge) {
+        return knowledge.scenes().stream().anyMatch(scene -> scene.actionType() == ActionType.MOVE);
+    }
+
+    /**
+     * The brains with the runtime's repeats of their kick-off move after goals and half time turned
+     * off: an imitator does not send moves its teacher never sent (the real Krislet client moves
+     * once, before its first see, so its scenes hold no move).
+     */
+    static BrainFactory withoutKickOffRepeats(BrainFactory brains) {
+        return new BrainFactory() {
+            @Override
+            public Brain create(String team, Random random) {
+                Brain brain = brains.create(team, random);
+                return new Brain() {
+                    @Override
+                    public void receive(String message, Consumer<String> send) {
+                        brain.receive(message, send);
+                    }
+
+                    @Override
+                    public boolean repeatsKickOffMove() {
+                        return false;
+                    }
+                };
+            }
+
+            @Override
+            public boolean goalie(int unum) {
+                return brains.goalie(unum);
+            }
+        };
     }
 
     private static void deleteTree(Path directory) throws IOException {

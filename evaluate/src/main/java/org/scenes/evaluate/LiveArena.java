@@ -252,7 +252,7 @@ public final class LiveArena implements Arena {
      * Brains made as each player's init is answered, seeded as the embedded simulator seeds
      * them, behind the scoreboard.
      */
-    private static BrainFactory seeded(BrainFactory brains, long seed, Side side, Scoreboard board,
+    static BrainFactory seeded(BrainFactory brains, long seed, Side side, Scoreboard board,
                                        AtomicInteger connected, AtomicReference<String> wrongSide,
                                        Consumer<String> notices) {
         return (teamName, ignored) -> new Brain() {
@@ -284,6 +284,12 @@ public final class LiveArena implements Arena {
                 }
                 board.heard(side, unum, message, parser);
                 inner.receive(message, send);
+            }
+
+            /** The brain's own answer once it is made (the runtime asks after a goal or half time). */
+            @Override
+            public boolean repeatsKickOffMove() {
+                return inner == null || inner.repeatsKickOffMove();
             }
         };
     }
@@ -339,7 +345,7 @@ public final class LiveArena implements Arena {
     }
 
     /** What the players hear of the game: the clock, the score, time over, and their kick counters. */
-    private static final class Scoreboard {
+    static final class Scoreboard {
         final AtomicInteger time = new AtomicInteger();
         final AtomicInteger[] score = {new AtomicInteger(), new AtomicInteger()};
         final ConcurrentHashMap<String, Integer> kickCounters = new ConcurrentHashMap<>();
