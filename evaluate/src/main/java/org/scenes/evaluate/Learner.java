@@ -109,9 +109,12 @@ public final class Learner {
         return new Imitator(teacherMoved(knowledge) ? brains : withoutKickOffRepeats(brains), knowledge);
     }
 
-    /** Whether any scene's action is a {@code move}: the teacher placed itself again during its games. */
+    /**
+     * Whether the teacher placed itself again during its games: a scene after the game's first cycle
+     * whose action is a {@code move} (the placement before the kick-off, at time 0, every teacher makes).
+     */
     static boolean teacherMoved(KnowledgeBase knowledge) {
-        return knowledge.scenes().stream().anyMatch(scene -> scene.actionType() == ActionType.MOVE);
+        return knowledge.scenes().stream().anyMatch(scene -> scene.cycle() > 0 && scene.actionType() == ActionType.MOVE);
     }
 
     /**

@@ -57,6 +57,10 @@ class KickOffMovesTest {
     void anImitatorRepeatsItsKickOffMoveOnlyWhenItsTeacherMoved() {
         Brain still = Learner.of(knowledge(Action.dash(60), Action.turn(30)), MATCHING).brains()
                 .create("Teal", new Random(1));
+        // the real Krislet client's one placement may come after its first see: a scene at time 0
+        Brain placedOnce = Learner.of(KnowledgeBase.of(Grid.DEFAULT, List.of(scene(0, Action.move(-10, 5)),
+                scene(1, Action.dash(60)))), MATCHING).brains().create("Teal", new Random(1));
+        assertFalse(placedOnce.repeatsKickOffMove());
         Brain moving = Learner.of(knowledge(Action.dash(60), Action.move(-10, 0)), MATCHING).brains()
                 .create("Teal", new Random(1));
         assertFalse(still.repeatsKickOffMove());
