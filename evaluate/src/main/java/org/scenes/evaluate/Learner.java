@@ -101,12 +101,27 @@ public final class Learner {
     }
 
     /** An imitator on a knowledge base already built (from scene files, say). */
-    public static Imitator of(KnowledgeBase knowledge, Matching matching) {
+    public static Imitator of(KnowledgeBase all, Matching matching) {
+        KnowledgeBase knowledge = withoutPlacements(all);
         Recognizer recognizer = new Recognizer(knowledge, matching.metric(), matching.k(),
                 SceneTransform.queryImage(matching.transforms().get()));
         BrainFactory brains = ImitationBrain.factory(recognizer, matching.selector(), matching.transforms(),
                 ImitationBrain.Guards.OFF, matching.replay());
         return new Imitator(teacherMoved(knowledge) ? brains : withoutKickOffRepeats(brains), knowledge);
+    }
+
+    /**
+     * The knowledge to match in: without the teacher's placement before the kick-off when it never
+     * placed itself again. The brain places itself when its {@code player_type}s arrive; matched
+     * in play, such a scene makes a player send {@code move}s that the server ignores, over and over
+     * (the view does not change), where its teacher never sent one.
+     */
+    static KnowledgeBase withoutPlacements(KnowledgeBase knowledge) {
+        if (teacherMoved(knowledge)) {
+            return knowledge;
+        }
+        List<Scene> kept = knowledge.scenes().stream().filter(scene -> scene.actionType() != ActionType.MOVE).toList();
+        return kept.size() == knowledge.size() ? knowledge : KnowledgeBase.of(knowledge.grid(), kept);
     }
 
     /**

@@ -14,6 +14,7 @@ import org.scenes.agent.Brain;
 import org.scenes.agent.sim.GameSetup;
 import org.scenes.agent.teacher.Teachers;
 import org.scenes.api.Action;
+import org.scenes.api.ActionType;
 import org.scenes.api.Grid;
 import org.scenes.api.Observer;
 import org.scenes.api.PluginRegistry;
@@ -65,6 +66,20 @@ class KickOffMovesTest {
                 .create("Teal", new Random(1));
         assertFalse(still.repeatsKickOffMove());
         assertTrue(moving.repeatsKickOffMove());
+    }
+
+    @Test
+    void aPlacementBeforeTheKickOffIsNotMatchedInPlayUnlessTheTeacherPlacedItselfAgain() {
+        // matched in play, the real Krislet's placement (a scene at time 0) made an imitator send moves the
+        // server ignores, every decision, for hundreds of cycles
+        KnowledgeBase placedOnce = KnowledgeBase.of(Grid.DEFAULT, List.of(scene(0, Action.move(-10, 5)),
+                scene(1, Action.dash(60)), scene(2, Action.turn(30))));
+        Learner.Imitator imitator = Learner.of(placedOnce, MATCHING);
+        assertEquals(2, imitator.scenes());
+        assertTrue(imitator.knowledge().scenes().stream().noneMatch(s -> s.actionType() == ActionType.MOVE));
+        KnowledgeBase placedAgain = KnowledgeBase.of(Grid.DEFAULT, List.of(scene(0, Action.move(-10, 5)),
+                scene(1, Action.dash(60)), scene(300, Action.move(-10, 5))));
+        assertEquals(3, Learner.of(placedAgain, MATCHING).scenes(), "a teacher placed again keeps its moves");
     }
 
     @Test
