@@ -86,7 +86,7 @@ class ExternalTeamEvaluateTest {
         try (Server server = new Server(logs, 2, 100)) {
             CommandRunner cli = new CommandRunner();
             int status = cli.run("evaluate", "--server", "127.0.0.1:" + server.port, "--server-logs", logs,
-                    "--server-wait", "60", "--opponent-command", teamCommand("7355").replace("krislet", "statebased"),
+                    "--server-wait", "60", "--opponent-command", teamCommand("7355").replace("--teacher krislet", "--teacher statebased"),
                     "--players", "1", "--cycles", "100", "--seeds", "1", "--metric", "ball-goal", scenes, "--json");
             assertEquals(ExitCodes.OK, status, cli.err());
             assertEquals(2, server.served().size());

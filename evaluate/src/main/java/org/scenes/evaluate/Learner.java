@@ -7,11 +7,14 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
+import java.util.Random;
+import java.util.function.Consumer;
 import java.util.function.LongConsumer;
 import java.util.stream.Stream;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.imitation.ImitationTeam;
 import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionType;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
@@ -22,6 +25,7 @@ import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.target.Replay;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.simulator.Brain;
 import org.scenes.simulator.BrainFactory;
 import org.scenes.simulator.GameResult;
 import org.scenes.simulator.GameSetup;
@@ -118,10 +122,16 @@ public final class Learner {
         }
     }
 
-    /** An imitator on a knowledge base already built (from scene files, say), every player on all of it. */
-    public static Imitator of(KnowledgeBase knowledge, Matching matching) {
-        return new Imitator(ImitationBrain.factory(matching.recognizer(knowledge), matching.selector(),
-                matching.transforms(), ImitationBrain.Guards.OFF, matching.replay()), knowledge, null, matching);
+    /**
+     * An imitator on a knowledge base already built (from scene files, say), every player on all
+     * of it; without the teacher's placements and kick-off repeats when it never placed itself again.
+     */
+    public static Imitator of(KnowledgeBase all, Matching matching) {
+        KnowledgeBase knowledge = withoutPlacements(all);
+        BrainFactory brains = ImitationBrain.factory(matching.recognizer(knowledge), matching.selector(),
+                matching.transforms(), ImitationBrain.Guards.OFF, matching.replay());
+        return new Imitator(teacherMoved(knowledge) ? brains : withoutKickOffRepeats(brains), knowledge, null,
+                matching);
     }
 
     /**
@@ -136,6 +146,57 @@ public final class Learner {
     private static Imitator of(ImitationTeam team, Matching matching) {
         return new Imitator(team.brains(matching.selector(), matching.transforms(), ImitationBrain.Guards.OFF,
                 matching.replay()), team.knowledge(), team, matching);
+    }
+
+    /**
+     * The knowledge to match in: without the teacher's placement before the kick-off when it never
+     * placed itself again. The brain places itself when its {@code player_type}s arrive; matched
+     * in play, such a scene makes a player send {@code move}s that the server ignores, over and over
+     * (the view does not change), where its teacher never sent one.
+     */
+    static KnowledgeBase withoutPlacements(KnowledgeBase knowledge) {
+        if (teacherMoved(knowledge)) {
+            return knowledge;
+        }
+        return knowledge.without(scene -> scene.actionType() == ActionType.MOVE);
+    }
+
+    /**
+     * Whether the teacher placed itself again during its games: a scene after the game's first cycle
+     * whose action is a {@code move} (the placement before the kick-off, at time 0, every teacher makes).
+     */
+    static boolean teacherMoved(KnowledgeBase knowledge) {
+        return knowledge.scenes().stream().anyMatch(scene -> scene.cycle() > 0 && scene.actionType() == ActionType.MOVE);
+    }
+
+    /**
+     * The brains with the runtime's repeats of their kick-off move after goals and half time turned
+     * off: an imitator does not send moves its teacher never sent (the real Krislet client moves
+     * once, before its first see, so its scenes hold no move).
+     */
+    static BrainFactory withoutKickOffRepeats(BrainFactory brains) {
+        return new BrainFactory() {
+            @Override
+            public Brain create(String team, Random random) {
+                Brain brain = brains.create(team, random);
+                return new Brain() {
+                    @Override
+                    public void receive(String message, Consumer<String> send) {
+                        brain.receive(message, send);
+                    }
+
+                    @Override
+                    public boolean repeatsKickOffMove() {
+                        return false;
+                    }
+                };
+            }
+
+            @Override
+            public boolean goalie(int unum) {
+                return brains.goalie(unum);
+            }
+        };
     }
 
     private static void deleteTree(Path directory) throws IOException {

@@ -288,6 +288,12 @@ public final class LiveArena implements Arena {
                 board.heard(side, unum, message, parser);
                 inner.receive(message, send);
             }
+
+            /** The brain's own answer once it is made (the runtime asks after a goal or half time). */
+            @Override
+            public boolean repeatsKickOffMove() {
+                return inner == null || inner.repeatsKickOffMove();
+            }
         };
     }
 

@@ -30,6 +30,12 @@ final class TracedBrain implements Brain {
         this.trace = Objects.requireNonNull(trace, "trace");
     }
 
+    /** The driver's: the runtime repeats kick-off moves only for a driver that wants them. */
+    @Override
+    public boolean repeatsKickOffMove() {
+        return driver.repeatsKickOffMove();
+    }
+
     @Override
     public void receive(String message, Consumer<String> send) {
         if (shadow instanceof LateShadow late) {

@@ -6,6 +6,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.SortedMap;
 import java.util.TreeMap;
+import java.util.function.Predicate;
 import java.util.function.Supplier;
 import org.scenes.api.Grid;
 import org.scenes.api.Scene;
@@ -245,6 +246,22 @@ public final class KnowledgeBase {
         }
         KnowledgeBase built = builder.build();
         return new KnowledgeBase(grid, built.scenes, played, null);
+    }
+
+    /** These scenes without those {@code drop} matches, in order (itself when none does); labels stay labels. */
+    public KnowledgeBase without(Predicate<Scene> drop) {
+        Builder builder = builder(grid);
+        int keptPlayed = 0;
+        int index = 0;
+        for (Scene scene : scenes()) {
+            if (!drop.test(scene)) {
+                builder.add(scene);
+                keptPlayed += index < played ? 1 : 0;
+            }
+            index++;
+        }
+        KnowledgeBase built = builder.build();
+        return built.size() == size() ? this : new KnowledgeBase(grid, built.scenes, keptPlayed, null);
     }
 
     /**
