@@ -127,11 +127,12 @@ public final class Learner {
      * of it; without the teacher's placements and kick-off repeats when it never placed itself again.
      */
     public static Imitator of(KnowledgeBase all, Matching matching) {
-        KnowledgeBase knowledge = withoutPlacements(all);
+        // one pass over the scenes: a knowledge base decodes each on every read
+        boolean moved = teacherMoved(all);
+        KnowledgeBase knowledge = moved ? all : withoutPlacements(all);
         BrainFactory brains = ImitationBrain.factory(matching.recognizer(knowledge), matching.selector(),
                 matching.transforms(), ImitationBrain.Guards.OFF, matching.replay());
-        return new Imitator(teacherMoved(knowledge) ? brains : withoutKickOffRepeats(brains), knowledge, null,
-                matching);
+        return new Imitator(moved ? brains : withoutKickOffRepeats(brains), knowledge, null, matching);
     }
 
     /**
@@ -149,15 +150,12 @@ public final class Learner {
     }
 
     /**
-     * The knowledge to match in: without the teacher's placement before the kick-off when it never
-     * placed itself again. The brain places itself when its {@code player_type}s arrive; matched
+     * The knowledge to match in when the teacher never placed itself again: without its placement
+     * before the kick-off. The brain places itself when its {@code player_type}s arrive; matched
      * in play, such a scene makes a player send {@code move}s that the server ignores, over and over
      * (the view does not change), where its teacher never sent one.
      */
-    static KnowledgeBase withoutPlacements(KnowledgeBase knowledge) {
-        if (teacherMoved(knowledge)) {
-            return knowledge;
-        }
+    private static KnowledgeBase withoutPlacements(KnowledgeBase knowledge) {
         return knowledge.without(scene -> scene.actionType() == ActionType.MOVE);
     }
 

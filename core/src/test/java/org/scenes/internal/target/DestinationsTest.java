@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -73,6 +74,11 @@ class DestinationsTest {
         assertNotNull(Destinations.of(KnowledgeBase.of(Grid.DEFAULT, run(SEVEN, 30, 0, 0)))
                 .target(List.of(neighbour(15)), here, null), "the same scenes, all played, have destinations");
         assertArrayEquals(new double[] {10, 0}, destinations.target(List.of(neighbour(0)), here, null), 1e-9);
+        // a played scene and a label dropped: the labels stay labels
+        KnowledgeBase fewer = labelled.without(scene -> scene.cycle() == 3 || scene.cycle() == 25);
+        assertEquals(19, fewer.played());
+        assertEquals(38, fewer.size());
+        assertSame(labelled, labelled.without(scene -> false));
     }
 
     @Test
