@@ -83,6 +83,7 @@ public final class ImitationBrain implements Brain {
     private int playModeSince;
     /** The counterpart's recorded kick-off moves: empty without a counterpart or moves. */
     private List<Action> counterpartMoves = List.of();
+    private boolean counterpartMovedInPlay;
     /** Whether the brain was made with roles; without them it places itself and moves as it always did. */
     private final boolean withRoles;
     private final ActionSelector selector;
@@ -253,16 +254,18 @@ public final class ImitationBrain implements Brain {
         perCycle = recognizer.splitsBySeeAge();
         ImitationTeam.Counterpart counterpart = roles.counterpart(unum);
         counterpartMoves = counterpart == null ? List.of() : counterpart.moves();
+        counterpartMovedInPlay = counterpart != null && counterpart.movedInPlay();
         setPlayKicks = roles.setPlayKicks(unum);
     }
 
     /**
-     * With roles, the runtime repeats the kick-off move after goals only when the counterpart's
-     * scenes hold moves: a teacher that never moved during the game is not made to.
+     * With roles, the runtime repeats the kick-off move after goals only when the counterpart
+     * placed itself again after time 0: a teacher that moved only before the first kick-off (the
+     * real Krislet client) or never is not made to.
      */
     @Override
     public boolean repeatsKickOffMove() {
-        return !withRoles || !counterpartMoves.isEmpty();
+        return !withRoles || counterpartMovedInPlay;
     }
 
     /** The command for one see, or null when no neighbour holds a usable action. */

@@ -59,9 +59,11 @@ public final class ImitationTeam {
      * @param recognizer the nearest scenes among its own, or null when the team's are used
      * @param moves the first {@code move} of each run of moves in its scenes, in order: where it
      *              placed itself before kick-offs (empty when its scenes hold none)
+     * @param movedInPlay whether it placed itself again after time 0 (after goals, at half time);
+     *                    the real Krislet client places itself once, at time 0
      * @param setPlayKicks the kicks with which it took its team's set plays, and after how long
      */
-    record Counterpart(int unum, boolean goalie, Recognizer recognizer, List<Action> moves,
+    record Counterpart(int unum, boolean goalie, Recognizer recognizer, List<Action> moves, boolean movedInPlay,
                        SetPlayKicks setPlayKicks) {
         Counterpart {
             moves = List.copyOf(moves);
@@ -104,6 +106,7 @@ public final class ImitationTeam {
         Map<Integer, List<Path>> byUnum = new TreeMap<>();
         Map<Integer, Boolean> goalies = new TreeMap<>();
         Map<Integer, List<Action>> moves = new TreeMap<>();
+        Map<Integer, Boolean> movedInPlay = new TreeMap<>();
         Map<Integer, SetPlayKicks> setPlayKicks = new TreeMap<>();
         for (Path file : files) {
             try (SceneFileReader reader = SceneFileReader.open(file)) {
@@ -116,6 +119,8 @@ public final class ImitationTeam {
                     List<Scene> recorded = new ArrayList<>();
                     reader.forEachRemaining(recorded::add);
                     moves.computeIfAbsent(unum, u -> new ArrayList<>()).addAll(kickOffMoves(recorded));
+                    movedInPlay.merge(unum, recorded.stream().anyMatch(
+                            scene -> scene.cycle() > 0 && scene.actionType() == ActionType.MOVE), Boolean::logicalOr);
                     setPlayKicks.merge(unum, SetPlayKicks.of(recorded), SetPlayKicks::with);
                 }
             }
@@ -127,7 +132,7 @@ public final class ImitationTeam {
             Recognizer recognizer = knowledge == Knowledge.COUNTERPART
                     ? recognizers.apply(KnowledgeBase.load(entry.getValue(), transforms)) : null;
             counterparts.put(unum, new Counterpart(unum, goalies.get(unum), recognizer, moves.get(unum),
-                    setPlayKicks.get(unum)));
+                    movedInPlay.get(unum), setPlayKicks.get(unum)));
         }
         return new ImitationTeam(team, counterparts, knowledge);
     }
@@ -148,7 +153,7 @@ public final class ImitationTeam {
             Recognizer recognizer = counterpart.recognizer() == null || own.isEmpty() ? counterpart.recognizer()
                     : recognizers.apply(counterpart.recognizer().knowledge().plus(own, transforms));
             corrected.put(counterpart.unum(), new Counterpart(counterpart.unum(), counterpart.goalie(), recognizer,
-                    counterpart.moves(), counterpart.setPlayKicks()));
+                    counterpart.moves(), counterpart.movedInPlay(), counterpart.setPlayKicks()));
         }
         return new ImitationTeam(recognizers.apply(team.knowledge().plus(all, transforms)), corrected, knowledge);
     }

@@ -109,6 +109,21 @@ class ImitationTeamTest {
         neverMoved.receive("(init l 3 before_kick_off)", s -> { });
         assertTrue(moved.repeatsKickOffMove());
         assertFalse(neverMoved.repeatsKickOffMove(), "its teacher never moved after a goal: neither does it");
+        // the real Krislet client: one placement at time 0, none after goals
+        Observer krislet = new Observer("Teal", Side.LEFT, 4);
+        Path once = directory.resolve("Teal_4.json");
+        SceneFileWriter.write(once, new SceneFile(SceneFileHeader.of(Grid.DEFAULT, new SceneSource("k", krislet)),
+                List.of(new Scene(0, krislet, ballAt(30), List.of(Action.move(-10, 0))),
+                        new Scene(5, krislet, ballAt(10), List.of(Action.dash(50))))));
+        Brain placedOnce = ImitationTeam.load(List.of(once), List::of,
+                        knowledge -> new Recognizer(knowledge, () -> ImitationBrainTest.BALL, 1),
+                        ImitationTeam.Knowledge.COUNTERPART).brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF)
+                .create("Teal", new Random(1));
+        List<String> sent = new ArrayList<>();
+        placedOnce.receive("(init l 4 before_kick_off)", sent::add);
+        placedOnce.receive("(player_type (id 0))", sent::add);
+        assertEquals(List.of("(move -10 0)"), sent, "it still places itself where its teacher did");
+        assertFalse(placedOnce.repeatsKickOffMove(), "a placement at time 0 only is not repeated after goals");
         Brain withoutRoles = new ImitationBrain("Teal", team.recognizer(3), FIRST, List::of, new Random(1));
         assertTrue(withoutRoles.repeatsKickOffMove(), "a brain without roles keeps the runtime's repeat");
     }
