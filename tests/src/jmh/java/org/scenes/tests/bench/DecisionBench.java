@@ -1,6 +1,7 @@
 package org.scenes.tests.bench;
 
 import java.util.List;
+import java.util.Locale;
 import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
@@ -76,13 +77,11 @@ public class DecisionBench {
         return selector.select(recognizer.nearest(queries.get(next)), random);
     }
 
-    private final java.lang.management.ThreadMXBean threads = java.lang.management.ManagementFactory.getThreadMXBean();
-    private long[] cpuNanos = new long[1 << 16];
-    private int decisions;
+    private final CpuTimes cpuTimes = new CpuTimes();
 
     @Setup(Level.Iteration)
     public void startCounting() {
-        decisions = 0;
+        cpuTimes.reset();
     }
 
     /**
@@ -92,23 +91,14 @@ public class DecisionBench {
      */
     @Benchmark
     public Action decideCpuTime() {
-        long start = threads.getCurrentThreadCpuTime();
-        Action action = decide();
-        if (decisions == cpuNanos.length) {
-            cpuNanos = java.util.Arrays.copyOf(cpuNanos, decisions * 2);
-        }
-        cpuNanos[decisions++] = threads.getCurrentThreadCpuTime() - start;
-        return action;
+        return cpuTimes.time(this::decide);
     }
 
     @TearDown(Level.Iteration)
     public void printCpuTime() {
-        if (decisions == 0) {
-            return; // the iteration ran decide
+        String summary = cpuTimes.summary();
+        if (summary != null) {
+            System.out.printf(Locale.ROOT, "%n[cpu] %s %s k=%d: %s%n", knowledge, metric, k, summary);
         }
-        long[] sorted = java.util.Arrays.copyOf(cpuNanos, decisions);
-        java.util.Arrays.sort(sorted);
-        System.out.printf(java.util.Locale.ROOT, "%n[cpu] %s %s k=%d: %d decisions, CPU us p50 %.1f p99 %.1f%n", knowledge, metric, k,
-                decisions, sorted[(decisions - 1) / 2] / 1e3, sorted[(int) Math.ceil(0.99 * decisions) - 1] / 1e3);
     }
 }

@@ -5,10 +5,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.lang.management.ManagementFactory;
-import java.lang.management.ThreadMXBean;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -85,9 +82,7 @@ public class FieldIndexBench {
     private List<Scene> queries;
     private final SplittableRandom random = new SplittableRandom(1);
     private int next;
-    private final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
-    private long[] cpuNanos = new long[1 << 16];
-    private int decisions;
+    private final CpuTimes cpuTimes = new CpuTimes();
 
     @Setup
     public void build() {
@@ -183,7 +178,7 @@ public class FieldIndexBench {
 
     @Setup(Level.Iteration)
     public void startCounting() {
-        decisions = 0;
+        cpuTimes.reset();
     }
 
     /**
@@ -193,23 +188,14 @@ public class FieldIndexBench {
      */
     @Benchmark
     public Action decideCpuTime() {
-        long start = threads.getCurrentThreadCpuTime();
-        Action action = decide();
-        if (decisions == cpuNanos.length) {
-            cpuNanos = Arrays.copyOf(cpuNanos, decisions * 2);
-        }
-        cpuNanos[decisions++] = threads.getCurrentThreadCpuTime() - start;
-        return action;
+        return cpuTimes.time(this::decide);
     }
 
     @TearDown(Level.Iteration)
     public void printCpuTime() {
-        if (decisions == 0) {
-            return; // the iteration ran another benchmark
+        String summary = cpuTimes.summary();
+        if (summary != null) {
+            System.out.printf(Locale.ROOT, "%n[cpu] field %s %d k=%d: %s%n", knowledge, scenes, k, summary);
         }
-        long[] sorted = Arrays.copyOf(cpuNanos, decisions);
-        Arrays.sort(sorted);
-        System.out.printf(Locale.ROOT, "%n[cpu] field %s %d k=%d: %d decisions, CPU us p50 %.1f p99 %.1f%n", knowledge,
-                scenes, k, decisions, sorted[(decisions - 1) / 2] / 1e3, sorted[(int) Math.ceil(0.99 * decisions) - 1] / 1e3);
     }
 }
