@@ -96,7 +96,11 @@ public final class Tables {
         root.put("seeds", comparison.seeds());
         Map<String, Object> figures = new LinkedHashMap<>();
         for (Comparison.Figure figure : comparison.figures()) {
-            figures.put(figure.key(), Map.of("teacher", spread(figure.teacher()), "imitator", spread(figure.imitator())));
+            // ordered maps throughout: Map.of iterates in an order that changes from run to run, and so would the bytes
+            Map<String, Object> sides = new LinkedHashMap<>();
+            sides.put("teacher", spread(figure.teacher()));
+            sides.put("imitator", spread(figure.imitator()));
+            figures.put(figure.key(), sides);
         }
         root.put("figures", figures);
         root.put("actions", Comparison.ACTIONS);
@@ -121,9 +125,16 @@ public final class Tables {
         t.put("windowCycles", TuringTest.WINDOW);
         t.put("features", turing.features());
         root.put("turing", t);
-        root.put("targets", comparison.targets().stream()
-                .map(x -> Map.of("target", x.what(), "reached", x.reached(), "met", x.met())).toList());
+        root.put("targets", comparison.targets().stream().map(Tables::target).toList());
         return root;
+    }
+
+    private static Map<String, Object> target(Comparison.Target target) {
+        Map<String, Object> map = new LinkedHashMap<>();
+        map.put("target", target.what());
+        map.put("reached", target.reached());
+        map.put("met", target.met());
+        return map;
     }
 
     private static Map<String, Object> spread(Spread s) {
