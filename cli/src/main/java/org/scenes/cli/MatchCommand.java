@@ -13,6 +13,7 @@ import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.imitation.ImitationTeam;
+import org.scenes.app.Teams;
 import org.scenes.evaluate.Arena;
 import org.scenes.evaluate.GameFigures;
 import org.scenes.evaluate.Match;
@@ -131,7 +132,7 @@ final class MatchCommand implements Callable<Integer> {
             if (parts.length != 2) {
                 throw new UsageException(option + ": '" + text + "' is neither TEACHER:N nor imitator:N:SCENES[:CONFIG]");
             }
-            return new Side(SimulateCommand.team(text, name), null, text.trim());
+            return new Side(Teams.builtIn(text, name), null, text.trim());
         }
         if (parts.length < 3 || parts[2].isEmpty()) {
             throw new UsageException(option + ": an imitator needs its scenes: imitator:N:SCENES[:CONFIG.json]");

@@ -9,6 +9,7 @@ import java.util.concurrent.Callable;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.imitation.ImitationTeam;
 import org.scenes.api.PluginRegistry;
+import org.scenes.app.Teams;
 import org.scenes.internal.validate.MatchConfig;
 import org.scenes.simulator.GameResult;
 import org.scenes.simulator.GameSetup;
@@ -107,7 +108,7 @@ final class PlayCommand implements Callable<Integer> {
         if (cycles < 1) {
             throw new UsageException("--cycles: must be at least 1, not " + cycles);
         }
-        GameSetup.Team right = SimulateCommand.team(opponent, teamNames[1].trim());
+        GameSetup.Team right = Teams.builtIn(opponent, teamNames[1].trim());
         long started = System.nanoTime();
         ImitationTeam team = roles.load(sceneFiles, config, registry);
         GameSetup setup;

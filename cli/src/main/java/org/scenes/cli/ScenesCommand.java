@@ -7,6 +7,7 @@ import java.util.Properties;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginException;
 import org.scenes.api.PluginRegistry;
+import org.scenes.app.RequestException;
 import org.scenes.internal.scene.SceneFileException;
 import org.scenes.options.OptionException;
 import picocli.CommandLine.Command;
@@ -81,9 +82,11 @@ final class ScenesCommand implements Runnable {
             e.printStackTrace(err);
         }
         err.flush();
-        // usage is typed (a bad option is a UsageException or the options module's OptionException); any
-        // other failure, an IllegalArgumentException from core about the data included, is failed work
-        if (e instanceof UsageException || e instanceof OptionException || e instanceof PluginException) {
+        // usage is typed (a bad option is a UsageException, the options module's OptionException or a service's
+        // RequestException); any other failure, an IllegalArgumentException from core about the data included, is
+        // failed work
+        if (e instanceof UsageException || e instanceof OptionException || e instanceof RequestException
+                || e instanceof PluginException) {
             return ExitCodes.USAGE;
         }
         return ExitCodes.FAILURE;

@@ -6,7 +6,7 @@ import java.nio.file.Path;
 import java.util.Iterator;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.scenes.simulator.BrainFactory;
+import org.scenes.app.Teams;
 import org.scenes.simulator.GameResult;
 import org.scenes.simulator.GameSetup;
 import org.scenes.simulator.Simulator;
@@ -80,8 +80,8 @@ final class SimulateCommand implements Callable<Integer> {
         }
         GameSetup setup;
         try {
-            setup = new GameSetup(team(teamSpecs[0], teamNames[0].trim()), team(teamSpecs[1], teamNames[1].trim()),
-                    cycles, seed, outDir);
+            setup = new GameSetup(Teams.builtIn(teamSpecs[0], teamNames[0].trim()), Teams.builtIn(teamSpecs[1],
+                    teamNames[1].trim()), cycles, seed, outDir);
         } catch (IllegalArgumentException e) {
             throw new UsageException(e.getMessage());
         }
@@ -108,28 +108,6 @@ final class SimulateCommand implements Callable<Integer> {
     static GameResult play(Simulator simulator, int cycles) throws IOException {
         try (TerminalProgress bar = TerminalProgress.start("Simulating", cycles, " cycles", 1)) {
             return simulator.run(bar::stepTo);
-        }
-    }
-
-    static GameSetup.Team team(String spec, String name) {
-        String[] parts = spec.trim().split(":", -1);
-        if (parts.length != 2) {
-            throw new UsageException("--teams: '" + spec + "' is not TEACHER:N, e.g. krislet:5");
-        }
-        BrainFactory brains;
-        int players;
-        try {
-            brains = Teachers.byName(parts[0]);
-            players = Integer.parseInt(parts[1]);
-        } catch (NumberFormatException e) {
-            throw new UsageException("--teams: '" + parts[1] + "' in '" + spec + "' is not a number of players");
-        } catch (IllegalArgumentException e) {
-            throw new UsageException("--teams: " + e.getMessage());
-        }
-        try {
-            return new GameSetup.Team(name, players, brains);
-        } catch (IllegalArgumentException e) {
-            throw new UsageException("--teams/--names: " + e.getMessage());
         }
     }
 
