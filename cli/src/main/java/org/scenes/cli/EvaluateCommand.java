@@ -21,7 +21,7 @@ import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
 
 /** {@code scenes evaluate}: teacher and imitator play the same games; do they play alike? */
-@Command(name = "evaluate", mixinStandardHelpOptions = true,
+@Command(name = "evaluate",
         description = {"Closed-loop evaluation: the teacher team and an imitating team play the same games (same"
                 + " seeds, start positions, opponent) in the embedded simulator (or on a soccer server with"
                 + " --server), and their behaviour is compared:"
@@ -37,6 +37,10 @@ final class EvaluateCommand implements Callable<Integer> {
 
     @ParentCommand
     ScenesCommand top;
+
+    // --version is the protocol version here, so the standard help mixin (-h, -V) cannot be used
+    @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help message and exit.")
+    boolean help;
 
     @Parameters(paramLabel = "SCENES", arity = "0..*",
             description = "Scene files to learn the imitator from; default: the teacher's own games (--train-games).")

@@ -50,6 +50,17 @@ class ScenesCommandTest {
     }
 
     @Test
+    void everyCommandAnswersHelpWithItsUsage() {
+        for (String command : ScenesCommand.commandLine().getSubcommands().keySet()) {
+            for (String flag : new String[] {"--help", "-h"}) {
+                CommandRunner each = new CommandRunner();
+                assertEquals(ExitCodes.OK, each.run(command, flag), command + " " + flag + ": " + each.err());
+                assertTrue(each.out().contains("Usage: scenes " + command), command + " " + flag + ": " + each.out());
+            }
+        }
+    }
+
+    @Test
     void versionNamesTheReleaseAndTheCommitItWasBuiltFrom() throws IOException, InterruptedException {
         assertEquals(ExitCodes.OK, run("--version"));
         String first = cli.out().lines().findFirst().orElse("");
