@@ -150,16 +150,8 @@ final class ProxyCommand implements Callable<Integer> {
                 stopped.countDown();
             }
         };
-        // Ctrl-C and SIGTERM are the documented way to stop: handled here, a clean and complete
-        // shutdown exits 0 (the JVM's default would exit 130/143); the hook covers other exits
-        for (String signal : List.of("INT", "TERM")) {
-            try {
-                sun.misc.Signal.handle(new sun.misc.Signal(signal), s -> new Thread(stop, "scenes-proxy-stop").start());
-            } catch (IllegalArgumentException unavailable) {
-                // no such signal here: the shutdown hook still completes the logs
-            }
-        }
-        Runtime.getRuntime().addShutdownHook(new Thread(stop, "scenes-proxy-shutdown"));
+        // Ctrl-C and SIGTERM are the documented way to stop: a clean and complete shutdown exits 0
+        StopSignals.install("scenes-proxy", stop, stopped);
         // only now "Ctrl-C to stop": a signal from here on is handled
         for (Route route : routes) {
             console.printf("%s: %s:%d -> %s%n", route.kind().name().toLowerCase(Locale.ROOT).replace('_', ' '),

@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
@@ -103,26 +102,8 @@ final class ServerCommand implements Callable<Integer> {
             out.println(line);
             out.flush();
         });
-        // Ctrl-C and SIGTERM end the game like time over: the logs are completed before the JVM exits.
-        Thread hook = new Thread(() -> {
-            series.stop();
-            try {
-                finished.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }, "server-stop");
-        Runtime.getRuntime().addShutdownHook(hook);
-        // Ctrl-C and SIGTERM are how a server is stopped: handled here, the game ends as at time over
-        // and the command exits 0 as the proxy does (the JVM's default would exit 130/143)
-        for (String signal : List.of("INT", "TERM")) {
-            try {
-                sun.misc.Signal.handle(new sun.misc.Signal(signal), s -> new Thread(series::stop, "server-signal").start());
-            } catch (IllegalArgumentException unavailable) {
-                // no such signal here: the shutdown hook still completes the logs
-            }
-        }
-        try {
+        // Ctrl-C and SIGTERM end the game like time over: its logs are completed and the command exits 0
+        try (StopSignals signals = StopSignals.install("scenes-server", series::stop, finished)) {
             series.run(started -> {
                 String game = games == 1 ? "" : String.format(Locale.ROOT, "game %d of %d, ", started[0], games);
                 out.printf(Locale.ROOT, "Serving on UDP %s:%d (%s%s, %d cycles, seed %d)%n", host, started[1], game,
@@ -131,11 +112,6 @@ final class ServerCommand implements Callable<Integer> {
             }, result -> printSummary(out, result), frame -> { });
         } finally {
             finished.countDown();
-        }
-        try {
-            Runtime.getRuntime().removeShutdownHook(hook);
-        } catch (IllegalStateException e) {
-            // shutting down already: the hook is running
         }
         return ExitCodes.OK;
     }

@@ -52,6 +52,11 @@ public final class Engine {
     private GameRecorder recorder;
     private List<String> announcements = List.of();
     private int step;
+    /**
+     * Steps that sent senses so far: the game's and, in real time, those while the server waits
+     * for the teams ({@link #waitingStep}); the sees' clock, so their rhythm runs on into the game.
+     */
+    private int sensings;
     /** Whether {@link #sense} ran for the step not yet {@link #advance}d (what arrives now is logged with its time). */
     private boolean sensed;
     private int stoppage;
@@ -270,29 +275,53 @@ public final class Engine {
      * when this was the step of {@code time_over}, which gets no see.
      */
     public boolean sense() {
-        // A see every send_step (150 ms in normal view, scaled by the view width and halved in low
-        // quality) while steps are simulator_step (100 ms): as many as multiples of the period in the step.
-        long begin = (long) step * params.simulatorStep();
-        long end = begin + params.simulatorStep();
         for (Seat seat : seats()) {
             seat.send(vision.senseBody(seat.player, seat.version));
             for (String announcement : announcements) {
                 seat.send(announcement);
             }
             if (world.mode != PlayMode.TIME_OVER) {
-                int sees = seesDue(seat, begin, end);
-                for (int i = 0; i < sees; i++) {
-                    seat.send(vision.see(seat.player));
-                }
+                sendSees(seat);
             }
         }
         step++;
+        sensings++;
         sensed = true;
         if (world.mode == PlayMode.TIME_OVER) {
             over = true;
             return false;
         }
         return true;
+    }
+
+    /**
+     * A step of real time while the server waits for the teams, as rcssserver's cycles run
+     * from its start on: the clock stays at 0 and nothing moves; every player gets
+     * {@code sense_body} and the sees due, and may send a body command again (the server
+     * executes what arrives now at once, through {@link #executePending}: the kick-off move, a
+     * turn). Not a step of the game: {@link #steps} does not count it. The synchronous server
+     * has none, so its games stay as they were.
+     */
+    public void waitingStep() {
+        for (Seat seat : seats()) {
+            seat.player.acted = false;
+            physics.recover(seat.player);
+            seat.send(vision.senseBody(seat.player, seat.version));
+            sendSees(seat);
+        }
+        sensings++;
+        sensed = true;
+    }
+
+    /** The sees due to the seat in the step now sensed. */
+    private void sendSees(Seat seat) {
+        // A see every send_step (150 ms in normal view, scaled by the view width and halved in low
+        // quality) while steps are simulator_step (100 ms): as many as multiples of the period in the step.
+        long begin = (long) sensings * params.simulatorStep();
+        int sees = seesDue(seat, begin, begin + params.simulatorStep());
+        for (int i = 0; i < sees; i++) {
+            seat.send(vision.see(seat.player));
+        }
     }
 
     private int seesDue(Seat seat, long begin, long end) {
@@ -302,7 +331,7 @@ public final class Engine {
             // counter rises once a step from the step after its connection (or synch_see) and a see goes
             // out when it reaches the width's interval (1, 2, 3 for narrow, normal, wide), then from 0;
             // change_view sets the interval, not the counter, so the server's logs tell which steps see.
-            if (step < seat.seeCountFrom) {
+            if (sensings < seat.seeCountFrom) {
                 return 0;
             }
             int every = player.viewWidth == Player.ViewWidth.NARROW ? 1 : player.viewWidth == Player.ViewWidth.NORMAL
@@ -587,7 +616,7 @@ public final class Engine {
 
     /** The step of the time the command log gives what arrives now. */
     private int loggedStep() {
-        return sensed ? step - 1 : step;
+        return sensed ? sensings - 1 : sensings;
     }
 
     private void log(Seat seat, String message) {

@@ -14,7 +14,8 @@ import org.scenes.internal.gamelog.GameLogWriter;
 /**
  * The server's logs of one game in a directory: the game log ({@code .rcg}) and the command log
  * ({@code .rcl}), named like rcssserver names them once the game is over,
- * {@code LEFT_SCORE-vs-RIGHT_SCORE.rcg} (without the date, so a game repeats to the byte).
+ * {@code LEFT_SCORE-vs-RIGHT_SCORE.rcg} (without the date, so a game repeats to the byte), a side no
+ * player joined as {@code null} ({@code Teal_0-vs-null.rcg}).
  * Nothing appears before {@link #commit}.
  */
 public final class GameRecorder implements AutoCloseable {
@@ -61,17 +62,17 @@ public final class GameRecorder implements AutoCloseable {
 
     /** Completes both logs and gives them their final names; returns the game log and the command log. */
     public List<Path> commit() throws IOException {
-        // Named by the teams and the score at the end, also when the game was stopped before kick-off.
+        // Named by the teams and the score at the end, also when the game was stopped before kick-off;
+        // a side no player joined is "null" without a score, as rcssserver names it (Teal_0-vs-null).
         GameFrame last = engine.frame();
-        String name = team(last.leftTeam()) + "_" + last.scoreLeft() + "-vs-" + team(last.rightTeam()) + "_"
-                + last.scoreRight();
+        String name = side(last.leftTeam(), last.scoreLeft()) + "-vs-" + side(last.rightTeam(), last.scoreRight());
         Path game = rename(gameLog.commit(), directory.resolve(name + ".rcg"));
         Path commands = rename(commandLog.commit(), directory.resolve(name + ".rcl"));
         return List.of(game, commands);
     }
 
-    private static String team(String name) {
-        return name.isEmpty() ? "null" : name;
+    private static String side(String team, int score) {
+        return team.isEmpty() ? "null" : team + "_" + score;
     }
 
     private static Path rename(Path from, Path to) throws IOException {

@@ -40,9 +40,10 @@ public final class SoccerServer implements AutoCloseable {
     private static final long CYCLE_NANOS = 100_000_000L;
     private static final long WAIT_SLICE_NANOS = 50_000_000L;
     /**
-     * When no player joined for this long, the waiting players get a sense_body every cycle, as
-     * the real server keeps its cycles running before kick-off; a quick succession of joins
-     * (and so a deterministic game) gets none.
+     * Synchronous mode: when no player joined for this long, the waiting players get a
+     * sense_body every cycle, so clients that take a long silence for a lost server stay; a
+     * quick succession of joins (and so a deterministic game) gets none. Real time runs its
+     * cycles from the start instead.
      */
     private static final long KEEP_ALIVE_AFTER_NANOS = 2_000_000_000L;
 
@@ -62,6 +63,8 @@ public final class SoccerServer implements AutoCloseable {
     private long lastJoin;
     private int joined;
     private int dropped;
+    /** Real time: when the next cycle starts, from the server's start on. */
+    private long nextCycle;
     private long[] lateness = new long[1024];
     private int latenessCount;
 
@@ -147,6 +150,10 @@ public final class SoccerServer implements AutoCloseable {
 
     /** Serves connections until both teams are there and settled, the teams-wait ran out, or a stop. */
     private void awaitTeams() throws IOException {
+        if (!config.synch()) {
+            awaitTeamsInRealTime();
+            return;
+        }
         long nextKeepAlive = 0;
         while (!stopRequested) {
             long now = System.nanoTime();
@@ -154,16 +161,48 @@ public final class SoccerServer implements AutoCloseable {
                 engine.keepAlive();
                 nextKeepAlive = now + CYCLE_NANOS;
             }
-            boolean bothTeams = engine.team(Side.LEFT) != null && engine.team(Side.RIGHT) != null;
-            if (bothTeams && now - lastJoin >= config.settle().toNanos()) {
-                return;
-            }
-            if (config.teamsWait() != null && joined > 0 && now - firstJoin >= config.teamsWait().toNanos()
-                    && now - lastJoin >= Math.min(config.settle().toNanos(), config.teamsWait().toNanos())) {
+            if (teamsReady(now)) {
                 return;
             }
             pump(Math.min(now + WAIT_SLICE_NANOS, Math.max(nextKeepAlive, now + 1_000_000)), false);
         }
+    }
+
+    /**
+     * Real time: the cycles run from the start, as on rcssserver, with the clock at 0; each
+     * is a waiting step (sense_body, the sees due, a body command again) until, at a cycle's
+     * start, the teams are ready: the game's first step takes that cycle ({@link #nextCycle}).
+     */
+    private void awaitTeamsInRealTime() throws IOException {
+        nextCycle = System.nanoTime();
+        while (!stopRequested) {
+            long now = System.nanoTime();
+            if (now >= nextCycle) {
+                if (teamsReady(now)) {
+                    return;
+                }
+                engine.waitingStep();
+                nextCycle = following(nextCycle, now - nextCycle);
+            }
+            pump(nextCycle, false);
+        }
+    }
+
+    private boolean teamsReady(long now) {
+        boolean bothTeams = engine.team(Side.LEFT) != null && engine.team(Side.RIGHT) != null;
+        if (bothTeams && now - lastJoin >= config.settle().toNanos()) {
+            return true;
+        }
+        return config.teamsWait() != null && joined > 0 && now - firstJoin >= config.teamsWait().toNanos()
+                && now - lastJoin >= Math.min(config.settle().toNanos(), config.teamsWait().toNanos());
+    }
+
+    /**
+     * The start of the cycle after one due at {@code due} that began {@code late} ns late: like a
+     * timer, a cycle that started more than a cycle late is not made up for later.
+     */
+    private static long following(long due, long late) {
+        return due + CYCLE_NANOS + (late > CYCLE_NANOS ? late : 0);
     }
 
     private boolean playSynchronously(Consumer<GameFrame> frames) throws IOException {
@@ -191,18 +230,14 @@ public final class SoccerServer implements AutoCloseable {
     }
 
     private boolean playInRealTime(Consumer<GameFrame> frames) throws IOException {
-        long next = System.nanoTime();
+        long next = nextCycle;
         while (!stopRequested) {
             long late = System.nanoTime() - next;
             recordLateness(late);
-            if (late > CYCLE_NANOS) {
-                // Like a timer, a cycle that started more than a cycle late is not made up for later.
-                next += late;
-            }
             if (!engine.sense()) {
                 return true;
             }
-            next += CYCLE_NANOS;
+            next = following(next, late);
             pump(next, false);
             frames.accept(engine.advance());
         }

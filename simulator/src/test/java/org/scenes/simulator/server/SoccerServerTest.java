@@ -283,6 +283,88 @@ class SoccerServerTest {
         assertTrue(events.contains("A player (Teal 1) left."), events.toString());
     }
 
+    /** The messages {@code client} gets until {@code enough} holds of them, at most {@code limit}. */
+    private static List<String> receiveUntil(RawClient client, java.util.function.Predicate<List<String>> enough,
+                                             int limit) throws IOException {
+        List<String> got = new ArrayList<>();
+        while (got.size() < limit && !enough.test(got)) {
+            String message = client.receive();
+            if (message == null) {
+                break;
+            }
+            got.add(message);
+        }
+        return got;
+    }
+
+    private static long count(List<String> messages, String prefix) {
+        return messages.stream().filter(m -> m.startsWith(prefix)).count();
+    }
+
+    /** Issue 31.6: rcssserver's cycles run before kick-off; a lone player got nothing for 2 s and no see. */
+    @Test
+    void aLonePlayerInRealTimeGetsSenseBodyAndSeesFromItsConnection() throws Exception {
+        start(ServerConfig.defaults().withGame(6000, 1).withRecordDirectory(directory));
+        try (RawClient modern = new RawClient(server.port()); RawClient classic = new RawClient(server.port())) {
+            long began = System.nanoTime();
+            modern.init("(init Teal (version 18))");
+            assertEquals("(ok synch_see)", modern.receive());
+            List<String> first = modern.until("(sense_body", 20);
+            double firstMillis = (System.nanoTime() - began) / 1e6;
+            assertTrue(first.get(first.size() - 1).startsWith("(sense_body 0 "), first.toString());
+            // a cycle is 100 ms; before, the first came 2 s after the last connection
+            assertTrue(firstMillis < 1500, "first sense_body after " + firstMillis + " ms");
+            // synchronous sees in normal view: one at the start of every second cycle, time 0
+            List<String> got = receiveUntil(modern, m -> count(m, "(see ") == 3, 40);
+            assertEquals(3, count(got, "(see 0 "), got.toString());
+            List<String> fromFirstSee = got.subList(got.indexOf(got.stream().filter(m -> m.startsWith("(see "))
+                    .findFirst().orElseThrow()), got.size());
+            assertEquals(List.of("(see", "(sense_body", "(sense_body", "(see", "(sense_body", "(sense_body", "(see"),
+                    fromFirstSee.stream().map(m -> m.substring(0, m.indexOf(' '))).toList(), fromFirstSee.toString());
+
+            // version 9 sees every 150 ms, sent at the cycles' starts: two in every three cycles
+            classic.init("(init Teal (version 9))");
+            List<String> cycles = receiveUntil(classic, m -> count(m, "(sense_body 0 ") == 10, 60);
+            List<String> nine = cycles.subList(cycles.indexOf(cycles.stream().filter(m -> m.startsWith("(sense_body"))
+                    .findFirst().orElseThrow()), cycles.size() - 1);
+            assertEquals(9, count(nine, "(sense_body 0 "), nine.toString());
+            assertEquals(6, count(nine, "(see 0 "), nine.toString());
+        }
+        server.stop();
+        ServerResult result = finish();
+        assertEquals(0, result.steps(), "waiting is no step of the game");
+        // rcssserver's name for a side no player joined: null, without a score
+        assertEquals(List.of("Teal_0-vs-null.rcg", "Teal_0-vs-null.rcl"),
+                result.logs().stream().map(p -> p.getFileName().toString()).toList());
+    }
+
+    /** Issue 31.6: body commands count while waiting, one a cycle as on rcssserver (only the first move did). */
+    @Test
+    void bodyCommandsAreExecutedWhileWaitingInRealTime() throws Exception {
+        start(ServerConfig.defaults().withGame(6000, 1));
+        try (RawClient client = new RawClient(server.port())) {
+            client.init("(init Teal (version 9))");
+            client.send("(move -10 5)");
+            List<String> moved = receiveUntil(client, m -> senseBodyWith(m, "(move 1)"), 50);
+            assertTrue(last(moved).contains("(move 1)"), moved.toString());
+            client.send("(turn 60)");
+            List<String> turned = receiveUntil(client, m -> senseBodyWith(m, "(turn 1)"), 50);
+            assertTrue(last(turned).contains("(turn 1)"), "the turn after the move counts: " + turned);
+            client.send("(move -20 -5)");
+            List<String> got = receiveUntil(client, m -> senseBodyWith(m, "(move 2)"), 50);
+            assertTrue(last(got).contains("(move 2)") && last(got).contains("(turn 1)"), got.toString());
+            assertTrue(last(got).startsWith("(sense_body 0 "), last(got));
+        }
+    }
+
+    private static String last(List<String> messages) {
+        return messages.isEmpty() ? "" : messages.get(messages.size() - 1);
+    }
+
+    private static boolean senseBodyWith(List<String> messages, String count) {
+        return last(messages).startsWith("(sense_body") && last(messages).contains(count);
+    }
+
     @Test
     void aStopEndsTheGameAndCompletesTheLogs() throws Exception {
         start(ServerConfig.defaults().withGame(6000, 1).withRecordDirectory(directory)
@@ -302,5 +384,6 @@ class SoccerServerTest {
         assertTrue(result.stopped());
         assertEquals(2, result.logs().size());
         assertTrue(Files.exists(result.logs().get(1)));
+        assertEquals("Teal_0-vs-null.rcg", result.logs().get(0).getFileName().toString());
     }
 }
