@@ -125,16 +125,28 @@ public final class ImitationTeam {
                 }
             }
         }
-        Recognizer team = recognizers.apply(KnowledgeBase.load(files, transforms));
+        boolean anyMovedInPlay = movedInPlay.isEmpty() || movedInPlay.containsValue(true);
+        Recognizer team = recognizers.apply(placements(KnowledgeBase.load(files, transforms), anyMovedInPlay));
         Map<Integer, Counterpart> counterparts = new TreeMap<>();
         for (Map.Entry<Integer, List<Path>> entry : byUnum.entrySet()) {
             int unum = entry.getKey();
             Recognizer recognizer = knowledge == Knowledge.COUNTERPART
-                    ? recognizers.apply(KnowledgeBase.load(entry.getValue(), transforms)) : null;
+                    ? recognizers.apply(placements(KnowledgeBase.load(entry.getValue(), transforms),
+                            movedInPlay.get(unum))) : null;
             counterparts.put(unum, new Counterpart(unum, goalies.get(unum), recognizer, moves.get(unum),
                     movedInPlay.get(unum), setPlayKicks.get(unum)));
         }
         return new ImitationTeam(team, counterparts, knowledge);
+    }
+
+    /**
+     * The knowledge to match in: without its placements before the kick-off when the recorded
+     * player never placed itself again. The brain places itself from the counterpart's recorded
+     * moves; matched in play, such a scene made a player send {@code move}s that the server ignores
+     * (the real Krislet client places itself once, at time 0).
+     */
+    private static KnowledgeBase placements(KnowledgeBase knowledge, boolean movedInPlay) {
+        return movedInPlay ? knowledge : knowledge.without(scene -> scene.actionType() == ActionType.MOVE);
     }
 
     /**

@@ -124,6 +124,13 @@ class ImitationTeamTest {
         placedOnce.receive("(player_type (id 0))", sent::add);
         assertEquals(List.of("(move -10 0)"), sent, "it still places itself where its teacher did");
         assertFalse(placedOnce.repeatsKickOffMove(), "a placement at time 0 only is not repeated after goals");
+        // nor is it matched in play: a ball 30 m ahead in play is answered by the dash, not the placement
+        sent.clear();
+        placedOnce.receive("(see 60 ((b) 30 0))", sent::add);
+        assertEquals(List.of("(dash 50)"), sent, "the time-0 placement is not in the knowledge matched in play");
+        assertTrue(team.recognizer(2).knowledge().scenes().stream()
+                .anyMatch(scene -> scene.actionType() == org.scenes.api.ActionType.MOVE),
+                "a counterpart that moved in play keeps its moves");
         Brain withoutRoles = new ImitationBrain("Teal", team.recognizer(3), FIRST, List::of, new Random(1));
         assertTrue(withoutRoles.repeatsKickOffMove(), "a brain without roles keeps the runtime's repeat");
     }
