@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.imitation.ImitationTeam;
+import org.scenes.agent.imitation.Viewing;
 import org.scenes.api.PluginRegistry;
 import org.scenes.evaluate.PacedBrain;
 import org.scenes.internal.validate.MatchConfig;
@@ -37,9 +38,8 @@ final class ImitationTeamOptions {
 
     /** The players' brains, paced when asked. */
     BrainFactory brains(ImitationTeam team, MatchConfig config, PluginRegistry registry, ImitationBrain.Guards guards) {
-        return PacedBrain.pace(team.brains(config.selectorFactory(registry), config.transformFactory(registry), guards,
-                config.replay()),
-                thinkSteps);
+        return Viewing.with(PacedBrain.pace(team.brains(config.selectorFactory(registry),
+                config.transformFactory(registry), guards, config.replay()), thinkSteps), config.view());
     }
 
     static final class KnowledgeConverter implements ITypeConverter<ImitationTeam.Knowledge> {

@@ -10,6 +10,7 @@ import java.util.Random;
 import java.util.TreeMap;
 import java.util.function.LongConsumer;
 import org.scenes.agent.imitation.ImitationBrain;
+import org.scenes.agent.imitation.Viewing;
 import org.scenes.api.Scene;
 import org.scenes.simulator.Brain;
 import org.scenes.simulator.BrainFactory;
@@ -205,7 +206,8 @@ public final class Dagger {
                     ShadowLabels labels = new ShadowLabels();
                     players.add(labels);
                     Brain brain = imitation.create(team, random);
-                    if (brain instanceof ImitationBrain imitating) {
+                    ImitationBrain imitating = Viewing.imitation(brain);
+                    if (imitating != null) {
                         imitating.onScene(labels::built);
                     }
                     return labels.imitator(PacedBrain.pace(brain, thinkSteps));

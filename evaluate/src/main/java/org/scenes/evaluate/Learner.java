@@ -13,6 +13,7 @@ import java.util.function.LongConsumer;
 import java.util.stream.Stream;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.imitation.ImitationTeam;
+import org.scenes.agent.imitation.Viewing;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.ActionType;
 import org.scenes.api.Grid;
@@ -23,6 +24,7 @@ import org.scenes.api.SceneTransform;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
+import org.scenes.internal.protocol.ViewWidth;
 import org.scenes.internal.target.Replay;
 import org.scenes.internal.validate.MatchConfig;
 import org.scenes.simulator.Brain;
@@ -60,10 +62,21 @@ public final class Learner {
         }
     }
 
-    /** How to match: the metric, k, selector and transforms, as made from a configuration. */
+    /**
+     * How to match: the metric, k, selector and transforms, as made from a configuration, how the
+     * chosen action is carried out and the view the players ask for (null: the server's).
+     */
     public record Matching(java.util.function.Supplier<SceneMetric> metric, int k,
                            java.util.function.Supplier<ActionSelector> selector,
-                           java.util.function.Supplier<List<SceneTransform>> transforms, Replay replay) {
+                           java.util.function.Supplier<List<SceneTransform>> transforms, Replay replay,
+                           ViewWidth view) {
+        /** Matching on the server's view. */
+        public Matching(java.util.function.Supplier<SceneMetric> metric, int k,
+                        java.util.function.Supplier<ActionSelector> selector,
+                        java.util.function.Supplier<List<SceneTransform>> transforms, Replay replay) {
+            this(metric, k, selector, transforms, replay, null);
+        }
+
         /** Matching that sends the recorded commands as they are. */
         public Matching(java.util.function.Supplier<SceneMetric> metric, int k,
                         java.util.function.Supplier<ActionSelector> selector,
@@ -80,7 +93,7 @@ public final class Learner {
         public static Matching of(MatchConfig config, PluginRegistry registry) {
             config.check(registry);
             return new Matching(config.metricFactory(registry), config.k(), config.selectorFactory(registry),
-                    config.transformFactory(registry), config.replay());
+                    config.transformFactory(registry), config.replay(), config.view());
         }
     }
 
@@ -130,8 +143,8 @@ public final class Learner {
         // one pass over the scenes: a knowledge base decodes each on every read
         boolean moved = teacherMoved(all);
         KnowledgeBase knowledge = moved ? all : withoutPlacements(all);
-        BrainFactory brains = ImitationBrain.factory(matching.recognizer(knowledge), matching.selector(),
-                matching.transforms(), ImitationBrain.Guards.OFF, matching.replay());
+        BrainFactory brains = Viewing.with(ImitationBrain.factory(matching.recognizer(knowledge), matching.selector(),
+                matching.transforms(), ImitationBrain.Guards.OFF, matching.replay()), matching.view());
         return new Imitator(moved ? brains : withoutKickOffRepeats(brains), knowledge, null, matching);
     }
 
@@ -145,8 +158,8 @@ public final class Learner {
     }
 
     private static Imitator of(ImitationTeam team, Matching matching) {
-        return new Imitator(team.brains(matching.selector(), matching.transforms(), ImitationBrain.Guards.OFF,
-                matching.replay()), team.knowledge(), team, matching);
+        return new Imitator(Viewing.with(team.brains(matching.selector(), matching.transforms(),
+                ImitationBrain.Guards.OFF, matching.replay()), matching.view()), team.knowledge(), team, matching);
     }
 
     /**

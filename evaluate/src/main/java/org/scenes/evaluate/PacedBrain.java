@@ -65,6 +65,11 @@ public final class PacedBrain implements Brain {
     }
 
     @Override
+    public java.util.Map<String, Long> counters() {
+        return inner.counters();
+    }
+
+    @Override
     public void receive(String message, Consumer<String> send) {
         if (message.startsWith("(see ")) {
             latestSee = message;

@@ -1,5 +1,6 @@
 package org.scenes.simulator;
 
+import java.util.Map;
 import java.util.function.Consumer;
 
 /**
@@ -22,5 +23,10 @@ public interface Brain {
      */
     default boolean repeatsKickOffMove() {
         return true;
+    }
+
+    /** What the brain counts of itself, by name, for the runtime's report (an imitator: decisions, guards). */
+    default Map<String, Long> counters() {
+        return Map.of();
     }
 }

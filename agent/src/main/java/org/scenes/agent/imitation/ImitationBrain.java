@@ -410,7 +410,7 @@ public final class ImitationBrain implements Brain {
         return silent;
     }
 
-    /** What this brain counts of itself, by name, for the runtime's report. */
+    @Override
     public java.util.Map<String, Long> counters() {
         java.util.Map<String, Long> counters = new java.util.LinkedHashMap<>();
         counters.put("decisions", decisions);

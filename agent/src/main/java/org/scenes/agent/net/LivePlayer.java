@@ -11,7 +11,6 @@ import java.util.TreeMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
-import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.net.Connection.Datagram;
 import org.scenes.agent.net.PlayerReport.Outcome;
 import org.scenes.internal.protocol.Hear;
@@ -445,7 +444,7 @@ public final class LivePlayer implements Runnable {
     }
 
     private PlayerReport report(Outcome outcome, String reason) {
-        Map<String, Long> counters = brain instanceof ImitationBrain imitation ? imitation.counters() : Map.of();
+        Map<String, Long> counters = brain.counters();
         return new PlayerReport(options.team(), unum, side, outcome, reason, cycles, due, missed, times.count(),
                 times.meanMillis(), times.percentileMillis(99), times.maxMillis(), thinks, commands, errors,
                 malformed, counters);

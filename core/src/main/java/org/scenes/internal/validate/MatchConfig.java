@@ -15,6 +15,7 @@ import org.scenes.api.SceneMetric;
 import org.scenes.api.SceneTransform;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
+import org.scenes.internal.protocol.ViewWidth;
 import org.scenes.internal.target.Replay;
 
 /**
@@ -31,13 +32,23 @@ import org.scenes.internal.target.Replay;
  * @param transforms scene transforms applied to every scene sequence, in order
  * @param seed seed of every random choice
  * @param replay how the chosen scene's action is carried out: as recorded, or as its target
+ * @param view the view width a playing imitator asks for (with synchronous vision on a synchronous
+ *             server), or null to keep the server's
  */
 public record MatchConfig(String metric, Map<String, String> metricOptions, ObjectWeights objectWeights,
                           ActionWeights actionWeights, int k, String selector, Map<String, String> selectorOptions,
-                          List<String> transforms, long seed, Replay replay) {
+                          List<String> transforms, long seed, Replay replay, ViewWidth view) {
 
     public static final MatchConfig DEFAULT = new MatchConfig("ball-goal", Map.of(), ObjectWeights.DEFAULT,
-            ActionWeights.DEFAULT, 1, "first-valid", Map.of(), List.of(), 1L, Replay.RAW);
+            ActionWeights.DEFAULT, 1, "first-valid", Map.of(), List.of(), 1L, Replay.RAW, null);
+
+    /** A configuration that keeps the server's view. */
+    public MatchConfig(String metric, Map<String, String> metricOptions, ObjectWeights objectWeights,
+                       ActionWeights actionWeights, int k, String selector, Map<String, String> selectorOptions,
+                       List<String> transforms, long seed, Replay replay) {
+        this(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, transforms, seed,
+                replay, null);
+    }
 
     /** A configuration replaying recorded commands as they are. */
     public MatchConfig(String metric, Map<String, String> metricOptions, ObjectWeights objectWeights,
@@ -58,7 +69,7 @@ public record MatchConfig(String metric, Map<String, String> metricOptions, Obje
     }
 
     public MatchConfig withMetric(String name, Map<String, String> options) {
-        return new MatchConfig(name, options, objectWeights, actionWeights, k, selector, selectorOptions, transforms, seed, replay);
+        return new MatchConfig(name, options, objectWeights, actionWeights, k, selector, selectorOptions, transforms, seed, replay, view);
     }
 
     /** The same metric with one option set to {@code value}, or left out when {@code value} is null. */
@@ -73,32 +84,37 @@ public record MatchConfig(String metric, Map<String, String> metricOptions, Obje
     }
 
     public MatchConfig withObjectWeights(ObjectWeights weights) {
-        return new MatchConfig(metric, metricOptions, weights, actionWeights, k, selector, selectorOptions, transforms, seed, replay);
+        return new MatchConfig(metric, metricOptions, weights, actionWeights, k, selector, selectorOptions, transforms, seed, replay, view);
     }
 
     public MatchConfig withActionWeights(ActionWeights weights) {
-        return new MatchConfig(metric, metricOptions, objectWeights, weights, k, selector, selectorOptions, transforms, seed, replay);
+        return new MatchConfig(metric, metricOptions, objectWeights, weights, k, selector, selectorOptions, transforms, seed, replay, view);
     }
 
     public MatchConfig withK(int newK) {
-        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, newK, selector, selectorOptions, transforms, seed, replay);
+        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, newK, selector, selectorOptions, transforms, seed, replay, view);
     }
 
     public MatchConfig withSelector(String name, Map<String, String> options) {
-        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, name, options, transforms, seed, replay);
+        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, name, options, transforms, seed, replay, view);
     }
 
     public MatchConfig withTransforms(List<String> names) {
-        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, names, seed, replay);
+        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, names, seed, replay, view);
     }
 
     public MatchConfig withSeed(long newSeed) {
-        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, transforms, newSeed, replay);
+        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, transforms, newSeed, replay, view);
     }
 
     public MatchConfig withReplay(Replay newReplay) {
         return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, transforms, seed,
-                newReplay);
+                newReplay, view);
+    }
+
+    public MatchConfig withView(ViewWidth newView) {
+        return new MatchConfig(metric, metricOptions, objectWeights, actionWeights, k, selector, selectorOptions, transforms, seed,
+                replay, newView);
     }
 
     private PluginConfig base() {

@@ -19,6 +19,7 @@ import org.scenes.api.ActionWeights;
 import org.scenes.api.ObjectWeights;
 import org.scenes.internal.files.AtomicOutput;
 import org.scenes.internal.files.Inputs;
+import org.scenes.internal.protocol.ViewWidth;
 import org.scenes.internal.target.Replay;
 
 /**
@@ -31,7 +32,7 @@ public final class MatchConfigFile {
 
     /** The keys a configuration may hold; {@code crossValidation} is what tune writes beside them. */
     public static final List<String> KEYS = List.of("metric", "options", "objectWeights", "actionWeights", "k",
-            "selector", "selectorOptions", "transforms", "seed", "replay", "crossValidation");
+            "selector", "selectorOptions", "transforms", "seed", "replay", "view", "crossValidation");
 
     /** A configuration file that cannot be read; the message starts with the file's name. */
     public static final class InvalidException extends RuntimeException {
@@ -73,6 +74,9 @@ public final class MatchConfigFile {
         map.put("transforms", config.transforms());
         map.put("seed", config.seed());
         map.put("replay", config.replay().key());
+        if (config.view() != null) {
+            map.put("view", config.view().key());
+        }
         return map;
     }
 
@@ -116,7 +120,8 @@ public final class MatchConfigFile {
                     strings(file, root, "selectorOptions"),
                     list(file, root, "transforms"),
                     integer(file, root, "seed", base.seed(), Long.MIN_VALUE, Long.MAX_VALUE),
-                    Replay.parse(text(file, root, "replay", base.replay().key())));
+                    Replay.parse(text(file, root, "replay", base.replay().key())),
+                    root.hasNonNull("view") ? ViewWidth.parse(text(file, root, "view", "")) : base.view());
         } catch (IllegalArgumentException e) {
             throw new InvalidException(file + ": " + e.getMessage());
         }

@@ -16,6 +16,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.api.ActionWeights;
 import org.scenes.api.ObjectWeights;
+import org.scenes.internal.protocol.ViewWidth;
+import org.scenes.internal.target.Replay;
 
 class MatchConfigFileTest {
     @TempDir
@@ -24,7 +26,8 @@ class MatchConfigFileTest {
     private static MatchConfig tuned() {
         return new MatchConfig("continuous", Map.of("row-weight", "0.5", "metric", "euclidean"),
                 ObjectWeights.parse("1/0/0.5/1/0/1/2/1"), ActionWeights.parse("kick=2,turn_neck=0"), 5,
-                "vote", Map.of("params", "average"), List.of("mirror", "memory"), 42L);
+                "vote", Map.of("params", "average"), List.of("mirror", "memory"), 42L)
+                .withReplay(Replay.TARGET).withView(ViewWidth.NARROW);
     }
 
     @Test
@@ -37,6 +40,7 @@ class MatchConfigFileTest {
         assertEquals(tuned(), MatchConfigFile.read(file));
         MatchConfigFile.write(file, MatchConfig.DEFAULT, Map.of());
         assertEquals(MatchConfig.DEFAULT, MatchConfigFile.read(file));
+        assertTrue(!Files.readString(file).contains("\"view\""), "no view written when the server's is kept");
     }
 
     @Test
@@ -74,6 +78,9 @@ class MatchConfigFileTest {
         Files.writeString(file, "{\"k\": 0}", StandardCharsets.UTF_8);
         error = assertThrows(MatchConfigFile.InvalidException.class, () -> MatchConfigFile.read(file));
         assertEquals(file + ": k must be at least 1, not 0", error.getMessage());
+        Files.writeString(file, "{\"view\": \"tiny\"}", StandardCharsets.UTF_8);
+        error = assertThrows(MatchConfigFile.InvalidException.class, () -> MatchConfigFile.read(file));
+        assertEquals(file + ": unknown view 'tiny': use one of narrow, normal, wide", error.getMessage());
         Path missing = dir.resolve("missing.json");
         error = assertThrows(MatchConfigFile.InvalidException.class, () -> MatchConfigFile.read(missing));
         assertEquals(missing + ": no such configuration file", error.getMessage());

@@ -1,0 +1,37 @@
+package org.scenes.internal.protocol;
+
+import java.util.Arrays;
+import java.util.Locale;
+import java.util.stream.Collectors;
+
+/**
+ * The view widths of {@code (change_view WIDTH)}: narrow (60°), normal (120°) and wide (180°). On
+ * synchronous vision ({@code (synch_see)}) a narrow view sees every step, a normal one every second
+ * and a wide one every third.
+ */
+public enum ViewWidth {
+    NARROW, NORMAL, WIDE;
+
+    /** The protocol's name, also the one in configuration files. */
+    public String key() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    /** The command that asks the server for this width (the quality stays high). */
+    public String command() {
+        return "(change_view " + key() + ")";
+    }
+
+    /**
+     * @throws IllegalArgumentException naming the accepted values
+     */
+    public static ViewWidth parse(String text) {
+        for (ViewWidth width : values()) {
+            if (width.key().equals(text)) {
+                return width;
+            }
+        }
+        throw new IllegalArgumentException("unknown view '" + text + "': use one of "
+                + Arrays.stream(values()).map(ViewWidth::key).collect(Collectors.joining(", ")));
+    }
+}
