@@ -81,9 +81,6 @@ public final class ImitationBrain implements Brain {
     /** the play mode of the latest decision, and the cycle it began */
     private String playMode = "";
     private int playModeSince;
-    /** play modes begun so far (several may begin in one cycle: goal, then kick-off), and the one of the last matched move */
-    private int playModes;
-    private int movedInMode = -1;
     /** The counterpart's recorded kick-off moves: empty without a counterpart or moves. */
     private List<Action> counterpartMoves = List.of();
     private boolean counterpartMovedInPlay;
@@ -311,15 +308,6 @@ public final class ImitationBrain implements Brain {
             // another player's kick-off spot: take the counterpart's own
             action = counterpartMoves.get(0);
         }
-        if (action != null && action.type() == ActionType.MOVE && seen.world() != null) {
-            if (movedInMode == playModes) {
-                // placed already in this stop of play: a teacher places itself once per stop, and
-                // a view of every step would otherwise match its placement again at every step
-                action = nearestOther(nearest, candidate -> candidate.type() != ActionType.MOVE);
-            } else {
-                movedInMode = playModes;
-            }
-        }
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
@@ -346,7 +334,6 @@ public final class ImitationBrain implements Brain {
         if (!own.playMode().equals(playMode)) {
             playMode = own.playMode();
             playModeSince = seen.cycle();
-            playModes++;
         }
         boolean atBall = own.located() && own.ballKnown()
                 && Math.hypot(own.ballX() - own.x(), own.ballY() - own.y()) <= kickable;

@@ -65,29 +65,6 @@ class ImitationBrainTest {
     }
 
     @Test
-    void aPlayerPlacesItselfOnceInAStopOfPlayThoughEveryViewMatchesThePlacement() {
-        org.scenes.api.Observer me = new org.scenes.api.Observer("Teal", org.scenes.api.Side.LEFT, 2);
-        SeenObject ball = SeenObject.simple(ObjectKind.BALL, "b", org.scenes.api.Relation.NONE, 20, 0, Grid.DEFAULT);
-        SeenObject farther = SeenObject.simple(ObjectKind.BALL, "b", org.scenes.api.Relation.NONE, 22, 0, Grid.DEFAULT);
-        KnowledgeBase knowledge = KnowledgeBase.of(Grid.DEFAULT, List.of(
-                new Scene(0, me, List.of(ball), List.of(org.scenes.api.Action.move(-10, 5)), null, 0),
-                new Scene(1, me, List.of(farther), List.of(org.scenes.api.Action.turn(30)), null, 0)));
-        ImitationBrain brain = new ImitationBrain("Teal", new Recognizer(knowledge, () -> BALL, 2), FIRST, List::of,
-                new Random(1));
-        List<String> sent = new ArrayList<>();
-        brain.receive("(init l 2 before_kick_off)", s -> { });
-        brain.receive("(see 0 ((b) 20 0))", sent::add);
-        brain.receive("(see 0 ((b) 20 0))", sent::add);
-        brain.receive("(see 0 ((b) 20 0))", sent::add);
-        assertEquals(List.of("(move -10 5)", "(turn 30)", "(turn 30)"), sent, "the placement once, then the next neighbour");
-        sent.clear();
-        brain.receive("(hear 0 referee goal_l_1)", s -> { });
-        brain.receive("(see 0 ((b) 20 0))", sent::add);
-        brain.receive("(see 0 ((b) 20 0))", sent::add);
-        assertEquals(List.of("(move -10 5)", "(turn 30)"), sent, "a new stop of play: placed again, once");
-    }
-
-    @Test
     void answersASeeWithTheNearestScenesAction() throws IOException {
         KnowledgeBase knowledge = learn();
         ImitationBrain brain = new ImitationBrain("Teal", new Recognizer(knowledge, () -> BALL, 1), FIRST, List::of,
