@@ -41,19 +41,32 @@ public final class Destinations {
     /** A neighbour that stood this near the deciding player lends its end point, a farther one its displacement. */
     static final double NEAR = 10;
 
+    /**
+     * A neighbour that stood this near its ball, when the deciding player knows its own, lends its
+     * end point relative to its ball, placed at the deciding player's ball: near the ball a
+     * player's run answers the ball (pressing, covering), not a spot of the pitch.
+     */
+    static final double BALL_NEAR = 8;
+
     /** where each scene's player stood, and where it was {@link #AHEAD} cycles later (NaN: unknown) */
     private final double[] fromX;
     private final double[] fromY;
     private final double[] x;
     private final double[] y;
+    /** where each scene's player believed the ball was (NaN: unknown) */
+    private final double[] ballX;
+    private final double[] ballY;
     /** whether the player reached the ball on the way: it ran to the ball, wherever that was */
     private final boolean[] toBall;
 
-    private Destinations(double[] fromX, double[] fromY, double[] x, double[] y, boolean[] toBall) {
+    private Destinations(double[] fromX, double[] fromY, double[] x, double[] y, double[] ballX, double[] ballY,
+                         boolean[] toBall) {
         this.fromX = fromX;
         this.fromY = fromY;
         this.x = x;
         this.y = y;
+        this.ballX = ballX;
+        this.ballY = ballY;
         this.toBall = toBall;
     }
 
@@ -94,8 +107,9 @@ public final class Destinations {
             moved[i] = scene.actionType() == ActionType.MOVE;
             atX[i] = world == null ? Double.NaN : world.x();
             atY[i] = world == null ? Double.NaN : world.y();
-            ballX[i] = world == null ? Double.NaN : world.ballX();
-            ballY[i] = world == null ? Double.NaN : world.ballY();
+            boolean ball = world != null && world.ballKnown();
+            ballX[i] = ball ? world.ballX() : Double.NaN;
+            ballY[i] = ball ? world.ballY() : Double.NaN;
             i++;
         }
         double[] x = new double[n];
@@ -127,14 +141,16 @@ public final class Destinations {
             }
             toBall[i] = placed && reachedBall;
         }
-        return new Destinations(atX, atY, x, y, toBall);
+        return new Destinations(atX, atY, x, y, ballX, ballY, toBall);
     }
 
     /**
      * Where to run for these neighbours, from {@code own}'s position: when most of those with a
      * destination ran to the ball (reached it within {@link #CHASE} cycles), {@code ball} (where
      * the deciding player can reach its own ball, null when it does not know one); else the mean
-     * of their end points (those within {@link #NEAR} metres) and of their displacements from its
+     * of their end points relative to their ball placed at the player's own (those within
+     * {@link #BALL_NEAR} metres of their ball, when the player knows its ball), their end points
+     * (those within {@link #NEAR} metres of the player) and their displacements from its
      * position (the others); null when none has one or the player's
      * position is unknown. (A neighbour found as a transform's image, such as a mirrored scene,
      * counts as its stored scene.)
@@ -155,12 +171,20 @@ public final class Destinations {
         double sumY = 0;
         int count = 0;
         int ballRuns = 0;
+        boolean ownBall = own.ballKnown();
         for (Neighbour neighbour : nearest) {
             int i = neighbour.index();
             if (i >= 0 && i < x.length && !Double.isNaN(x[i])) {
-                boolean near = Math.hypot(fromX[i] - own.x(), fromY[i] - own.y()) <= NEAR;
-                sumX += near ? x[i] : own.x() + x[i] - fromX[i];
-                sumY += near ? y[i] : own.y() + y[i] - fromY[i];
+                if (ownBall && Math.hypot(fromX[i] - ballX[i], fromY[i] - ballY[i]) <= BALL_NEAR) {
+                    sumX += own.ballX() + x[i] - ballX[i];
+                    sumY += own.ballY() + y[i] - ballY[i];
+                } else if (Math.hypot(fromX[i] - own.x(), fromY[i] - own.y()) <= NEAR) {
+                    sumX += x[i];
+                    sumY += y[i];
+                } else {
+                    sumX += own.x() + x[i] - fromX[i];
+                    sumY += own.y() + y[i] - fromY[i];
+                }
                 count++;
                 if (toBall[i]) {
                     ballRuns++;

@@ -58,6 +58,22 @@ class DestinationsTest {
     }
 
     @Test
+    void aNeighbourNearItsBallLendsItsEndPointRelativeToTheBallPlacedAtTheOwnBall() {
+        // a player 5 m behind its ball at (5, 0) runs along x to (10, 0): 5 m past where the ball was
+        List<Scene> scenes = new ArrayList<>();
+        for (int t = 0; t < 20; t++) {
+            scenes.add(at(SEVEN, t, t, 0, 5, 0, "play_on", Action.dash(100)));
+        }
+        Destinations destinations = Destinations.of(scenes);
+        // the deciding player near the neighbour, its ball at (-20, 10): the run answers the ball
+        World here = at(SEVEN, 0, 3, 4, -20, 10, "play_on", Action.dash(100)).world();
+        assertArrayEquals(new double[] {-15, 10}, destinations.target(List.of(neighbour(0)), here, null), 1e-9);
+        // without a ball of its own: the end point, as for any near neighbour
+        World blind = at(SEVEN, 0, 3, 4, Double.NaN, Double.NaN, "play_on", Action.dash(100)).world();
+        assertArrayEquals(new double[] {10, 0}, destinations.target(List.of(neighbour(0)), blind, null), 1e-9);
+    }
+
+    @Test
     void labelsAddedToAKnowledgeBaseLendNoDestinationAndTakeNoneFromThePlayedScenes() {
         List<Scene> played = run(SEVEN, 20, 0, 0);
         // the imitator's scenes labelled by its shadow: a run on, as if played after the recorded one
