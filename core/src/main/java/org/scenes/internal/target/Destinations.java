@@ -197,6 +197,6 @@ public final class Destinations {
         if (steering.chase(ballRuns / (double) count) && ball != null) {
             return ball;
         }
-        return new double[] {sumX / count, sumY / count};
+        return steering.spot(new double[] {sumX / count, sumY / count});
     }
 }

@@ -74,6 +74,23 @@ class DestinationsTest {
     }
 
     @Test
+    void aPlayerThatRemembersFollowsAMovingAverageOfItsNeighboursDestinations() {
+        List<Scene> scenes = new ArrayList<>(run(SEVEN, 20, 0, 0));
+        scenes.addAll(run(EIGHT, 20, 0, 6));
+        Destinations destinations = Destinations.of(scenes);
+        World here = at(SEVEN, 0, 3, 3, 40, 30, "play_on", Action.dash(100)).world();
+        Steering steering = new Steering();
+        // neighbours whose end points alternate between (10, 0) and (10, 6): the spot moves part way
+        assertArrayEquals(new double[] {10, 0}, destinations.target(List.of(neighbour(0)), here, null, steering), 1e-9);
+        double[] next = destinations.target(List.of(neighbour(20)), here, null, steering);
+        assertArrayEquals(new double[] {10, 6 * Steering.NEW_DESTINATION}, next, 1e-9);
+        double[] back = destinations.target(List.of(neighbour(0)), here, null, steering);
+        assertEquals(6 * Steering.NEW_DESTINATION * (1 - Steering.NEW_DESTINATION), back[1], 1e-9);
+        // a player that does not remember takes each mean as it is
+        assertArrayEquals(new double[] {10, 6}, destinations.target(List.of(neighbour(20)), here, null), 1e-9);
+    }
+
+    @Test
     void labelsAddedToAKnowledgeBaseLendNoDestinationAndTakeNoneFromThePlayedScenes() {
         List<Scene> played = run(SEVEN, 20, 0, 0);
         // the imitator's scenes labelled by its shadow: a run on, as if played after the recorded one
@@ -170,7 +187,11 @@ class DestinationsTest {
         assertArrayEquals(ball, destinations.target(twoOfThree, here, ball, steering), 1e-9);
         // but keeps one going, until fewer than a third ran to the ball
         assertArrayEquals(ball, destinations.target(oneOfTwo, here, ball, steering), 1e-9);
-        assertNotEquals(ball[0], destinations.target(oneOfFour, here, ball, steering)[0]);
-        assertArrayEquals(new double[] {10, 5}, destinations.target(oneOfTwo, here, ball, steering), 1e-9);
+        double[] spot = destinations.target(oneOfFour, here, ball, steering);
+        assertNotEquals(ball[0], spot[0]);
+        // a spot again: the moving average from the first spot after the chase, towards (10, 5)
+        double[] next = destinations.target(oneOfTwo, here, ball, steering);
+        assertArrayEquals(new double[] {spot[0] + Steering.NEW_DESTINATION * (10 - spot[0]),
+            spot[1] + Steering.NEW_DESTINATION * (5 - spot[1])}, next, 1e-9);
     }
 }
