@@ -91,6 +91,30 @@ class DestinationsTest {
     }
 
     @Test
+    void theTeachersOwnChaseRateAtThatDistanceDecidesWhereEnoughOfItsScenesStoodSo() {
+        // forty recorded players, each 2.5 m behind a still ball, ran through it; one ran on far from its ball
+        List<Scene> scenes = new ArrayList<>();
+        for (int p = 0; p < 40; p++) {
+            Observer player = new Observer("T" + p, Side.LEFT, 7);
+            for (int t = 0; t < 12; t++) { // a destination for the scenes of cycles 0 and 1 only
+                scenes.add(at(player, t, t, 3 * p - 60, 2.5, 3 * p - 60, "play_on", Action.dash(100)));
+            }
+        }
+        scenes.addAll(run(EIGHT, 20, 0, 10));
+        Destinations destinations = Destinations.of(scenes);
+        assertEquals(1.0, destinations.chaseRate(2.2, true), 1e-9, "all forty at 2-3 m reached their ball");
+        assertEquals(Double.NaN, destinations.chaseRate(2.2, false), "no scene of a player with a teammate nearer");
+        assertEquals(Double.NaN, destinations.chaseRate(45, true), "one run is too few to tell");
+        // a neighbour that ran on without the ball: the rate, not the neighbour, sends the player to its ball
+        World here = at(SEVEN, 0, 0, 10, 2, 11, "play_on", Action.dash(100)).world();
+        double[] ball = {2, 11};
+        assertArrayEquals(ball, destinations.target(List.of(neighbour(480)), here, ball, new Steering()), 1e-9);
+        World far = at(SEVEN, 0, 0, 10, 40, 30, "play_on", Action.dash(100)).world();
+        assertArrayEquals(new double[] {10, 10}, destinations.target(List.of(neighbour(480)), far, ball, new Steering()),
+                1e-9, "no rate that far: the neighbours' share");
+    }
+
+    @Test
     void labelsAddedToAKnowledgeBaseLendNoDestinationAndTakeNoneFromThePlayedScenes() {
         List<Scene> played = run(SEVEN, 20, 0, 0);
         // the imitator's scenes labelled by its shadow: a run on, as if played after the recorded one
