@@ -95,4 +95,23 @@ public record World(double x, double y, double body, double neck, double vx, dou
     public boolean ballKnown() {
         return !Double.isNaN(ballX);
     }
+
+    /**
+     * Whether the player believes itself its team's nearest to the ball: it knows where it and the
+     * ball are and no teammate it knows of stands nearer the ball.
+     *
+     * @return false when its own or the ball's position is unknown
+     */
+    public boolean nearestOfItsTeamToBall() {
+        if (!located() || !ballKnown()) {
+            return false;
+        }
+        double own = Math.hypot(ballX - x, ballY - y);
+        for (Player player : players) {
+            if (player.relation() == Relation.TEAMMATE && Math.hypot(ballX - player.x(), ballY - player.y()) < own) {
+                return false;
+            }
+        }
+        return true;
+    }
 }

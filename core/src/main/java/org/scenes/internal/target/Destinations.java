@@ -41,20 +41,47 @@ public final class Destinations {
     /** A neighbour that stood this near the deciding player lends its end point, a farther one its displacement. */
     static final double NEAR = 10;
 
+    /**
+     * A neighbour that stood this near its ball, when the deciding player knows its own, lends its
+     * end point relative to its ball, placed at the deciding player's ball: near the ball a
+     * player's run answers the ball (pressing, covering), not a spot of the pitch.
+     */
+    static final double BALL_NEAR = 8;
+
+    /** Width of the distance bins of {@link #chaseRate}, metres. */
+    static final double CHASE_BIN = 1;
+    /** Bins of {@link #chaseRate}; the last holds every farther distance. */
+    static final int CHASE_BINS = 40;
+    /** Scenes a bin needs before its rate is trusted over the neighbours' share. */
+    static final int CHASE_SAMPLES = 30;
+
     /** where each scene's player stood, and where it was {@link #AHEAD} cycles later (NaN: unknown) */
     private final double[] fromX;
     private final double[] fromY;
     private final double[] x;
     private final double[] y;
+    /** where each scene's player believed the ball was (NaN: unknown) */
+    private final double[] ballX;
+    private final double[] ballY;
     /** whether the player reached the ball on the way: it ran to the ball, wherever that was */
     private final boolean[] toBall;
+    /**
+     * How often the recorded players reached the ball within {@link #CHASE} cycles, by their
+     * distance to it ({@link #CHASE_BIN} bins) and whether they were their team's nearest to it
+     * (index 1): NaN for a bin of fewer than {@link #CHASE_SAMPLES} scenes.
+     */
+    private final double[][] chaseRate;
 
-    private Destinations(double[] fromX, double[] fromY, double[] x, double[] y, boolean[] toBall) {
+    private Destinations(double[] fromX, double[] fromY, double[] x, double[] y, double[] ballX, double[] ballY,
+                         boolean[] toBall, double[][] chaseRate) {
         this.fromX = fromX;
         this.fromY = fromY;
         this.x = x;
         this.y = y;
+        this.ballX = ballX;
+        this.ballY = ballY;
         this.toBall = toBall;
+        this.chaseRate = chaseRate;
     }
 
     /** The destinations of a knowledge base's scenes, computed once per knowledge base. */
@@ -85,6 +112,7 @@ public final class Destinations {
         double[] atY = new double[n];
         double[] ballX = new double[n];
         double[] ballY = new double[n];
+        boolean[] nearest = new boolean[n];
         int i = 0;
         for (Scene scene : scenes) {
             World world = scene.world();
@@ -94,8 +122,10 @@ public final class Destinations {
             moved[i] = scene.actionType() == ActionType.MOVE;
             atX[i] = world == null ? Double.NaN : world.x();
             atY[i] = world == null ? Double.NaN : world.y();
-            ballX[i] = world == null ? Double.NaN : world.ballX();
-            ballY[i] = world == null ? Double.NaN : world.ballY();
+            boolean ball = world != null && world.ballKnown();
+            ballX[i] = ball ? world.ballX() : Double.NaN;
+            ballY[i] = ball ? world.ballY() : Double.NaN;
+            nearest[i] = world != null && world.nearestOfItsTeamToBall();
             i++;
         }
         double[] x = new double[n];
@@ -127,14 +157,54 @@ public final class Destinations {
             }
             toBall[i] = placed && reachedBall;
         }
-        return new Destinations(atX, atY, x, y, toBall);
+        return new Destinations(atX, atY, x, y, ballX, ballY, toBall, chaseRates(x, atX, atY, ballX, ballY, nearest,
+                toBall));
+    }
+
+    private static int chaseBin(double distance) {
+        return (int) Math.min(CHASE_BINS - 1, Math.floor(distance / CHASE_BIN));
+    }
+
+    private static double[][] chaseRates(double[] x, double[] atX, double[] atY, double[] ballX, double[] ballY,
+                                         boolean[] nearest, boolean[] toBall) {
+        int[][] runs = new int[2][CHASE_BINS];
+        int[][] all = new int[2][CHASE_BINS];
+        for (int i = 0; i < x.length; i++) {
+            double distance = Math.hypot(ballX[i] - atX[i], ballY[i] - atY[i]);
+            if (Double.isNaN(x[i]) || Double.isNaN(distance)) {
+                continue;
+            }
+            int flag = nearest[i] ? 1 : 0;
+            int bin = chaseBin(distance);
+            all[flag][bin]++;
+            runs[flag][bin] += toBall[i] ? 1 : 0;
+        }
+        double[][] rates = new double[2][CHASE_BINS];
+        for (int flag = 0; flag < 2; flag++) {
+            for (int bin = 0; bin < CHASE_BINS; bin++) {
+                rates[flag][bin] = all[flag][bin] < CHASE_SAMPLES ? Double.NaN : runs[flag][bin] / (double) all[flag][bin];
+            }
+        }
+        return rates;
+    }
+
+    /**
+     * How often the recorded players at this distance from their ball, their team's nearest to it
+     * or not, reached it within {@link #CHASE} cycles; NaN when too few stood so.
+     */
+    double chaseRate(double ballDistance, boolean nearestOfItsTeam) {
+        return Double.isNaN(ballDistance) ? Double.NaN : chaseRate[nearestOfItsTeam ? 1 : 0][chaseBin(ballDistance)];
     }
 
     /**
      * Where to run for these neighbours, from {@code own}'s position: when most of those with a
-     * destination ran to the ball (reached it within {@link #CHASE} cycles), {@code ball} (where
+     * destination ran to the ball (reached it within {@link #CHASE} cycles), or, where enough
+     * recorded scenes stood at the player's distance from its ball with the same answer to "my
+     * team's nearest to it?", most of those ({@link #chaseRate}), {@code ball} (where
      * the deciding player can reach its own ball, null when it does not know one); else the mean
-     * of their end points (those within {@link #NEAR} metres) and of their displacements from its
+     * of their end points relative to their ball placed at the player's own (those within
+     * {@link #BALL_NEAR} metres of their ball, when the player knows its ball), their end points
+     * (those within {@link #NEAR} metres of the player) and their displacements from its
      * position (the others); null when none has one or the player's
      * position is unknown. (A neighbour found as a transform's image, such as a mirrored scene,
      * counts as its stored scene.)
@@ -155,12 +225,20 @@ public final class Destinations {
         double sumY = 0;
         int count = 0;
         int ballRuns = 0;
+        boolean ownBall = own.ballKnown();
         for (Neighbour neighbour : nearest) {
             int i = neighbour.index();
             if (i >= 0 && i < x.length && !Double.isNaN(x[i])) {
-                boolean near = Math.hypot(fromX[i] - own.x(), fromY[i] - own.y()) <= NEAR;
-                sumX += near ? x[i] : own.x() + x[i] - fromX[i];
-                sumY += near ? y[i] : own.y() + y[i] - fromY[i];
+                if (ownBall && Math.hypot(fromX[i] - ballX[i], fromY[i] - ballY[i]) <= BALL_NEAR) {
+                    sumX += own.ballX() + x[i] - ballX[i];
+                    sumY += own.ballY() + y[i] - ballY[i];
+                } else if (Math.hypot(fromX[i] - own.x(), fromY[i] - own.y()) <= NEAR) {
+                    sumX += x[i];
+                    sumY += y[i];
+                } else {
+                    sumX += own.x() + x[i] - fromX[i];
+                    sumY += own.y() + y[i] - fromY[i];
+                }
                 count++;
                 if (toBall[i]) {
                     ballRuns++;
@@ -170,9 +248,12 @@ public final class Destinations {
         if (count == 0) {
             return null;
         }
-        if (steering.chase(ballRuns / (double) count) && ball != null) {
+        // the teacher's own rate where enough of its scenes stood so: k neighbours are too few to tell
+        double rate = own.ballKnown() ? chaseRate(Math.hypot(own.ballX() - own.x(), own.ballY() - own.y()),
+                own.nearestOfItsTeamToBall()) : Double.NaN;
+        if (steering.chase(Double.isNaN(rate) ? ballRuns / (double) count : rate) && ball != null) {
             return ball;
         }
-        return new double[] {sumX / count, sumY / count};
+        return steering.spot(new double[] {sumX / count, sumY / count});
     }
 }

@@ -58,6 +58,63 @@ class DestinationsTest {
     }
 
     @Test
+    void aNeighbourNearItsBallLendsItsEndPointRelativeToTheBallPlacedAtTheOwnBall() {
+        // a player 5 m behind its ball at (5, 0) runs along x to (10, 0): 5 m past where the ball was
+        List<Scene> scenes = new ArrayList<>();
+        for (int t = 0; t < 20; t++) {
+            scenes.add(at(SEVEN, t, t, 0, 5, 0, "play_on", Action.dash(100)));
+        }
+        Destinations destinations = Destinations.of(scenes);
+        // the deciding player near the neighbour, its ball at (-20, 10): the run answers the ball
+        World here = at(SEVEN, 0, 3, 4, -20, 10, "play_on", Action.dash(100)).world();
+        assertArrayEquals(new double[] {-15, 10}, destinations.target(List.of(neighbour(0)), here, null), 1e-9);
+        // without a ball of its own: the end point, as for any near neighbour
+        World blind = at(SEVEN, 0, 3, 4, Double.NaN, Double.NaN, "play_on", Action.dash(100)).world();
+        assertArrayEquals(new double[] {10, 0}, destinations.target(List.of(neighbour(0)), blind, null), 1e-9);
+    }
+
+    @Test
+    void aPlayerThatRemembersFollowsAMovingAverageOfItsNeighboursDestinations() {
+        List<Scene> scenes = new ArrayList<>(run(SEVEN, 20, 0, 0));
+        scenes.addAll(run(EIGHT, 20, 0, 6));
+        Destinations destinations = Destinations.of(scenes);
+        World here = at(SEVEN, 0, 3, 3, 40, 30, "play_on", Action.dash(100)).world();
+        Steering steering = new Steering();
+        // neighbours whose end points alternate between (10, 0) and (10, 6): the spot moves part way
+        assertArrayEquals(new double[] {10, 0}, destinations.target(List.of(neighbour(0)), here, null, steering), 1e-9);
+        double[] next = destinations.target(List.of(neighbour(20)), here, null, steering);
+        assertArrayEquals(new double[] {10, 6 * Steering.NEW_DESTINATION}, next, 1e-9);
+        double[] back = destinations.target(List.of(neighbour(0)), here, null, steering);
+        assertEquals(6 * Steering.NEW_DESTINATION * (1 - Steering.NEW_DESTINATION), back[1], 1e-9);
+        // a player that does not remember takes each mean as it is
+        assertArrayEquals(new double[] {10, 6}, destinations.target(List.of(neighbour(20)), here, null), 1e-9);
+    }
+
+    @Test
+    void theTeachersOwnChaseRateAtThatDistanceDecidesWhereEnoughOfItsScenesStoodSo() {
+        // forty recorded players, each 2.5 m behind a still ball, ran through it; one ran on far from its ball
+        List<Scene> scenes = new ArrayList<>();
+        for (int p = 0; p < 40; p++) {
+            Observer player = new Observer("T" + p, Side.LEFT, 7);
+            for (int t = 0; t < 12; t++) { // a destination for the scenes of cycles 0 and 1 only
+                scenes.add(at(player, t, t, 3 * p - 60, 2.5, 3 * p - 60, "play_on", Action.dash(100)));
+            }
+        }
+        scenes.addAll(run(EIGHT, 20, 0, 10));
+        Destinations destinations = Destinations.of(scenes);
+        assertEquals(1.0, destinations.chaseRate(2.2, true), 1e-9, "all forty at 2-3 m reached their ball");
+        assertEquals(Double.NaN, destinations.chaseRate(2.2, false), "no scene of a player with a teammate nearer");
+        assertEquals(Double.NaN, destinations.chaseRate(45, true), "one run is too few to tell");
+        // a neighbour that ran on without the ball: the rate, not the neighbour, sends the player to its ball
+        World here = at(SEVEN, 0, 0, 10, 2, 11, "play_on", Action.dash(100)).world();
+        double[] ball = {2, 11};
+        assertArrayEquals(ball, destinations.target(List.of(neighbour(480)), here, ball, new Steering()), 1e-9);
+        World far = at(SEVEN, 0, 0, 10, 40, 30, "play_on", Action.dash(100)).world();
+        assertArrayEquals(new double[] {10, 10}, destinations.target(List.of(neighbour(480)), far, ball, new Steering()),
+                1e-9, "no rate that far: the neighbours' share");
+    }
+
+    @Test
     void labelsAddedToAKnowledgeBaseLendNoDestinationAndTakeNoneFromThePlayedScenes() {
         List<Scene> played = run(SEVEN, 20, 0, 0);
         // the imitator's scenes labelled by its shadow: a run on, as if played after the recorded one
@@ -154,7 +211,11 @@ class DestinationsTest {
         assertArrayEquals(ball, destinations.target(twoOfThree, here, ball, steering), 1e-9);
         // but keeps one going, until fewer than a third ran to the ball
         assertArrayEquals(ball, destinations.target(oneOfTwo, here, ball, steering), 1e-9);
-        assertNotEquals(ball[0], destinations.target(oneOfFour, here, ball, steering)[0]);
-        assertArrayEquals(new double[] {10, 5}, destinations.target(oneOfTwo, here, ball, steering), 1e-9);
+        double[] spot = destinations.target(oneOfFour, here, ball, steering);
+        assertNotEquals(ball[0], spot[0]);
+        // a spot again: the moving average from the first spot after the chase, towards (10, 5)
+        double[] next = destinations.target(oneOfTwo, here, ball, steering);
+        assertArrayEquals(new double[] {spot[0] + Steering.NEW_DESTINATION * (10 - spot[0]),
+            spot[1] + Steering.NEW_DESTINATION * (5 - spot[1])}, next, 1e-9);
     }
 }

@@ -7,7 +7,6 @@ import org.scenes.api.EncodedMetric;
 import org.scenes.api.MetricProvider;
 import org.scenes.api.PackedMetric;
 import org.scenes.api.PluginConfig;
-import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneMetric;
 import org.scenes.api.Side;
@@ -187,18 +186,7 @@ public final class FieldMetricProvider implements MetricProvider {
             }
             double ballDistance = ballKnown ? Math.hypot(w.ballX() - w.x(), w.ballY() - w.y()) : Double.NaN;
             return new Features(f, ballKnown, ownMode(w.playMode(), scene.observer().side()), ballDistance <= KICKABLE,
-                    ballKnown && nearestOfItsTeam(w, ballDistance));
-        }
-
-        /** Whether no teammate the world model knows stands nearer the ball than the player. */
-        static boolean nearestOfItsTeam(World w, double ballDistance) {
-            for (World.Player player : w.players()) {
-                if (player.relation() == Relation.TEAMMATE
-                        && Math.hypot(w.ballX() - player.x(), w.ballY() - player.y()) < ballDistance) {
-                    return false;
-                }
-            }
-            return true;
+                    ballKnown && w.nearestOfItsTeamToBall());
         }
 
         /** The play mode with its side letter as seen from the player: {@code kick_off_own}, {@code goal_opp}. */
