@@ -81,6 +81,11 @@ public final class ImitationBrain implements Brain {
     /** the play mode of the latest decision, and the cycle it began */
     private String playMode = "";
     private int playModeSince;
+    /** play modes begun so far (several may begin in one cycle: goal, then kick-off), and the one of the last matched move */
+    private int playModes;
+    private int movedInMode = -1;
+    /** whether the counterpart placed itself with a single move each time (then so does this player) */
+    private boolean placesOnce;
     /** The counterpart's recorded kick-off moves: empty without a counterpart or moves. */
     private List<Action> counterpartMoves = List.of();
     private boolean counterpartMovedInPlay;
@@ -255,6 +260,7 @@ public final class ImitationBrain implements Brain {
         ImitationTeam.Counterpart counterpart = roles.counterpart(unum);
         counterpartMoves = counterpart == null ? List.of() : counterpart.moves();
         counterpartMovedInPlay = counterpart != null && counterpart.movedInPlay();
+        placesOnce = counterpart != null && counterpart.placesOnce();
         setPlayKicks = roles.setPlayKicks(unum);
     }
 
@@ -308,6 +314,15 @@ public final class ImitationBrain implements Brain {
             // another player's kick-off spot: take the counterpart's own
             action = counterpartMoves.get(0);
         }
+        if (action != null && action.type() == ActionType.MOVE && placesOnce) {
+            if (movedInMode == playModes) {
+                // placed already in this stop of play, as its counterpart placed itself once a stop: a
+                // view of every step would otherwise match the placement again at every step
+                action = nearestOther(nearest, candidate -> candidate.type() != ActionType.MOVE);
+            } else {
+                movedInMode = playModes;
+            }
+        }
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
@@ -334,6 +349,7 @@ public final class ImitationBrain implements Brain {
         if (!own.playMode().equals(playMode)) {
             playMode = own.playMode();
             playModeSince = seen.cycle();
+            playModes++;
         }
         boolean atBall = own.located() && own.ballKnown()
                 && Math.hypot(own.ballX() - own.x(), own.ballY() - own.y()) <= kickable;

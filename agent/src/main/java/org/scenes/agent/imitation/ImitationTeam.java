@@ -62,9 +62,11 @@ public final class ImitationTeam {
      * @param movedInPlay whether it placed itself again after time 0 (after goals, at half time);
      *                    the real Krislet client places itself once, at time 0
      * @param setPlayKicks the kicks with which it took its team's set plays, and after how long
+     * @param placesOnce whether each of its placements was a single {@code move} (HELIOS base), not a
+     *                   run of them repeated on every view until the kick-off (Krislet)
      */
     record Counterpart(int unum, boolean goalie, Recognizer recognizer, List<Action> moves, boolean movedInPlay,
-                       SetPlayKicks setPlayKicks) {
+                       SetPlayKicks setPlayKicks, boolean placesOnce) {
         Counterpart {
             moves = List.copyOf(moves);
         }
@@ -108,6 +110,7 @@ public final class ImitationTeam {
         Map<Integer, List<Action>> moves = new TreeMap<>();
         Map<Integer, Boolean> movedInPlay = new TreeMap<>();
         Map<Integer, SetPlayKicks> setPlayKicks = new TreeMap<>();
+        Map<Integer, Boolean> placesOnce = new TreeMap<>();
         for (Path file : files) {
             try (SceneFileReader reader = SceneFileReader.open(file)) {
                 SceneSource source = reader.header().source();
@@ -122,6 +125,8 @@ public final class ImitationTeam {
                     movedInPlay.merge(unum, recorded.stream().anyMatch(
                             scene -> scene.cycle() > 0 && scene.actionType() == ActionType.MOVE), Boolean::logicalOr);
                     setPlayKicks.merge(unum, SetPlayKicks.of(recorded), SetPlayKicks::with);
+                    long moveScenes = recorded.stream().filter(scene -> scene.actionType() == ActionType.MOVE).count();
+                    placesOnce.merge(unum, moveScenes == kickOffMoves(recorded).size(), Boolean::logicalAnd);
                 }
             }
         }
@@ -134,7 +139,7 @@ public final class ImitationTeam {
                     ? recognizers.apply(placements(KnowledgeBase.load(entry.getValue(), transforms),
                             movedInPlay.get(unum))) : null;
             counterparts.put(unum, new Counterpart(unum, goalies.get(unum), recognizer, moves.get(unum),
-                    movedInPlay.get(unum), setPlayKicks.get(unum)));
+                    movedInPlay.get(unum), setPlayKicks.get(unum), placesOnce.get(unum)));
         }
         return new ImitationTeam(team, counterparts, knowledge);
     }
@@ -165,7 +170,7 @@ public final class ImitationTeam {
             Recognizer recognizer = counterpart.recognizer() == null || own.isEmpty() ? counterpart.recognizer()
                     : recognizers.apply(counterpart.recognizer().knowledge().plus(own, transforms));
             corrected.put(counterpart.unum(), new Counterpart(counterpart.unum(), counterpart.goalie(), recognizer,
-                    counterpart.moves(), counterpart.movedInPlay(), counterpart.setPlayKicks()));
+                    counterpart.moves(), counterpart.movedInPlay(), counterpart.setPlayKicks(), counterpart.placesOnce()));
         }
         return new ImitationTeam(recognizers.apply(team.knowledge().plus(all, transforms)), corrected, knowledge);
     }

@@ -85,6 +85,36 @@ class ImitationTeamTest {
     }
 
     @Test
+    void aCounterpartThatPlacedItselfWithOneMoveEachTimeIsImitatedSoThoughEveryViewMatchesIt() throws IOException {
+        Observer player = new Observer("Teal", Side.LEFT, 5);
+        Path file = directory.resolve("Teal_5.json");
+        SceneFileWriter.write(file, new SceneFile(SceneFileHeader.of(Grid.DEFAULT, new SceneSource("h", player)),
+                List.of(new Scene(0, player, ballAt(30), List.of(Action.move(-10, 5))),
+                        new Scene(1, player, ballAt(31), List.of(Action.turn(30))),
+                        new Scene(80, player, ballAt(32), List.of(Action.move(-10, 5))),
+                        new Scene(81, player, ballAt(31), List.of(Action.turn(30))))));
+        Brain brain = ImitationTeam.load(List.of(file), List::of,
+                        knowledge -> new Recognizer(knowledge, () -> ImitationBrainTest.BALL, 2),
+                        ImitationTeam.Knowledge.COUNTERPART).brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF)
+                .create("Teal", new Random(1));
+        brain.receive("(init l 5 before_kick_off)", s -> { });
+        List<String> sent = new ArrayList<>();
+        for (int step = 0; step < 3; step++) {
+            brain.receive("(see 0 ((b) 30 0))", sent::add);
+        }
+        assertEquals(List.of("(move -10 5)", "(turn 30)", "(turn 30)"), sent, "placed once, then the other neighbour");
+        sent.clear();
+        brain.receive("(hear 90 referee goal_r_1)", s -> { });
+        brain.receive("(see 90 ((b) 30 0))", sent::add);
+        brain.receive("(see 90 ((b) 30 0))", sent::add);
+        assertEquals(List.of("(move -10 5)", "(turn 30)"), sent, "a new stop of play: placed again, once");
+        // a counterpart that repeated its move on every view until the kick-off (Krislet) is imitated so
+        List<String> repeated = play(team(ImitationTeam.Knowledge.COUNTERPART).brains(() -> FIRST, List::of,
+                ImitationBrain.Guards.OFF), 2);
+        assertEquals(List.of("(move -20 10)", "(turn 30)", "(move -20 10)"), repeated);
+    }
+
+    @Test
     void withTheTeamsKnowledgeAMoveFromAnotherPlayersSceneBecomesTheCounterpartsOwn() throws IOException {
         BrainFactory brains = team(ImitationTeam.Knowledge.TEAM).brains(() -> FIRST, List::of,
                 ImitationBrain.Guards.OFF);
