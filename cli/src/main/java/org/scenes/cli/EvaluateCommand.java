@@ -160,14 +160,17 @@ final class EvaluateCommand implements Callable<Integer> {
 
     @Option(names = "--teacher-command", paramLabel = "CMD",
             description = "An external teacher team: a command started (bash -c, in its own session) for each game on"
-                    + " --server, after our opponent joined, so it plays the right side (and the imitator too);"
-                    + " {host}, {port}, {team}, {players} are replaced; its whole process group is ended after each"
-                    + " game. Needs --server-logs (the figures come from the server's logs) and SCENES.")
+                    + " --server, after our opponent joined, so it plays the right side (and the imitator too); with"
+                    + " --opponent-command it is started first, through a relay on loopback ({host}, {port}), and"
+                    + " plays the left side as the imitator does; {host}, {port}, {team}, {players} are replaced; its"
+                    + " whole process group is ended after each game. Needs --server-logs (the figures come from the"
+                    + " server's logs) and SCENES.")
     String teacherCommand;
 
     @Option(names = "--opponent-command", paramLabel = "CMD",
             description = "An external opponent, started like --teacher-command for each game (--players players,"
-                    + " the right side). Needs --server, --server-logs and SCENES.")
+                    + " the right side), with --teacher-command too (once all the teacher's players joined). Needs"
+                    + " --server, --server-logs and SCENES.")
     String opponentCommand;
 
     @Option(names = "--teacher-games", paramLabel = "DIR",
@@ -340,14 +343,13 @@ final class EvaluateCommand implements Callable<Integer> {
                 .equals(disagreements.toAbsolutePath().normalize())), "--disagreements: " + disagreements
                 + " is an input (SCENES); an output never overwrites an input");
         if (teacherCommand != null || opponentCommand != null) {
-            require(teacherCommand == null || opponentCommand == null, "--teacher-command and --opponent-command:"
-                    + " one external team a game for now (ours joins first, the external one after it)");
             String option = teacherCommand != null ? "--teacher-command" : "--opponent-command";
             require(server != null && serverLogs != null, option + ": an external team plays on a server and is"
                     + " measured from its logs: give --server HOST:PORT and --server-logs DIR");
             require(!sceneFiles.isEmpty(), option + ": give the SCENES to learn the imitator from (the teacher's games"
                     + " are not played in process with an external team)");
-            require(!(teacherCommand != null ? teacherCommand : opponentCommand).isBlank(), option + ": an empty command");
+            require(teacherCommand == null || !teacherCommand.isBlank(), "--teacher-command: an empty command");
+            require(opponentCommand == null || !opponentCommand.isBlank(), "--opponent-command: an empty command");
         }
         GameSetup.Team teacherTeam = teacherCommand != null
                 ? new GameSetup.Team("Teal", players, new ExternalTeam(teacherCommand))
@@ -359,7 +361,7 @@ final class EvaluateCommand implements Callable<Integer> {
                 server == null ? ExternalShadow.Pacing.EACH_MESSAGE : ExternalShadow.Pacing.AS_THE_SERVER,
                 Duration.ofMillis(Math.round(serverWait * 1000)));
         return new Setup(teacherCommand != null ? "the command '" + teacherCommand + "'" : teacher, teacherTeam,
-                opponentTeam, teacherCommand != null ? Side.RIGHT : Side.LEFT, configs.get(0), top.global.registry(),
+                opponentTeam, Evaluation.Plan.sideOf(teacherTeam.brains(), opponentTeam.brains()), configs.get(0), top.global.registry(),
                 sceneFiles, trainGames, cycles, seedList, knowledge, thinkSteps, dagger, shadow);
     }
 
