@@ -129,8 +129,8 @@ class ExternalTeamEvaluateTest {
                         root.get("figures").toString());
             }
         }
-        Processes.assertNoneRunning("7361");
-        Processes.assertNoneRunning("7362");
+        Processes.assertNoneRunning("--seed 7361");
+        Processes.assertNoneRunning("--seed 7362");
     }
 
     @Test
@@ -147,7 +147,7 @@ class ExternalTeamEvaluateTest {
                     + " before the game began (it said: no such team)"), cli.err());
             assertEquals(1, cli.err().strip().lines().count(), cli.err());
         }
-        Processes.assertNoneRunning("7363");
+        Processes.assertNoneRunning("--seed 7363");
         try (Server server = new Server(logs, 1, 200)) {
             // a teacher whose players never join: the opponent's command is never started
             CommandRunner cli = new CommandRunner();
@@ -159,8 +159,33 @@ class ExternalTeamEvaluateTest {
                     + " 127.0.0.1:" + server.port + " within 2 s"), cli.err());
             assertEquals(1, cli.err().strip().lines().count(), cli.err());
         }
-        Processes.assertNoneRunning("7364");
-        Processes.assertNoneRunning("7365");
+        Processes.assertNoneRunning("sleep 7364");
+        Processes.assertNoneRunning("--seed 7365");
+        try (Server server = new Server(logs, 1, 3000)) {
+            // both teams play a while of a long game, then the opponent's player processes are killed
+            CommandRunner cli = new CommandRunner();
+            CompletableFuture<Integer> status = new CompletableFuture<>();
+            Thread evaluating = new Thread(() -> status.complete(cli.run("evaluate", "--server", "127.0.0.1:"
+                    + server.port, "--server-logs", logs, "--server-wait", "60", "--teacher-command",
+                    teamCommand("7366"), "--opponent-command", teamCommand("7367"), "--players", "2", "--cycles",
+                    "3000", "--seeds", "1", "--metric", "ball-goal", scenes)), "evaluate");
+            evaluating.setDaemon(true);
+            evaluating.start();
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+            while (server.time.get() < 50 && !status.isDone() && System.nanoTime() < deadline) {
+                Thread.sleep(20);
+            }
+            List<ProcessHandle> opponent = Processes.running("--seed 7367");
+            assertTrue(server.time.get() >= 50 && !opponent.isEmpty(), "the game under way: cycle "
+                    + server.time.get() + ", opponent " + opponent + ", " + cli.err());
+            opponent.forEach(ProcessHandle::destroyForcibly);
+            assertEquals(ExitCodes.FAILURE, status.get(60, TimeUnit.SECONDS), cli.err());
+            assertTrue(cli.err().strip().matches("(?s).*Amber: the command '[^\\n]*--seed 7367' ended \\(exit \\d+\\)"
+                    + " at cycle \\d+, before time over.*"), cli.err());
+            assertEquals(1, cli.err().strip().lines().count(), cli.err());
+        }
+        Processes.assertNoneRunning("--seed 7366");
+        Processes.assertNoneRunning("--seed 7367");
     }
 
     @Test
