@@ -361,8 +361,8 @@ final class EvaluateCommand implements Callable<Integer> {
                 server == null ? ExternalShadow.Pacing.EACH_MESSAGE : ExternalShadow.Pacing.AS_THE_SERVER,
                 Duration.ofMillis(Math.round(serverWait * 1000)));
         return new Setup(teacherCommand != null ? "the command '" + teacherCommand + "'" : teacher, teacherTeam,
-                opponentTeam, Evaluation.Plan.sideOf(teacherTeam.brains(), opponentTeam.brains()), configs.get(0), top.global.registry(),
-                sceneFiles, trainGames, cycles, seedList, knowledge, thinkSteps, dagger, shadow);
+                opponentTeam, Evaluation.Plan.sideOf(teacherTeam.brains(), opponentTeam.brains()), configs.get(0),
+                top.global.registry(), sceneFiles, trainGames, cycles, seedList, knowledge, thinkSteps, dagger, shadow);
     }
 
     /** The option checks' one shape: a usage error (exit code 2) saying {@code message} unless {@code holds}. */
