@@ -121,8 +121,8 @@ final class TeamRelay implements AutoCloseable {
     }
 
     private void relay() {
-        try {
-            while (!closed) {
+        while (!closed) {
+            try {
                 selector.select(SELECT_MILLIS);
                 for (SelectionKey key : selector.selectedKeys()) {
                     if (key.channel() == listening) {
@@ -133,9 +133,12 @@ final class TeamRelay implements AutoCloseable {
                 }
                 selector.selectedKeys().clear();
                 helloAgain();
+            } catch (ClosedSelectorException e) {
+                return;
+            } catch (IOException e) {
+                // one datagram lost (UDP loses some anyway); a network that stays down shows as the server's silence
+                selector.selectedKeys().clear();
             }
-        } catch (IOException | ClosedSelectorException e) {
-            // closed under us, or the network failed: the players hear no more, and the arena sees silence
         }
     }
 
