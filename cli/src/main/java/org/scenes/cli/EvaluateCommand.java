@@ -144,14 +144,17 @@ final class EvaluateCommand implements Callable<Integer> {
 
     @Option(names = "--teacher-command", paramLabel = "CMD",
             description = "An external teacher team: a command started (bash -c, in its own session) for each game on"
-                    + " --server, after our opponent joined, so it plays the right side (and the imitator too);"
-                    + " {host}, {port}, {team}, {players} are replaced; its whole process group is ended after each"
-                    + " game. Needs --server-logs (the figures come from the server's logs) and SCENES.")
+                    + " --server, after our opponent joined, so it plays the right side (and the imitator too); with"
+                    + " --opponent-command it is started first, through a relay on loopback ({host}, {port}), and"
+                    + " plays the left side as the imitator does; {host}, {port}, {team}, {players} are replaced; its"
+                    + " whole process group is ended after each game. Needs --server-logs (the figures come from the"
+                    + " server's logs) and SCENES.")
     String teacherCommand;
 
     @Option(names = "--opponent-command", paramLabel = "CMD",
             description = "An external opponent, started like --teacher-command for each game (--players players,"
-                    + " the right side). Needs --server, --server-logs and SCENES.")
+                    + " the right side), with --teacher-command too (once all the teacher's players joined). Needs"
+                    + " --server, --server-logs and SCENES.")
     String opponentCommand;
 
     @Option(names = "--teacher-games", paramLabel = "DIR",

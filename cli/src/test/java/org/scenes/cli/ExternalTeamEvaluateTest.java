@@ -100,6 +100,95 @@ class ExternalTeamEvaluateTest {
     }
 
     @Test
+    void anExternalTeacherAndAnExternalOpponentTogetherAreMeasuredFromTheServersLogs() throws Exception {
+        Path logs = Files.createDirectories(dir.resolve("logs"));
+        try (Server server = new Server(logs, 2, 150)) {
+            CommandRunner cli = new CommandRunner();
+            int status = cli.run("evaluate", "--server", "127.0.0.1:" + server.port, "--server-logs", logs,
+                    "--server-wait", "60", "--teacher-command", teamCommand("7361"), "--opponent-command",
+                    teamCommand("7362").replace("--teacher krislet", "--teacher statebased"), "--players", "2",
+                    "--cycles", "150", "--seeds", "1", "--metric", "ball-goal", scenes, "--json");
+            assertEquals(ExitCodes.OK, status, cli.err());
+            List<ServerResult> served = server.served();
+            assertEquals(2, served.size(), "the teacher's game and the imitator's");
+            // the teacher's command joined first in its game, as the imitator did in its own: both on the left
+            for (ServerResult game : served) {
+                String log = game.logs().stream().map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".rcg"))
+                        .findFirst().orElseThrow();
+                assertTrue(log.matches("\\d{3}-Teal_\\d+-vs-Amber_\\d+\\.rcg"), log);
+            }
+            JsonNode root = ConfigFiles.JSON.readTree(cli.out());
+            assertTrue(root.at("/about/teacher").asText().contains("the command '"), root.get("about").toString());
+            assertTrue(root.at("/about/opponent").asText().startsWith("Amber, 2 players, the command '"),
+                    root.get("about").toString());
+            for (String side : List.of("teacher", "imitator")) {
+                double dash = root.at("/figures/executedDash/" + side + "/mean").asDouble();
+                assertTrue(dash > 0.2 && dash < 1, side + "'s executed dash share " + dash);
+                assertTrue(root.at("/figures/ballDistance/" + side + "/mean").asDouble() > 0
+                        && root.at("/figures/bodyPerStep/" + side + "/mean").asDouble() > 0,
+                        root.get("figures").toString());
+            }
+        }
+        Processes.assertNoneRunning("--seed 7361");
+        Processes.assertNoneRunning("--seed 7362");
+    }
+
+    @Test
+    void twoExternalTeamsWhoseCommandFailsGiveOneLineAndLeaveNothingRunning() throws Exception {
+        Path logs = Files.createDirectories(dir.resolve("logs"));
+        try (Server server = new Server(logs, 1, 200)) {
+            CommandRunner cli = new CommandRunner();
+            int status = cli.run("evaluate", "--server", "127.0.0.1:" + server.port, "--server-logs", logs,
+                    "--server-wait", "60", "--teacher-command", teamCommand("7363"), "--opponent-command",
+                    "echo no such team >&2; exit 3", "--players", "2", "--cycles", "200", "--seeds", "1", "--metric",
+                    "ball-goal", scenes);
+            assertEquals(ExitCodes.FAILURE, status, cli.err());
+            assertTrue(cli.err().strip().endsWith("Amber: the command 'echo no such team >&2; exit 3' ended (exit 3)"
+                    + " before the game began (it said: no such team)"), cli.err());
+            assertEquals(1, cli.err().strip().lines().count(), cli.err());
+        }
+        Processes.assertNoneRunning("--seed 7363");
+        try (Server server = new Server(logs, 1, 200)) {
+            // a teacher whose players never join: the opponent's command is never started
+            CommandRunner cli = new CommandRunner();
+            int status = cli.run("evaluate", "--server", "127.0.0.1:" + server.port, "--server-logs", logs,
+                    "--server-wait", "2", "--teacher-command", "sleep 7364", "--opponent-command", teamCommand("7365"),
+                    "--players", "2", "--cycles", "200", "--seeds", "1", "--metric", "ball-goal", scenes);
+            assertEquals(ExitCodes.FAILURE, status, cli.err());
+            assertTrue(cli.err().strip().endsWith("Teal: no player of the command 'sleep 7364' joined the game on"
+                    + " 127.0.0.1:" + server.port + " within 2 s"), cli.err());
+            assertEquals(1, cli.err().strip().lines().count(), cli.err());
+        }
+        Processes.assertNoneRunning("sleep 7364");
+        Processes.assertNoneRunning("--seed 7365");
+        try (Server server = new Server(logs, 1, 3000)) {
+            // both teams play a while of a long game, then the opponent's player processes are killed
+            CommandRunner cli = new CommandRunner();
+            CompletableFuture<Integer> status = new CompletableFuture<>();
+            Thread evaluating = new Thread(() -> status.complete(cli.run("evaluate", "--server", "127.0.0.1:"
+                    + server.port, "--server-logs", logs, "--server-wait", "60", "--teacher-command",
+                    teamCommand("7366"), "--opponent-command", teamCommand("7367"), "--players", "2", "--cycles",
+                    "3000", "--seeds", "1", "--metric", "ball-goal", scenes)), "evaluate");
+            evaluating.setDaemon(true);
+            evaluating.start();
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+            while (server.time.get() < 50 && !status.isDone() && System.nanoTime() < deadline) {
+                Thread.sleep(20);
+            }
+            List<ProcessHandle> opponent = Processes.running("--seed 7367");
+            assertTrue(server.time.get() >= 50 && !opponent.isEmpty(), "the game under way: cycle "
+                    + server.time.get() + ", opponent " + opponent + ", " + cli.err());
+            opponent.forEach(ProcessHandle::destroyForcibly);
+            assertEquals(ExitCodes.FAILURE, status.get(60, TimeUnit.SECONDS), cli.err());
+            assertTrue(cli.err().strip().matches("(?s).*Amber: the command '[^\\n]*--seed 7367' ended \\(exit \\d+\\)"
+                    + " at cycle \\d+, before time over.*"), cli.err());
+            assertEquals(1, cli.err().strip().lines().count(), cli.err());
+        }
+        Processes.assertNoneRunning("--seed 7366");
+        Processes.assertNoneRunning("--seed 7367");
+    }
+
+    @Test
     void anImitationTeamWithRolesPlaysOnTheServerInTheProtocolVersionAsked() throws Exception {
         Path perPlayer = dir.resolve("per-player");
         CommandRunner convert = new CommandRunner();

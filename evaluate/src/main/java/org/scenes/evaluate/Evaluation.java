@@ -31,17 +31,16 @@ public final class Evaluation {
      * @param opponent the right team in every game
      * @param cycles each game's length
      * @param seeds one pair of games per seed
-     * @param side the side teacher and imitator play: the right one when the teacher is an
-     *             {@link ExternalTeam} (an external team connects second, after ours)
+     * @param side the side teacher and imitator play: {@link #sideOf}
      * @param shadow the shadow teacher beside each imitating player: the teacher's own brains, an
      *               {@link ExternalShadow}, or null for none
      */
     public record Plan(GameSetup.Team teacher, BrainFactory imitator, GameSetup.Team opponent, int cycles,
                        List<Long> seeds, Side side, BrainFactory shadow) {
-        /** A plan with teacher and imitator on the left. */
+        /** A plan with teacher and imitator on their {@link #sideOf side}. */
         public Plan(GameSetup.Team teacher, BrainFactory imitator, GameSetup.Team opponent, int cycles,
                     List<Long> seeds) {
-            this(teacher, imitator, opponent, cycles, seeds, Side.LEFT);
+            this(teacher, imitator, opponent, cycles, seeds, sideOf(teacher.brains(), opponent.brains()));
         }
 
         /** A plan whose shadow is the teacher in process, none for an {@link ExternalTeam}. */
@@ -73,15 +72,25 @@ public final class Evaluation {
                 throw new IllegalArgumentException("cycles must be at least 1, not " + cycles);
             }
             Objects.requireNonNull(side, "side");
-            boolean externalTeacher = teacher.brains() instanceof ExternalTeam;
-            boolean externalOpponent = opponent.brains() instanceof ExternalTeam;
-            if (externalTeacher && externalOpponent) {
-                throw new IllegalArgumentException("one external team a game: ours joins first, the external one"
-                        + " after it");
+            Side expected = sideOf(teacher.brains(), opponent.brains());
+            if (side != expected) {
+                throw new IllegalArgumentException("teacher and imitator play on the "
+                        + (expected == Side.LEFT ? "left" : "right") + " side with these teams: the first team to join"
+                        + " a server plays on the left, and ours joins before an external one");
             }
-            if ((externalTeacher && side != Side.RIGHT) || (externalOpponent && side != Side.LEFT)) {
-                throw new IllegalArgumentException("an external team plays on the right, after ours");
-            }
+        }
+
+        /**
+         * The side teacher and imitator play, the same in the teacher's games and in the imitator's
+         * so that their figures compare. The first team to join a server plays on the left, and
+         * ours joins before an external team (its command is started once ours is on the server):
+         * an external teacher against our opponent plays on the right, and so does its imitator.
+         * Against an external opponent they play on the left: the imitator joins first, and an
+         * external teacher's command is started first, the opponent's once all its players joined.
+         * Without external teams: the left.
+         */
+        public static Side sideOf(BrainFactory teacher, BrainFactory opponent) {
+            return teacher instanceof ExternalTeam && !(opponent instanceof ExternalTeam) ? Side.RIGHT : Side.LEFT;
         }
 
         /** Game cycles all the games of the plan run, for progress. */

@@ -46,6 +46,10 @@ import org.scenes.simulator.Simulator;
  * directory, the {@code .rcg} the server completed there during the game is read; without one,
  * the game has no frames.
  *
+ * <p>An {@link ExternalTeam} plays on the right, its command started once ours is connected; a game
+ * of two external teams (none of ours) is played by {@link ExternalGame}, the left team's command
+ * first and watched through a relay.
+ *
  * <p>Each brain is made when its player's init is answered, seeded from the game seed, side and
  * uniform number as the embedded simulator seeds it, so on {@code scenes server} with the same
  * seed a game starts exactly as in process.
@@ -75,13 +79,18 @@ public final class LiveArena implements Arena {
 
     @Override
     public GameResult play(GameSetup setup, IntConsumer progress, Consumer<GameFrame> frames) throws IOException {
-        if (setup.left().brains() instanceof ExternalTeam) {
+        boolean externalLeft = setup.left().brains() instanceof ExternalTeam;
+        if (externalLeft && !(setup.right().brains() instanceof ExternalTeam)) {
             throw new IllegalArgumentException("an external team plays on the right: ours connects first");
         }
         Scoreboard board = new Scoreboard();
         List<PlayerReport> reports = new ArrayList<>();
         FileTime begun;
         try {
+            if (externalLeft) {
+                begun = new ExternalGame(client, serverWait).play(setup, board, progress);
+                return finish(setup, board, reports, begun, progress, frames);
+            }
             Connected left = connect(setup.left(), Side.LEFT, setup.seed(), board, reports, System.nanoTime()
                     + serverWait.toNanos());
             // the server took this game, so the previous game's log is complete: a log newer than this is ours
@@ -102,6 +111,12 @@ public final class LiveArena implements Arena {
             Thread.currentThread().interrupt();
             throw new IOException("interrupted while playing on " + client.server());
         }
+        return finish(setup, board, reports, begun, progress, frames);
+    }
+
+    /** The game's result once it is over: the players' failures, the clock, the score and the game log. */
+    private GameResult finish(GameSetup setup, Scoreboard board, List<PlayerReport> reports, FileTime begun,
+                              IntConsumer progress, Consumer<GameFrame> frames) throws IOException {
         for (PlayerReport report : reports) {
             if (!report.outcome().ok()) {
                 throw new IOException(report.team() + " player " + report.unum() + " on " + client.server() + ": "
@@ -239,7 +254,7 @@ public final class LiveArena implements Arena {
         }
     }
 
-    private static String quoted(String lastWords) {
+    static String quoted(String lastWords) {
         return lastWords.isEmpty() ? "" : " (it said: " + lastWords + ")";
     }
 

@@ -518,4 +518,43 @@ class LiveTeamTest {
             assertEquals(1, report.cycles());
         }
     }
+
+    @Test
+    void messagesThatCameWhileTheBrainWasThinkingCountAsHeard() throws Exception {
+        // a brain that thinks longer than the silence timeout while the server goes on talking: what came in
+        // meanwhile is taken in after its answer, and the server was not silent, so the player plays on
+        java.util.concurrent.CountDownLatch talked = new java.util.concurrent.CountDownLatch(1);
+        BrainFactory slow = (team, random) -> (message, send) -> {
+            if (message.startsWith("(see 1 ")) {
+                try {
+                    talked.await(10, TimeUnit.SECONDS);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+                send.accept("(dash 50)");
+            }
+        };
+        try (FakeSoccerServer server = FakeSoccerServer.start(List.of())) {
+            Future<List<PlayerReport>> reports = start(new TeamRunner(
+                    ClientOptions.of(new ServerAddress("127.0.0.1", server.address(FakeSoccerServer.Port.PLAYER)
+                            .getPort()), "Slow").withTimeouts(Duration.ofMillis(700), Duration.ofMillis(1000)),
+                    1, slow, 1, notices::add));
+            awaitClients(server, 1);
+            FakeSoccerServer.Client client = server.clients().get(0);
+            send(client, "(sense_body 1 (view_mode high normal))");
+            send(client, "(see 1 ((b) 10 0))");
+            // 1.5 s of a sense_body every 100 ms while the brain thinks: longer than the silence timeout
+            for (int cycle = 2; cycle <= 16; cycle++) {
+                Thread.sleep(100);
+                send(client, "(sense_body " + cycle + " (view_mode high normal))");
+            }
+            talked.countDown();
+            // a pause shorter than the silence timeout, counted from the last message sent
+            Thread.sleep(400);
+            send(client, "(hear 17 referee time_over)");
+            PlayerReport report = reports.get(10, TimeUnit.SECONDS).get(0);
+            assertEquals(Outcome.GAME_OVER, report.outcome(), report.toString() + " " + notices);
+            assertEquals(16, report.cycles());
+        }
+    }
 }

@@ -94,6 +94,11 @@ public final class LivePlayer implements Runnable {
     private long cycles;
     /** When the last message that parsed arrived. */
     private long lastUnderstood;
+    /**
+     * When the last datagram was taken from the socket, however it was taken: those that came
+     * while the brain was thinking are taken in after its answer and count as heard too.
+     */
+    private long lastHeard;
     private long due;
     private long missed;
     private long thinks;
@@ -205,7 +210,7 @@ public final class LivePlayer implements Runnable {
         }
         answered.countDown();
         queue.add(reply);
-        long lastHeard = reply.receivedNanos();
+        lastHeard = reply.receivedNanos();
         lastUnderstood = lastHeard;
         long silence = options.silenceTimeout().toNanos();
         while (!gameOver) {
@@ -233,8 +238,7 @@ public final class LivePlayer implements Runnable {
                 }
                 continue;
             }
-            lastHeard = next.receivedNanos();
-            queue.add(next);
+            heard(next);
             takeWaiting();
         }
         bye();
@@ -344,8 +348,13 @@ public final class LivePlayer implements Runnable {
     /** Moves everything the socket holds into the queue, in order, without blocking. */
     private void takeWaiting() throws IOException {
         for (Datagram waiting = link.poll(); waiting != null; waiting = link.poll()) {
-            queue.add(waiting);
+            heard(waiting);
         }
+    }
+
+    private void heard(Datagram datagram) {
+        queue.add(datagram);
+        lastHeard = datagram.receivedNanos();
     }
 
     /** Whether what waits in the queue shows the server has moved past the cycle being answered. */

@@ -308,14 +308,13 @@ public final class Evaluating {
                 .equals(disagreements.toAbsolutePath().normalize())), "--disagreements: " + disagreements
                 + " is an input (SCENES); an output never overwrites an input");
         if (teacherCommand != null || opponentCommand != null) {
-            require(teacherCommand == null || opponentCommand == null, "--teacher-command and --opponent-command:"
-                    + " one external team a game for now (ours joins first, the external one after it)");
             String option = teacherCommand != null ? "--teacher-command" : "--opponent-command";
             require(server.address() != null && server.logs() != null, option + ": an external team plays on a server"
                     + " and is measured from its logs: give --server HOST:PORT and --server-logs DIR");
             require(!sceneFiles.isEmpty(), option + ": give the SCENES to learn the imitator from (the teacher's games"
                     + " are not played in process with an external team)");
-            require(!(teacherCommand != null ? teacherCommand : opponentCommand).isBlank(), option + ": an empty command");
+            require(teacherCommand == null || !teacherCommand.isBlank(), "--teacher-command: an empty command");
+            require(opponentCommand == null || !opponentCommand.isBlank(), "--opponent-command: an empty command");
         }
         GameSetup.Team teacher = teacherCommand != null
                 ? new GameSetup.Team("Teal", teams.players(), new ExternalTeam(teacherCommand))
@@ -327,7 +326,8 @@ public final class Evaluating {
                 server.address() == null ? ExternalShadow.Pacing.EACH_MESSAGE : ExternalShadow.Pacing.AS_THE_SERVER,
                 wait(server));
         return new Setup(teacherCommand != null ? "the command '" + teacherCommand + "'" : teams.teacher(), teacher,
-                opponent, teacherCommand != null ? Side.RIGHT : Side.LEFT, request.configs().get(0), registry.get(),
+                opponent, Evaluation.Plan.sideOf(teacher.brains(), opponent.brains()), request.configs().get(0),
+                registry.get(),
                 seeds, shadow);
     }
 
