@@ -8,6 +8,7 @@ import org.scenes.api.Grid;
 import org.scenes.api.PluginException;
 import org.scenes.api.PluginRegistry;
 import org.scenes.app.RequestException;
+import org.scenes.internal.files.IoErrors;
 import org.scenes.internal.scene.SceneFileException;
 import org.scenes.options.OptionException;
 import picocli.CommandLine.Command;
@@ -101,7 +102,8 @@ final class ScenesCommand implements Runnable {
         return false;
     }
 
-    private static String message(Throwable e) {
+    /** The one line of a failure, without the {@code scenes:} prefix. */
+    static String message(Throwable e) {
         if (e instanceof Grid.MismatchException) {
             // core names no flags; these are the ones that set a grid
             return e.getMessage() + "; convert them with the same --grid and --bounds";
@@ -113,6 +115,10 @@ final class ScenesCommand implements Runnable {
         }
         if (e instanceof SceneFileException || e instanceof UsageException || e instanceof PluginException) {
             return e.getMessage();
+        }
+        if (e instanceof java.nio.file.FileSystemException fileSystem && fileSystem.getFile() != null) {
+            // java.nio's message is the file's name alone for a denied access: say why as well
+            return fileSystem.getFile() + ": " + IoErrors.reason(fileSystem);
         }
         String message = e.getMessage();
         return message == null ? e.getClass().getSimpleName() : message;

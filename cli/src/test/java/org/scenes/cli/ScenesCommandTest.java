@@ -50,6 +50,15 @@ class ScenesCommandTest {
     }
 
     @Test
+    void aFileThatCannotBeReadIsNamedWithTheReason() {
+        // root reads every file, so the denial is made here rather than by chmod
+        assertEquals("/data/game.rcg: permission denied",
+                ScenesCommand.message(new java.nio.file.AccessDeniedException("/data/game.rcg")));
+        assertEquals("/data: Not a directory", ScenesCommand.message(
+                new java.nio.file.FileSystemException("/data", null, "Not a directory")));
+    }
+
+    @Test
     void everyCommandAnswersHelpWithItsUsage() {
         for (String command : ScenesCommand.commandLine().getSubcommands().keySet()) {
             for (String flag : new String[] {"--help", "-h"}) {

@@ -7,6 +7,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Arrays;
 import org.scenes.internal.files.Inputs;
+import org.scenes.internal.files.IoErrors;
 import org.scenes.internal.proxylog.Direction;
 import org.scenes.internal.proxylog.MessageEscapes;
 import org.scenes.internal.proxylog.ProxyLogLine;
@@ -73,7 +74,7 @@ public final class LogReader implements AutoCloseable {
         } catch (NoSuchFileException e) {
             throw new LogException(file, 0, "no such file", e);
         } catch (IOException e) {
-            throw new LogException(file, 0, "cannot open: " + e.getMessage(), e);
+            throw new LogException(file, 0, "cannot open: " + IoErrors.reason(e), e);
         }
         try {
             return new LogReader(file, in);

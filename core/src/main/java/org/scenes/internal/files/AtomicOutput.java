@@ -4,12 +4,10 @@ import java.io.BufferedOutputStream;
 import java.io.FilterOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
-import java.nio.file.AccessDeniedException;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.DirectoryIteratorException;
 import java.nio.file.DirectoryStream;
 import java.nio.file.FileAlreadyExistsException;
-import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -79,7 +77,7 @@ public final class AtomicOutput implements AutoCloseable {
             try {
                 out = new BufferedOutputStream(Files.newOutputStream(this.target, StandardOpenOption.WRITE), 1 << 16);
             } catch (IOException e) {
-                throw new IOException(requested + ": cannot write: " + reason(e), e);
+                throw new IOException(requested + ": cannot write: " + IoErrors.reason(e), e);
             }
         } else {
             try {
@@ -87,7 +85,7 @@ public final class AtomicOutput implements AutoCloseable {
             } catch (FileAlreadyExistsException e) {
                 throw new IOException(requested + ": cannot write: " + e.getFile() + " is a file, not a directory", e);
             } catch (IOException e) {
-                throw new IOException(requested + ": cannot create its directory " + directory + ": " + reason(e), e);
+                throw new IOException(requested + ": cannot create its directory " + directory + ": " + IoErrors.reason(e), e);
             }
             removeStaleTemporaries(directory);
             // Not Files.createTempFile: its owner-only permissions would carry over to the target.
@@ -100,7 +98,7 @@ public final class AtomicOutput implements AutoCloseable {
             } catch (IOException e) {
                 OPEN.remove(temporary);
                 // the temporary file's name means nothing to the user: name the target and the reason
-                throw new IOException(requested + ": cannot write in " + directory + ": " + reason(e), e);
+                throw new IOException(requested + ": cannot write in " + directory + ": " + IoErrors.reason(e), e);
             }
         }
         OutputStream named = new NamedErrors(out, requested);
@@ -167,7 +165,7 @@ public final class AtomicOutput implements AutoCloseable {
         private IOException named(IOException e) {
             String message = e.getMessage();
             return message != null && message.startsWith(target + ": ") ? e
-                    : new IOException(target + ": cannot write: " + reason(e), e);
+                    : new IOException(target + ": cannot write: " + IoErrors.reason(e), e);
         }
     }
 
@@ -197,16 +195,6 @@ public final class AtomicOutput implements AutoCloseable {
         } catch (IOException | NumberFormatException | DirectoryIteratorException e) {
             // leftovers stay; the output itself is unaffected
         }
-    }
-
-    static String reason(IOException e) {
-        if (e instanceof AccessDeniedException) {
-            return "permission denied";
-        }
-        if (e instanceof FileSystemException fileSystem && fileSystem.getReason() != null) {
-            return fileSystem.getReason();
-        }
-        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
     }
 
     /**

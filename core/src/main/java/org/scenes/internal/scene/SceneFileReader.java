@@ -25,6 +25,7 @@ import org.scenes.api.SeenObject;
 import org.scenes.api.Side;
 import org.scenes.api.World;
 import org.scenes.internal.files.Inputs;
+import org.scenes.internal.files.IoErrors;
 
 /**
  * Streams the scenes of a scene file one at a time, never holding the JSON tree, so files
@@ -53,7 +54,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         } catch (NoSuchFileException e) {
             throw new SceneFileException(file, 0, 0, "no such file", e);
         } catch (IOException e) {
-            throw new SceneFileException(file, 0, 0, "cannot open: " + e.getMessage(), e);
+            throw new SceneFileException(file, 0, 0, "cannot open: " + IoErrors.reason(e), e);
         }
         try {
             return new SceneFileReader(file, in);
