@@ -16,6 +16,7 @@ import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.target.Destinations;
 import org.scenes.internal.target.Replay;
+import org.scenes.internal.world.ServerDefaults;
 import org.scenes.internal.target.Steering;
 import org.scenes.internal.target.Targets;
 
@@ -101,7 +102,7 @@ public final class Validator {
         }
         double[] destination = destinations == null ? null
                 : destinations.target(nearest, query.world(), Targets.intercept(query.world()), steering);
-        double power = meanDashPower(nearest);
+        double power = staminaSafe(meanDashPower(nearest), query.world());
         List<Action> reached = Targets.reach(actions, donor(actions.get(0), nearest), query, destination, power);
         List<Action> chosen = steered(reached, nearest, query, destination, power, steering);
         steering.sent(chosen.isEmpty() ? null : chosen.get(0));
@@ -134,6 +135,23 @@ public final class Validator {
         }
         return firstUseful == null ? reached : firstUseful;
     }
+
+    /**
+     * {@code power}, or less so that a dash leaves the stamina above the level where the server
+     * starts to cut the player's effort for good (rcssserver's effort_dec_thr 0.3 of stamina_max
+     * 8000): target replay runs every cycle where its teacher paced itself, and its players ended
+     * games exhausted. NaN stays NaN unless the stamina asks for less.
+     */
+    static double staminaSafe(double power, org.scenes.api.World world) {
+        if (world == null || Double.isNaN(world.stamina())) {
+            return power;
+        }
+        double room = Math.max(0, world.stamina() - STAMINA_FLOOR);
+        return Double.isNaN(power) ? (room < ServerDefaults.MAX_POWER ? room : power) : Math.min(power, room);
+    }
+
+    /** The stamina a dash should leave: effort falls below 2,400 (0.3 of 8,000); a margin of two cycles' recovery. */
+    static final double STAMINA_FLOOR = 2400 + 100;
 
     /** The mean power of the neighbours' dashes, NaN when none dashed. */
     private static double meanDashPower(List<Neighbour> nearest) {
