@@ -3,6 +3,7 @@ package org.scenes.cli;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.PrintWriter;
+import java.nio.file.FileSystemException;
 import java.util.Properties;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginException;
@@ -116,7 +117,7 @@ final class ScenesCommand implements Runnable {
         if (e instanceof SceneFileException || e instanceof UsageException || e instanceof PluginException) {
             return e.getMessage();
         }
-        if (e instanceof java.nio.file.FileSystemException fileSystem && fileSystem.getFile() != null) {
+        if (e instanceof FileSystemException fileSystem && fileSystem.getFile() != null) {
             // java.nio's message is the file's name alone for a denied access: say why as well
             return fileSystem.getFile() + ": " + IoErrors.reason(fileSystem);
         }

@@ -97,16 +97,25 @@ public record World(double x, double y, double body, double neck, double vx, dou
     }
 
     /**
+     * The player's distance to the ball, as it believes both positions.
+     *
+     * @return NaN when its own or the ball's position is unknown
+     */
+    public double ballDistance() {
+        return Math.hypot(ballX - x, ballY - y);
+    }
+
+    /**
      * Whether the player believes itself its team's nearest to the ball: it knows where it and the
      * ball are and no teammate it knows of stands nearer the ball.
      *
      * @return false when its own or the ball's position is unknown
      */
     public boolean nearestOfItsTeamToBall() {
-        if (!located() || !ballKnown()) {
+        double own = ballDistance();
+        if (Double.isNaN(own)) {
             return false;
         }
-        double own = Math.hypot(ballX - x, ballY - y);
         for (Player player : players) {
             if (player.relation() == Relation.TEAMMATE && Math.hypot(ballX - player.x(), ballY - player.y()) < own) {
                 return false;

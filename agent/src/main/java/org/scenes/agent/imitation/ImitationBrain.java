@@ -351,8 +351,7 @@ public final class ImitationBrain implements Brain {
             playModeSince = seen.cycle();
             playModes++;
         }
-        boolean atBall = own.located() && own.ballKnown()
-                && Math.hypot(own.ballX() - own.x(), own.ballY() - own.y()) <= kickable;
+        boolean atBall = own.ballDistance() <= kickable;
         return atBall && observer != null ? setPlayKicks.due(playMode, observer.side(), seen.cycle() - playModeSince)
                 : null;
     }

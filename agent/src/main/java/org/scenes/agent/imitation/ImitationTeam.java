@@ -121,12 +121,13 @@ public final class ImitationTeam {
                     // the recorded moves and kicks, before any transform (a mirror would add moves never sent)
                     List<Scene> recorded = new ArrayList<>();
                     reader.forEachRemaining(recorded::add);
-                    moves.computeIfAbsent(unum, u -> new ArrayList<>()).addAll(kickOffMoves(recorded));
+                    List<Action> placements = kickOffMoves(recorded);
+                    moves.computeIfAbsent(unum, u -> new ArrayList<>()).addAll(placements);
                     movedInPlay.merge(unum, recorded.stream().anyMatch(
                             scene -> scene.cycle() > 0 && scene.actionType() == ActionType.MOVE), Boolean::logicalOr);
                     setPlayKicks.merge(unum, SetPlayKicks.of(recorded), SetPlayKicks::with);
                     long moveScenes = recorded.stream().filter(scene -> scene.actionType() == ActionType.MOVE).count();
-                    placesOnce.merge(unum, moveScenes == kickOffMoves(recorded).size(), Boolean::logicalAnd);
+                    placesOnce.merge(unum, moveScenes == placements.size(), Boolean::logicalAnd);
                 }
             }
         }

@@ -122,9 +122,8 @@ public final class Destinations {
             moved[i] = scene.actionType() == ActionType.MOVE;
             atX[i] = world == null ? Double.NaN : world.x();
             atY[i] = world == null ? Double.NaN : world.y();
-            boolean ball = world != null && world.ballKnown();
-            ballX[i] = ball ? world.ballX() : Double.NaN;
-            ballY[i] = ball ? world.ballY() : Double.NaN;
+            ballX[i] = world == null ? Double.NaN : world.ballX();
+            ballY[i] = world == null ? Double.NaN : world.ballY();
             nearest[i] = world != null && world.nearestOfItsTeamToBall();
             i++;
         }
@@ -249,8 +248,7 @@ public final class Destinations {
             return null;
         }
         // the teacher's own rate where enough of its scenes stood so: k neighbours are too few to tell
-        double rate = own.ballKnown() ? chaseRate(Math.hypot(own.ballX() - own.x(), own.ballY() - own.y()),
-                own.nearestOfItsTeamToBall()) : Double.NaN;
+        double rate = chaseRate(own.ballDistance(), own.nearestOfItsTeamToBall());
         if (steering.chase(Double.isNaN(rate) ? ballRuns / (double) count : rate) && ball != null) {
             return ball;
         }

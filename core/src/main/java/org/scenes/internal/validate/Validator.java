@@ -12,13 +12,14 @@ import org.scenes.api.ActionType;
 import org.scenes.api.Neighbour;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
+import org.scenes.api.World;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.target.Destinations;
 import org.scenes.internal.target.Replay;
-import org.scenes.internal.world.ServerDefaults;
 import org.scenes.internal.target.Steering;
 import org.scenes.internal.target.Targets;
+import org.scenes.internal.world.ServerDefaults;
 
 /**
  * Asks the recognizer and selector for an action on every test scene and compares it with
@@ -142,7 +143,7 @@ public final class Validator {
      * 8000): target replay runs every cycle where its teacher paced itself, and its players ended
      * games exhausted. NaN stays NaN unless the stamina asks for less.
      */
-    static double staminaSafe(double power, org.scenes.api.World world) {
+    static double staminaSafe(double power, World world) {
         if (world == null || Double.isNaN(world.stamina())) {
             return power;
         }
@@ -150,8 +151,8 @@ public final class Validator {
         return Double.isNaN(power) ? (room < ServerDefaults.MAX_POWER ? room : power) : Math.min(power, room);
     }
 
-    /** The stamina a dash should leave: effort falls below 2,400 (0.3 of 8,000); a margin of two cycles' recovery. */
-    static final double STAMINA_FLOOR = 2400 + 100;
+    /** The stamina a dash should leave: where the effort starts to fall (2,400), and a margin of two cycles' recovery. */
+    static final double STAMINA_FLOOR = ServerDefaults.EFFORT_DEC_THR * ServerDefaults.STAMINA_MAX + 100;
 
     /** The mean power of the neighbours' dashes, NaN when none dashed. */
     private static double meanDashPower(List<Neighbour> nearest) {

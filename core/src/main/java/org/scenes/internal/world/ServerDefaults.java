@@ -19,6 +19,9 @@ public final class ServerDefaults {
     public static final double MAX_POWER = 100;
     public static final double MAX_MOMENT = 180;
     public static final double MAX_NECK_ANGLE = 90;
+    public static final double STAMINA_MAX = 8000;
+    /** Below this share of {@link #STAMINA_MAX} the server lowers the player's effort, for good. */
+    public static final double EFFORT_DEC_THR = 0.3;
 
     private ServerDefaults() {
     }

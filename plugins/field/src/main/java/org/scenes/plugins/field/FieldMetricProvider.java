@@ -184,7 +184,7 @@ public final class FieldMetricProvider implements MetricProvider {
             for (int i = 0; i < FEATURES; i++) {
                 f[i] *= weights[i];
             }
-            double ballDistance = ballKnown ? Math.hypot(w.ballX() - w.x(), w.ballY() - w.y()) : Double.NaN;
+            double ballDistance = w.ballDistance();
             return new Features(f, ballKnown, ownMode(w.playMode(), scene.observer().side()), ballDistance <= KICKABLE,
                     ballKnown && w.nearestOfItsTeamToBall());
         }
