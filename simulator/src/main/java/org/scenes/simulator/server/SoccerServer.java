@@ -162,10 +162,25 @@ public final class SoccerServer implements AutoCloseable {
                 nextKeepAlive = now + CYCLE_NANOS;
             }
             if (teamsReady(now)) {
+                awaitFirstMoves();
                 return;
             }
             pump(Math.min(now + WAIT_SLICE_NANOS, Math.max(nextKeepAlive, now + 1_000_000)), false);
         }
+    }
+
+    /**
+     * Synchronous mode, before kick-off preparations: a {@code (think)} to every player and its
+     * {@code (done)} awaited (at most the think timeout, no one dropped). A client answers only
+     * after what it sent before, its first move included, so on however busy a machine every
+     * player starts where it placed itself. (rcssserver, too, sends {@code (think)} before kick-off.)
+     */
+    private void awaitFirstMoves() throws IOException {
+        for (Remote remote : remotes) {
+            remote.done = false;
+            send(remote, "(think)");
+        }
+        pump(System.nanoTime() + config.thinkTimeout().toNanos(), true);
     }
 
     /**

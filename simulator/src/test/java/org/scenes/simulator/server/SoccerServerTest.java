@@ -166,8 +166,13 @@ class SoccerServerTest {
             // synch_see needs version 18; score is answered at once, the commands at the step's end
             assertTrue(answers.contains("(error illegal_command_form)"), answers.toString());
             assertTrue(answers.contains("(score 0 0 0)"), answers.toString());
+            // before kick-off preparations a (think) whose (done) says all sent before it is in
+            List<String> beforeKickOff = client.until("(think)", 20);
+            assertTrue(beforeKickOff.stream().noneMatch(m -> m.startsWith("(sense_body")), beforeKickOff.toString());
+            client.send("(done)");
             List<String> first = client.until("(think)", 20);
             long illegal = answers.stream().filter(a -> a.equals("(error illegal_command_form)")).count()
+                    + beforeKickOff.stream().filter(a -> a.equals("(error illegal_command_form)")).count()
                     + first.stream().filter(a -> a.equals("(error illegal_command_form)")).count();
             assertEquals(3, illegal, answers + " " + first);
             client.send("(change_view narrow high)");
