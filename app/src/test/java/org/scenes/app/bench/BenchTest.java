@@ -9,7 +9,6 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.scenes.api.Action;
-import org.scenes.api.Grid;
 import org.scenes.api.ObjectKind;
 import org.scenes.api.Observer;
 import org.scenes.api.PluginConfig;
