@@ -21,7 +21,6 @@ import org.scenes.api.Scene;
 import org.scenes.api.World;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.protocol.MessageParser;
-import org.scenes.internal.protocol.See;
 import org.scenes.internal.vision.Fading;
 import org.scenes.internal.vision.SeeWriter;
 import org.scenes.internal.vision.VisionParams;

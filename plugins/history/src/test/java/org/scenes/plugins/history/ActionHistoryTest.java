@@ -19,7 +19,6 @@ import org.scenes.api.PluginException;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneMetric;
-import org.scenes.api.SceneTransform;
 import org.scenes.api.TopK;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
