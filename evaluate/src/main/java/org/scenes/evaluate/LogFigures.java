@@ -23,7 +23,7 @@ import org.scenes.internal.protocol.CommandType;
  * @param stamina mean stamina over the players' play-on frames
  * @param lowestEffort the lowest effort any of the players had in the game
  * @param kicks kicks that reached the ball (rises of the kick counters), clock advancing
- * @param kickAngle mean angle, degrees, between the ball's velocity after each of those kicks and
+ * @param kickAngle mean angle, degrees, between the ball's velocity after each of those kicks in play on and
  *                  the direction from the ball to the opponent goal's centre (0 = straight at it)
  * @param kickOffs the team's own kick-offs ({@code kick_off_l} for the left team)
  * @param kickOffsTaken those that turned to play on by a kick of the team
@@ -122,7 +122,9 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
                     if (running) {
                         kicks += rise;
                         GameFrame.BallState ball = next.ball();
-                        if (Math.hypot(ball.vx(), ball.vy()) > 1e-6) {
+                        // set plays (a kick-off's pass back) aim where the rules ask: a team that
+                        // concedes often takes many kick-offs, which would say nothing of its play
+                        if (playOn && Math.hypot(ball.vx(), ball.vy()) > 1e-6) {
                             double towardsGoal = Math.atan2(-sign * frame.ball().y(), HALF_LENGTH - sign * frame.ball().x());
                             double moving = Math.atan2(sign * ball.vy(), sign * ball.vx());
                             angleSum += Math.abs(Math.toDegrees(normalize(moving - towardsGoal)));

@@ -143,9 +143,22 @@ class LogFiguresTest {
         assertEquals(90, kickAngle(Side.LEFT, 5, 42.5), 1e-9);
     }
 
+    @Test
+    void kicksOfSetPlaysCountAsKicksButNotForTheirDirection() {
+        // a kick-off passed back: a kick, but the direction figure is of kicks in play on
+        List<GameFrame> frames = List.of(kickFrame(Side.LEFT, "kick_off_l", 1, 0, 0, 0),
+                kickFrame(Side.LEFT, "play_on", 2, 0, -0.5, 0));
+        PlayedGame game = new PlayedGame(PlayedGame.Role.TEACHER, Side.LEFT, 1,
+                new GameResult(0, 0, 0, 0, 2, 2, List.of()), frames, List.of());
+        LogFigures figures = LogFigures.of(game);
+        assertEquals(1, figures.kicks());
+        assertTrue(Double.isNaN(figures.kickAngle()), "no kick in play on: " + figures.kickAngle());
+    }
+
     /** The kick angle of one kick from (10, 5) that sends the ball along (vx, vy), by a player of {@code side}. */
     private static double kickAngle(Side side, double vx, double vy) {
-        List<GameFrame> frames = List.of(kickFrame(side, 1, 0, 0, 0), kickFrame(side, 2, 0, vx / 100, vy / 100));
+        List<GameFrame> frames = List.of(kickFrame(side, "play_on", 1, 0, 0, 0),
+                kickFrame(side, "play_on", 2, 0, vx / 100, vy / 100));
         PlayedGame game = new PlayedGame(PlayedGame.Role.TEACHER, side, 1, new GameResult(0, 0, 0, 0, 2, 2, List.of()),
                 frames, List.of());
         LogFigures figures = LogFigures.of(game);
@@ -153,11 +166,11 @@ class LogFiguresTest {
         return figures.kickAngle();
     }
 
-    private static GameFrame kickFrame(Side side, int time, int kicks, double vx, double vy) {
+    private static GameFrame kickFrame(Side side, String playMode, int time, int kicks, double vx, double vy) {
         org.scenes.internal.gamelog.PlayerState player = new org.scenes.internal.gamelog.PlayerState(side, 1, 0, 1,
                 10.5, 5, 0, 0, 0, 0, 'h', 90, 8000, 1, 1, Double.NaN,
                 new org.scenes.internal.gamelog.PlayerState.Counts(kicks + time - 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0));
-        return new GameFrame(time, "play_on", "Teal", "Amber", 0, 0, new GameFrame.BallState(10, 5, vx, vy),
+        return new GameFrame(time, playMode, "Teal", "Amber", 0, 0, new GameFrame.BallState(10, 5, vx, vy),
                 List.of(player));
     }
 
