@@ -1,5 +1,8 @@
 package org.scenes.internal.target;
 
+import static org.scenes.internal.vision.Landmarks.PITCH_HALF_LENGTH;
+import static org.scenes.internal.vision.Landmarks.PITCH_HALF_WIDTH;
+
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
@@ -47,6 +50,9 @@ public final class Destinations {
      * player's run answers the ball (pressing, covering), not a spot of the pitch.
      */
     static final double BALL_NEAR = 8;
+
+    /** How far inside the field lines a run ends at the latest, metres (a run stops within a metre of its end). */
+    static final double LINE_INSET = 1;
 
     /** Width of the distance bins of {@link #chaseRate}, metres. */
     static final double CHASE_BIN = 1;
@@ -250,8 +256,22 @@ public final class Destinations {
         // the teacher's own rate where enough of its scenes stood so: k neighbours are too few to tell
         double rate = chaseRate(own.ballDistance(), own.nearestOfItsTeamToBall());
         if (steering.chase(Double.isNaN(rate) ? ballRuns / (double) count : rate) && ball != null) {
-            return ball;
+            return onPitch(ball);
         }
-        return steering.spot(new double[] {sumX / count, sumY / count});
+        return onPitch(steering.spot(new double[] {sumX / count, sumY / count}));
+    }
+
+    /**
+     * The point moved inside the field lines by {@link #LINE_INSET}: a ball rolling into the goal
+     * or out, or an offset from a ball by the line, is not followed beyond it (imitators of HELIOS
+     * base stood behind their own goal line in 3 % of play on, HELIOS base in none).
+     */
+    static double[] onPitch(double[] point) {
+        return new double[] {clamp(point[0], PITCH_HALF_LENGTH - LINE_INSET),
+            clamp(point[1], PITCH_HALF_WIDTH - LINE_INSET)};
+    }
+
+    private static double clamp(double value, double limit) {
+        return Math.max(-limit, Math.min(limit, value));
     }
 }

@@ -157,6 +157,22 @@ class DestinationsTest {
     }
 
     @Test
+    void runsEndInsideTheFieldLines() {
+        List<Scene> scenes = new ArrayList<>();
+        for (int t = 0; t < 20; t++) {
+            scenes.add(at(SEVEN, t, t, 0, 5, 0, "play_on", Action.dash(100)));
+        }
+        Destinations destinations = Destinations.of(scenes);
+        // a chase after a ball rolling into the own goal stops a metre before the goal line
+        World defender = at(SEVEN, 0, -45, 2, -50, 1, "play_on", Action.dash(100)).world();
+        assertArrayEquals(new double[] {-51.5, 3}, destinations.target(List.of(neighbour(0)), defender,
+                new double[] {-56, 3}), 1e-9);
+        // a far neighbour's displacement (10 m along x) from beside the side line, the ball unknown
+        World winger = at(SEVEN, 0, 48, 33.5, Double.NaN, Double.NaN, "play_on", Action.dash(100)).world();
+        assertArrayEquals(new double[] {51.5, 33}, destinations.target(List.of(neighbour(0)), winger, null), 1e-9);
+    }
+
+    @Test
     void whenMostNeighboursReachedTheBallThePlayerRunsToItsOwnBall() {
         List<Scene> scenes = new ArrayList<>();
         for (int t = 0; t < 20; t++) {
