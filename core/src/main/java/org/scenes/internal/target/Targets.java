@@ -12,6 +12,9 @@ import static org.scenes.internal.world.ServerDefaults.MAX_MOMENT;
 import static org.scenes.internal.world.ServerDefaults.MAX_NECK_ANGLE;
 import static org.scenes.internal.world.ServerDefaults.MAX_POWER;
 import static org.scenes.internal.world.ServerDefaults.PLAYER_SIZE;
+import static org.scenes.internal.world.ServerDefaults.TACKLE_DIST;
+import static org.scenes.internal.world.ServerDefaults.TACKLE_EXPONENT;
+import static org.scenes.internal.world.ServerDefaults.TACKLE_WIDTH;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -60,6 +63,12 @@ public final class Targets {
     static final double ANCHOR = 10;
     /** The opponent goal's centre in the player's own frame. */
     static final double GOAL_X = 52.5;
+    /**
+     * A tackle is sent only where the player's world model gives it at least this chance: failed
+     * or not, a tackle holds the player for ten cycles, and imitators of HELIOS base tackled 30
+     * times as often as their teacher, from two to four metres.
+     */
+    static final double TACKLE_CHANCE = 0.5;
 
     private Targets() {
     }
@@ -167,6 +176,39 @@ public final class Targets {
     }
 
     /**
+     * Whether the body action of {@code reached} can achieve nothing where {@code query}'s world
+     * model puts the ball: a kick with the ball out of kicking reach, a tackle with the ball
+     * unknown or its chance ({@link #tackleChance}) below {@link #TACKLE_CHANCE}. A kick with the
+     * ball unknown is not judged.
+     */
+    public static boolean futile(List<Action> reached, Scene query) {
+        World own = query.world();
+        if (reached.isEmpty() || own == null || !own.located()) {
+            return false;
+        }
+        return switch (reached.get(0).type()) {
+            case KICK -> own.ballKnown() && kickRate(own) <= 0;
+            case TACKLE -> !own.ballKnown() || tackleChance(own) < TACKLE_CHANCE;
+            default -> false;
+        };
+    }
+
+    /** The chance that a tackle succeeds with the ball where {@code world} puts it (rcssserver's tackle model). */
+    static double tackleChance(World world) {
+        double dx = world.ballX() - world.x();
+        double dy = world.ballY() - world.y();
+        double body = Math.toRadians(world.body());
+        double ahead = dx * Math.cos(body) + dy * Math.sin(body);
+        double aside = -dx * Math.sin(body) + dy * Math.cos(body);
+        if (ahead <= 0) {
+            return 0;
+        }
+        double failure = Math.pow(ahead / TACKLE_DIST, TACKLE_EXPONENT)
+                + Math.pow(Math.abs(aside) / TACKLE_WIDTH, TACKLE_EXPONENT);
+        return Math.max(0, 1 - failure);
+    }
+
+    /**
      * Where the player can first reach its ball's course (the server's ball decay; a run at the
      * default player's top speed after one turn), the ball's resting point when it cannot within
      * {@link #INTERCEPT_HORIZON} cycles; null when its world model knows no ball or no position.
@@ -197,6 +239,11 @@ public final class Targets {
             return power;
         }
         return action.type() == ActionType.DASH ? action.first() : MAX_POWER;
+    }
+
+    /** A run to {@code point} at {@code power} ({@link #goTo}); once there, a turn to face it. */
+    public static Action runTo(double[] point, World own, double power) {
+        return goTo(point, own, power, turnTo(bearing(point[0] - own.x(), point[1] - own.y()), own));
     }
 
     /**

@@ -111,27 +111,36 @@ public final class Validator {
     }
 
     /**
-     * {@code reached}, unless its turn achieves nothing (the body faces its target already) or
-     * turns back against the player's previous turn ({@link Steering}): then the target of the
-     * nearest neighbour that does neither; failing that, the nearest that achieves something.
+     * {@code reached}, unless its turn achieves nothing (the body faces its target already), its
+     * kick or tackle cannot reach the ball ({@link Targets#futile}) or its turn goes back against
+     * the player's previous turn ({@link Steering}): then the target of the nearest neighbour that
+     * does none of these; failing that, the nearest that achieves something; failing that, a run
+     * to the ball in place of a futile kick or tackle.
      */
     private static List<Action> steered(List<Action> reached, List<Neighbour> nearest, Scene query,
                                         double[] destination, double power, Steering steering) {
-        if (!Targets.alreadyReached(reached, query) && !steering.reverses(reached.get(0))) {
+        boolean useless = Targets.alreadyReached(reached, query) || Targets.futile(reached, query);
+        if (!useless && !steering.reverses(reached.get(0))) {
             return reached;
         }
-        List<Action> firstUseful = Targets.alreadyReached(reached, query) ? null : reached;
+        List<Action> firstUseful = useless ? null : reached;
         for (Neighbour neighbour : nearest) {
             Action other = neighbour.scene().primaryAction();
             if (other != null) {
                 List<Action> instead = Targets.reach(withNeck(other, List.of(neighbour)), neighbour.scene(), query,
                         destination, power);
-                if (!Targets.alreadyReached(instead, query)) {
+                if (!Targets.alreadyReached(instead, query) && !Targets.futile(instead, query)) {
                     if (!steering.reverses(instead.get(0))) {
                         return instead;
                     }
                     firstUseful = firstUseful == null ? instead : firstUseful;
                 }
+            }
+        }
+        if (firstUseful == null && Targets.futile(reached, query)) {
+            double[] ball = Targets.intercept(query.world());
+            if (ball != null) {
+                return List.of(Targets.runTo(ball, query.world(), Double.isNaN(power) ? ServerDefaults.MAX_POWER : power));
             }
         }
         return firstUseful == null ? reached : firstUseful;

@@ -16,6 +16,11 @@ public final class ServerDefaults {
     /** How near the ball must be to the player's centre to be kicked. */
     public static final double KICKABLE_AREA = KICKABLE_MARGIN + PLAYER_SIZE + BALL_SIZE;
     public static final double BALL_ACCEL_MAX = 2.7;
+    /** The tackle area: in front of the body up to this far (behind it, none since rcssserver 12)... */
+    public static final double TACKLE_DIST = 2;
+    /** ...and this far to either side; the failure probability grows with this power of both ratios. */
+    public static final double TACKLE_WIDTH = 1.25;
+    public static final double TACKLE_EXPONENT = 6;
     public static final double MAX_POWER = 100;
     public static final double MAX_MOMENT = 180;
     public static final double MAX_NECK_ANGLE = 90;

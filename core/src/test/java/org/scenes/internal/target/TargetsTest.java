@@ -196,6 +196,38 @@ class TargetsTest {
     }
 
     @Test
+    void theTackleChanceFollowsTheServersModel() {
+        // rcssserver: failure = (ahead / 2)^6 + (aside / 1.25)^6, nothing behind the body
+        assertEquals(1 - Math.pow(0.5, 6), Targets.tackleChance(world(0, 0, 0, 1, 0)), DELTA);
+        assertEquals(1 - Math.pow(0.75, 6) - Math.pow(0.4, 6), Targets.tackleChance(world(0, 0, 90, -0.5, 1.5)), DELTA);
+        assertEquals(0, Targets.tackleChance(world(0, 0, 0, 2.5, 0)), DELTA);
+        assertEquals(0, Targets.tackleChance(world(0, 0, 0, -0.5, 0)), DELTA, "behind the body");
+    }
+
+    @Test
+    void aKickOrTackleThatCannotReachTheBallGivesWayToANeighbourThatCanOrToARunToTheBall() {
+        Scene tackled = scene(world(0, 0, 0, 1, 0), true, Action.tackle(50));
+        Scene dashed = scene(world(0, 0, 0, 3, 0), true, Action.dash(70));
+        List<Neighbour> nearest = List.of(new Neighbour(tackled, 0, 0.1), new Neighbour(dashed, 1, 0.2));
+        // the ball a metre ahead: the tackle stands; three metres ahead (the tackle area ends at 2 m): the dash
+        Scene close = scene(world(5, 5, 0, 6, 5), true);
+        assertEquals(List.of(Action.tackle(50)), Validator.prediction(Action.tackle(50), nearest, close, Replay.TARGET));
+        Scene away = scene(world(5, 5, 0, 8, 5), true);
+        assertTrue(Targets.futile(List.of(Action.tackle(50)), away));
+        assertEquals(List.of(Action.dash(70)), Validator.prediction(Action.tackle(50), nearest, away, Replay.TARGET));
+        // no neighbour does better: a run to the ball, turning to it first
+        Scene kicked = scene(world(0, 0, 0, 0.8, 0), true, Action.kick(100, 0));
+        Scene aside = scene(world(5, 5, 0, 5, 9), true);
+        assertTrue(Targets.futile(List.of(Action.kick(100, 0)), aside), "the ball 4 m away");
+        Action run = only(Validator.prediction(Action.kick(100, 0), List.of(new Neighbour(kicked, 0, 0)), aside,
+                Replay.TARGET));
+        assertEquals(ActionType.TURN, run.type());
+        assertEquals(90, run.first(), 1e-6);
+        // within reach, the kick is no longer futile
+        assertFalse(Targets.futile(List.of(Action.kick(100, 0)), scene(world(5, 5, 0, 5.5, 5.3), true)));
+    }
+
+    @Test
     void aTurnBackAgainstThePreviousTurnGivesWayToANeighbourThatKeepsOn() {
         Scene turnBack = scene(world(0, 0, 0, 30, 30), false, Action.turn(-30));
         Scene dashOn = scene(world(0, 0, 0, 30, 30), false, Action.dash(100));
