@@ -3,6 +3,7 @@ package org.scenes.evaluate;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Objects;
 import java.util.Random;
@@ -10,7 +11,6 @@ import java.util.function.LongConsumer;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.GameLogs;
-import org.scenes.simulator.Brain;
 import org.scenes.simulator.BrainFactory;
 import org.scenes.simulator.GameResult;
 import org.scenes.simulator.GameSetup;
@@ -179,17 +179,16 @@ public final class Evaluation {
      * simulator seats them: uniform numbers 1, 2, ...), with a {@code shadow} brain (or none) beside.
      */
     static BrainFactory traced(BrainFactory driver, BrainFactory shadow, long seed, List<PlayerTrace> traces) {
-        return (team, random) -> {
-            // on a live server each player's brain is made on its own thread: a player's driver and shadow together
+        return (team, random) -> new TracedBrain(driver.create(team, random), unum -> {
+            // on a live server each player's number comes on its own thread: traces are kept in number order
+            PlayerTrace trace = new PlayerTrace(unum);
             synchronized (traces) {
-                PlayerTrace trace = new PlayerTrace(traces.size() + 1);
                 traces.add(trace);
-                Brain driving = driver.create(team, random);
-                // the shadow's own random source: it must not draw from the driver's
-                Brain shadowBrain = shadow == null ? null : shadow.create(team, new Random(seed * 31 + traces.size()));
-                return new TracedBrain(driving, shadowBrain, trace);
+                traces.sort(Comparator.comparingInt(PlayerTrace::unum));
             }
-        };
+            // the shadow's own random source: it must not draw from the driver's
+            return new TracedBrain.Seat(trace, shadow == null ? null : shadow.create(team, new Random(seed * 31 + unum)));
+        });
     }
 
     /** The games played, teacher's and imitator's, in seed order. */

@@ -2,8 +2,10 @@ package org.scenes.evaluate;
 
 import java.util.Objects;
 import java.util.function.Consumer;
+import java.util.function.IntFunction;
 import org.scenes.api.ObjectKind;
 import org.scenes.internal.protocol.CommandType;
+import org.scenes.internal.protocol.InitReply;
 import org.scenes.internal.protocol.Message;
 import org.scenes.internal.protocol.MessageParser;
 import org.scenes.internal.protocol.PlayerCommand;
@@ -18,16 +20,33 @@ import org.scenes.simulator.Brain;
  * random source, so the driver plays exactly as it would alone.
  */
 final class TracedBrain implements Brain {
+    /** A player's trace and shadow brain (or none). */
+    record Seat(PlayerTrace trace, Brain shadow) {
+    }
+
     private final Brain driver;
-    private final Brain shadow;
-    private final PlayerTrace trace;
+    /** Makes the trace and shadow for the uniform number the server gives; null when they were given. */
+    private final IntFunction<Seat> seats;
+    private Brain shadow;
+    private PlayerTrace trace;
     private final MessageParser parser = new MessageParser();
     private boolean paused = true;
 
     TracedBrain(Brain driver, Brain shadow, PlayerTrace trace) {
         this.driver = Objects.requireNonNull(driver, "driver");
+        this.seats = null;
         this.shadow = shadow;
         this.trace = Objects.requireNonNull(trace, "trace");
+    }
+
+    /**
+     * A driver whose trace and shadow are made when the server's answer to its init gives its
+     * uniform number: on a live server the players' answers are handled on their own threads in
+     * no fixed order, and a trace or shadow seed taken by arrival went to another number now and then.
+     */
+    TracedBrain(Brain driver, IntFunction<Seat> seats) {
+        this.driver = Objects.requireNonNull(driver, "driver");
+        this.seats = Objects.requireNonNull(seats, "seats");
     }
 
     /** The driver's: the runtime repeats kick-off moves only for a driver that wants them. */
@@ -38,6 +57,16 @@ final class TracedBrain implements Brain {
 
     @Override
     public void receive(String message, Consumer<String> send) {
+        if (trace == null && (message.startsWith("(init ") || message.startsWith("(reconnect "))
+                && parser.parse(message) instanceof InitReply reply && reply.side() != null) {
+            Seat seat = seats.apply(reply.uniformNumber());
+            trace = seat.trace();
+            shadow = seat.shadow();
+        }
+        if (trace == null) {
+            driver.receive(message, send); // nothing to trace before the player has its number
+            return;
+        }
         if (shadow instanceof LateShadow late) {
             late.collect(this::shadowSent); // the reply to what came before this message
         }

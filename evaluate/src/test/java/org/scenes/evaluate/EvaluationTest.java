@@ -4,10 +4,14 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.scenes.api.PluginRegistry;
 import org.scenes.internal.validate.MatchConfig;
+import org.scenes.simulator.Brain;
+import org.scenes.simulator.BrainFactory;
 import org.scenes.simulator.GameSetup;
 import org.scenes.simulator.teacher.Teachers;
 
@@ -59,5 +63,36 @@ class EvaluationTest {
     void disjointMixesDivergeByOneBit() {
         assertEquals(1.0, Comparison.jensenShannon(new double[] {1, 0, 0}, new double[] {0, 1, 0}), 1e-12);
         assertEquals(0.0, Comparison.jensenShannon(new double[] {0.5, 0.5, 0}, new double[] {0.5, 0.5, 0}), 1e-12);
+    }
+
+    @Test
+    void tracesAndShadowsGoByTheNumberTheServerGivesInWhateverOrderItsAnswersCome() {
+        List<PlayerTrace> traces = new ArrayList<>();
+        // a shadow that turns by a number drawn from its random source: which seed it got shows
+        BrainFactory shadows = (team, random) -> {
+            int moment = random.nextInt(180);
+            return (message, send) -> {
+                if (message.startsWith("(see ")) {
+                    send.accept("(turn " + moment + ")");
+                }
+            };
+        };
+        BrainFactory traced = Evaluation.traced((team, random) -> (message, send) -> { }, shadows, 5, traces);
+        Brain first = traced.create("Teal", new Random(1));
+        Brain second = traced.create("Teal", new Random(2));
+        // as on a live server under load: the brain made second has its answer handled first, as number 1
+        second.receive("(init l 1 before_kick_off)", command -> { });
+        first.receive("(init l 2 before_kick_off)", command -> { });
+        first.receive("(see 0 ((b) 10 0))", command -> { });
+        second.receive("(see 0 ((b) 20 0))", command -> { });
+        assertEquals(List.of(1, 2), traces.stream().map(PlayerTrace::unum).toList());
+        for (int unum = 1; unum <= 2; unum++) {
+            PlayerTrace.Decision decision = traces.get(unum - 1).decisions().get(0);
+            assertEquals(new Random(5 * 31 + unum).nextInt(180), decision.shadow().first(), 1e-9,
+                    "number " + unum + "'s shadow is seeded as number " + unum + "'s in process");
+        }
+        assertEquals(TracedBrain.viewKey((org.scenes.internal.protocol.See)
+                new org.scenes.internal.protocol.MessageParser().parse("(see 0 ((b) 20 0))")),
+                traces.get(0).decisions().get(0).viewKey(), "number 1's trace holds number 1's sees");
     }
 }

@@ -9,6 +9,8 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
@@ -61,7 +63,9 @@ class LiveEvaluationTest {
                 // kick-off preparations only when every client's first move has surely arrived: on a busy
                 // machine 300 ms was sometimes too short, and a first see then showed a player unmoved
                 .withTimings(Duration.ofSeconds(2), Duration.ofSeconds(5));
-        GameSeries series = new GameSeries(server, 2 * SEEDS.size(), 2, line -> { });
+        // what the server and the arena said, for a failure's message
+        List<String> said = Collections.synchronizedList(new ArrayList<>());
+        GameSeries series = new GameSeries(server, 2 * SEEDS.size(), 2, said::add);
         CompletableFuture<Integer> port = new CompletableFuture<>();
         ExecutorService executor = Executors.newSingleThreadExecutor();
         Evaluation.Results live;
@@ -71,7 +75,7 @@ class LiveEvaluationTest {
                     () -> series.run(started -> port.complete(started[1]), result -> { }, frame -> { }));
             LiveArena arena = new LiveArena(ClientOptions.of(new ServerAddress("127.0.0.1", port.get(30, TimeUnit.SECONDS)),
                     "Teal").withTimeouts(Duration.ofSeconds(5), Duration.ofSeconds(10)), logs, Duration.ofSeconds(30),
-                    notice -> { });
+                    said::add);
             live = Evaluation.run(plan, arena, done -> { });
             served = serving.get(60, TimeUnit.SECONDS);
         } finally {
@@ -99,7 +103,7 @@ class LiveEvaluationTest {
                 for (int p = 0; p < got.traces().size(); p++) {
                     List<PlayerTrace.Decision> want = firstHalf(expected.traces().get(p));
                     assertTrue(want.size() > 50, game + ": the compared part is long enough");
-                    assertSameDecisions(want, firstHalf(got.traces().get(p)), game + " player " + (p + 1));
+                    assertSameDecisions(want, firstHalf(got.traces().get(p)), game + " player " + (p + 1), said);
                 }
                 // What the players heard agrees with the server's game log.
                 assertFalse(got.frames().isEmpty(), game + ": frames from the game log");
@@ -161,7 +165,7 @@ class LiveEvaluationTest {
 
     /** Equal lists, or a failure that names the first decision where they part (not two lists of hundreds). */
     private static void assertSameDecisions(List<PlayerTrace.Decision> want, List<PlayerTrace.Decision> got,
-                                            String what) {
+                                            String what, List<String> said) {
         int same = 0;
         while (same < Math.min(want.size(), got.size()) && want.get(same).equals(got.get(same))) {
             same++;
@@ -169,7 +173,8 @@ class LiveEvaluationTest {
         if (same < want.size() || same < got.size()) {
             fail(what + ": " + want.size() + " decisions in process, " + got.size() + " live, the first " + same
                     + " the same; then in process " + want.subList(same, Math.min(want.size(), same + 3))
-                    + ", live " + got.subList(same, Math.min(got.size(), same + 3)));
+                    + ", live " + got.subList(same, Math.min(got.size(), same + 3)) + "; the server and arena said "
+                    + said);
         }
     }
 
