@@ -63,7 +63,9 @@ final class ConvertArchive {
                     abandoned.isEmpty() ? "" : " (not written, temporary files removed: " + abandoned + ")");
             err.flush();
         }, "scenes-convert-interrupted");
-        Runtime.getRuntime().addShutdownHook(interrupted);
+        if (!ShutdownHooks.addOrRun(interrupted)) {
+            return ExitCodes.FAILURE;
+        }
         ArchiveConversion.Result result;
         try {
             result = conversion.run(TerminalProgress.reporter());
@@ -71,11 +73,7 @@ final class ConvertArchive {
             // no game log in the directory, or two of one name: nothing was converted
             throw new UsageException(e.getMessage());
         } finally {
-            try {
-                Runtime.getRuntime().removeShutdownHook(interrupted);
-            } catch (IllegalStateException stopping) {
-                // the JVM is already stopping: the hook reports
-            }
+            ShutdownHooks.remove(interrupted);
         }
         for (ManifestRow row : result.rows()) {
             if (row.status() == ManifestRow.Status.failed) {

@@ -154,7 +154,9 @@ final class ConvertCommand implements Callable<Integer> {
                     abandoned.isEmpty() ? "" : "; not written (its temporary file removed): " + abandoned);
             err.flush();
         }, "scenes-convert-interrupted");
-        Runtime.getRuntime().addShutdownHook(interrupted);
+        if (!ShutdownHooks.addOrRun(interrupted)) {
+            return ExitCodes.FAILURE;
+        }
         PlayerLogConversion.Result result;
         try {
             result = conversion.run(new PlayerLogConversion.Listener() {
@@ -176,11 +178,7 @@ final class ConvertCommand implements Callable<Integer> {
             // still under the hook: a signal while the summary prints is told what was written
             printSummary(spec.commandLine().getOut(), result.total(), grid, result.written(), result.seconds());
         } finally {
-            try {
-                Runtime.getRuntime().removeShutdownHook(interrupted);
-            } catch (IllegalStateException stopping) {
-                // the JVM is already stopping: the hook reports
-            }
+            ShutdownHooks.remove(interrupted);
         }
         if (!result.failed().isEmpty()) {
             err.printf("scenes: error: %d of %d logs gave no scenes%s%n", result.failed().size(), logs.size(),

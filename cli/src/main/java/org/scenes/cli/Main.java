@@ -17,8 +17,9 @@ public final class Main {
             "simulate", "bench", "replay", "stats", "show");
 
     public static void main(String[] args) {
-        if (args.length > 0 && ABANDONED_ON_INTERRUPT.contains(args[0])) {
-            Runtime.getRuntime().addShutdownHook(new Thread(AtomicOutput::abandonAll, "scenes-abandon-outputs"));
+        if (args.length > 0 && ABANDONED_ON_INTERRUPT.contains(args[0])
+                && !ShutdownHooks.addOrRun(new Thread(AtomicOutput::abandonAll, "scenes-abandon-outputs"))) {
+            return; // stopped while starting: nothing begun
         }
         int status;
         try {
