@@ -53,6 +53,28 @@ class InferredCommandsTest {
         assertTrue(r.kickDirectionWithin5() >= 0.90, r.table());
     }
 
+    /** The same from the other forms rcssserver writes its game log in: text versions 4 and 5, and JSON. */
+    @Test
+    void theInferredCommandsAgreeInEveryFormOfTheGameLog() throws IOException {
+        Simulator simulator = game("statebased", 1000);
+        Path rcl = simulator.recorded().get(1);
+        CommandCheck.Result six = CommandCheck.check(simulator.recorded().get(0), rcl);
+        for (String version : List.of("4", "5", "json")) {
+            Path rewritten = GameLogVersions.rewrite(simulator.recorded().get(0), version,
+                    dir.resolve("game-" + version + ".rcg"));
+            String head = Files.readString(rewritten).substring(0, 4);
+            assertEquals(version.equals("json") ? "[{\"v" : "ULG" + version, head, "the log is in the form asked");
+            CommandCheck.Result r = CommandCheck.check(rewritten, rcl);
+            String what = "version " + version + ":\n" + r.table();
+            assertEquals(six.executed(), r.executed(), what);
+            assertEquals(six.byType(), r.byType(), what);
+            assertTrue(r.agreement() >= 0.995, what);
+            assertTrue(r.turnMedian() <= 2, what);
+            assertTrue(r.dashPowerWithin5() >= 0.95, what);
+            assertTrue(r.kickDirectionWithin5() >= 0.90, what);
+        }
+    }
+
     /**
      * The scenes of the cycles both conversions have carry the same actions and see the same. The
      * game log does not show the steps before kick-off (the command log's referee counts them): an
