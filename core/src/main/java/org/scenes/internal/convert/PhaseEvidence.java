@@ -81,7 +81,7 @@ final class PhaseEvidence {
         for (int c = 0; c < offsets.size(); c++) {
             BitSet sees = new BitSet(steps.size());
             for (int s = 0; s < steps.size(); s++) {
-                if (GameLogConverter.asynchSees(steps.get(s), periods.get(s), offsets.get(c), simulatorStep) > 0) {
+                if (SeePhases.asynchSees(steps.get(s), periods.get(s), offsets.get(c), simulatorStep) > 0) {
                     sees.set(s);
                 }
             }

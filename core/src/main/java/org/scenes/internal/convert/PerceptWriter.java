@@ -1,0 +1,158 @@
+package org.scenes.internal.convert;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import org.scenes.api.Observer;
+import org.scenes.api.Side;
+import org.scenes.internal.gamelog.GameFrame;
+import org.scenes.internal.gamelog.PlayerState;
+import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.vision.SeeWriter;
+import org.scenes.internal.vision.VisionNumbers;
+
+/**
+ * Rebuilds what a player got and sent, message by message, from the game log's shows: its
+ * {@code init} answers, the {@code see} the server would have sent (by {@link SeeWriter}, with the
+ * vision model), its {@code sense_body}, the referee's calls it heard, and its own commands; each
+ * line goes to the player's {@link SceneConverter.Feed}. One per worker: it holds buffers and a parser.
+ */
+final class PerceptWriter {
+    private final Path gameLog;
+    private final GameParameters parameters;
+    private final SceneConverter converter;
+    private final StringBuilder text = new StringBuilder(4096);
+    /** This writer's own: a parser serves one thread. */
+    private final MessageParser parser = new MessageParser();
+    private byte[] bytes = new byte[4096];
+
+    PerceptWriter(Path gameLog, GameParameters parameters, SceneConverter converter) {
+        this.gameLog = gameLog;
+        this.parameters = parameters;
+        this.converter = converter;
+    }
+
+    /** Whether the scenes carry world models, which read the player's state and the referee's calls. */
+    boolean world() {
+        return converter.world();
+    }
+
+    /** Opens the player's feed at its first show with what the server answered its init. */
+    void start(RebuiltPlayer player, GameFrame frame) throws IOException {
+        player.feed = converter.feed(Path.of(gameLog + "#" + player.key), player.sink);
+        Observer o = player.observer;
+        line(player, "(init " + o.team() + " (version " + Math.max(player.version, 3) + ")"
+                + (player.goalie ? " (goalie)" : "") + ")");
+        line(player, "(init " + o.side().letter() + ' ' + o.uniformNumber() + ' ' + frame.playMode() + ")");
+        player.heardMode = frame.playMode();
+        if (player.synchSee) {
+            line(player, "(ok synch_see)");
+        }
+    }
+
+    /** A message the player sent; {@code synch_see} becomes the server's answer. */
+    void deliver(RebuiltPlayer player, String message) throws IOException {
+        if (message.startsWith("(synch_see)")) {
+            if (!player.synchSee) {
+                player.synchSee = true;
+                line(player, "(ok synch_see)");
+            }
+            return;
+        }
+        if (BodyCommands.first(parser, message) != null) {
+            player.sentBody = true;
+        }
+        line(player, message);
+    }
+
+    /** The see the server sends the player of what the show holds, in its view mode and heterogeneous type. */
+    void see(RebuiltPlayer player, PlayerState self, GameFrame frame) throws IOException {
+        if (player.writer == null || player.type != self.type()) {
+            player.type = self.type();
+            player.writer = new SeeWriter(parameters.vision(self.type(), player.version), player.fading);
+        }
+        SeeWriter writer = player.writer;
+        text.setLength(0);
+        double head = VisionNumbers.normalize(self.body() + self.neck());
+        writer.begin(text, frame.time(), self.x(), self.y(), self.vx(), self.vy(), head, self.viewWidth(),
+                self.viewQuality() == 'h');
+        writer.landmarks();
+        GameFrame.BallState ball = frame.ball();
+        writer.ball(ball.x(), ball.y(), ball.vx(), ball.vy());
+        for (PlayerState other : frame.players()) {
+            if (other == self || other.state() == 0) {
+                continue;
+            }
+            String team = other.side() == Side.LEFT ? frame.leftTeam() : frame.rightTeam();
+            writer.player(other.x(), other.y(), other.vx(), other.vy(), team, other.unum(),
+                    (other.state() & PlayerState.GOALIE) != 0, other.body(),
+                    VisionNumbers.normalize(other.body() + other.neck()));
+        }
+        writer.lines();
+        writer.end();
+        line(player, text);
+    }
+
+    /** The bare {@code sense_body} of a cycle, when no world model reads its fields. */
+    void senseBody(RebuiltPlayer player, int time) throws IOException {
+        line(player, "(sense_body " + time + ")");
+    }
+
+    /**
+     * The player's {@code sense_body} as the server writes it (version 7's fields, which the
+     * world model reads): stamina, speed relative to the head, neck angle, command counts.
+     */
+    void senseBody(RebuiltPlayer player, PlayerState self, int time) throws IOException {
+        double speed = Math.hypot(self.vx(), self.vy());
+        double head = self.body() + self.neck();
+        double direction = speed < 1e-9 ? 0
+                : Math.rint(VisionNumbers.normalize(Math.toDegrees(Math.atan2(self.vy(), self.vx())) - head));
+        PlayerState.Counts c = self.counts();
+        text.setLength(0);
+        text.append("(sense_body ").append(time).append(" (view_mode ")
+                .append(self.viewQuality() == 'h' ? "high " : "low ")
+                .append(self.viewWidth() <= 60 ? "narrow" : self.viewWidth() >= 180 ? "wide" : "normal")
+                .append(") (stamina ");
+        VisionNumbers.append(text, Math.rint(self.stamina()), 0).append(' ');
+        VisionNumbers.append(text, self.effort(), 6).append(' ');
+        VisionNumbers.append(text, self.capacity(), 0).append(") (speed ");
+        VisionNumbers.append(text, VisionNumbers.quantize(speed, 0.01), 2).append(' ');
+        VisionNumbers.append(text, direction, 0).append(") (head_angle ");
+        VisionNumbers.append(text, Math.rint(self.neck()), 0).append(") (kick ").append(c.kick())
+                .append(") (dash ").append(c.dash()).append(") (turn ").append(c.turn())
+                .append(") (say ").append(c.say()).append(") (turn_neck ").append(c.turnNeck())
+                .append(") (catch ").append(c.catches()).append(") (move ").append(c.move())
+                .append(") (change_view ").append(c.changeView()).append("))");
+        line(player, text);
+    }
+
+    /** The referee's call when the play mode changed since the player last heard ({@code goal_l_2} for goals). */
+    void referee(RebuiltPlayer player, GameFrame frame) throws IOException {
+        String mode = frame.playMode();
+        if (mode.equals(player.heardMode)) {
+            return;
+        }
+        player.heardMode = mode;
+        String word = mode.equals("goal_l") ? "goal_l_" + frame.scoreLeft()
+                : mode.equals("goal_r") ? "goal_r_" + frame.scoreRight() : mode;
+        line(player, "(hear " + frame.time() + " referee " + word + ")");
+    }
+
+    /** One line to the player's feed, as bytes (ASCII copied without encoding). */
+    private void line(RebuiltPlayer player, CharSequence message) throws IOException {
+        int length = message.length();
+        if (bytes.length < length) {
+            bytes = new byte[Math.max(length, bytes.length * 2)];
+        }
+        for (int i = 0; i < length; i++) {
+            char c = message.charAt(i);
+            if (c >= 0x80) {
+                byte[] encoded = message.toString().getBytes(StandardCharsets.UTF_8);
+                player.feed.line(encoded, 0, encoded.length);
+                return;
+            }
+            bytes[i] = (byte) c;
+        }
+        player.feed.line(bytes, 0, length);
+    }
+}
