@@ -309,10 +309,12 @@ public final class MessageParser {
             }
         } else {
             int nameEnd = pos;
-            while (nameEnd < end && buf[nameEnd] != ')' && buf[nameEnd] != '(') {
+            // a quote ends the name too: no landmark's name has one, and the balance check read
+            // a string from it, so a name read on past it could run off the message's end
+            while (nameEnd < end && buf[nameEnd] != ')' && buf[nameEnd] != '(' && buf[nameEnd] != '"') {
                 nameEnd++;
             }
-            if (buf[nameEnd] != ')') {
+            if (nameEnd >= end || buf[nameEnd] != ')') {
                 return null;
             }
             ObjectName known = objectNames.get(buf, nameStart, nameEnd);

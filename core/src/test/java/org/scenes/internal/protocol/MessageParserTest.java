@@ -31,6 +31,20 @@ class MessageParserTest {
     }
 
     @Test
+    void aQuoteInALandmarksNameIsNoNameAndNeverRunsOffTheMessage() {
+        // found by fuzzing: the balance check reads a string from the quote, the name reader read on
+        // past it, and an unclosed list later ran it off the end (ArrayIndexOutOfBoundsException)
+        See see = assertInstanceOf(See.class, parser.parse(
+                "(see 5 ((f \") 1 2) ((g r) 50 -10) ((P) 0.6 -83 ((p \"Opp\" 1 goalie) 11 2) ((l r) 54.1 79))"));
+        assertEquals(List.of("l r"), see.objects().stream().map(VisualObject::name).toList());
+        assertEquals(1, see.leftovers().size(), "what could not be read is kept as leftovers: " + see.leftovers());
+        // nor is a lone quote taken into a flag's name
+        See lone = assertInstanceOf(See.class,
+                parser.parse("(see 5 ((f \") 1 2) ((g r) 50 -10) ((p \"Opp\" 1) 11 2) ((l r) 54.1 79))"));
+        assertTrue(lone.objects().stream().noneMatch(o -> o.name().contains("\"")), lone.toString());
+    }
+
+    @Test
     void seeKeepsTimeAndObjectsInServerOrder() {
         See see = see("(see 37 ((f r b) 37.3 13) ((b) 2.7 -5 -0.1 3.2) ((l r) 36.2 90))");
         assertEquals(37, see.time());
