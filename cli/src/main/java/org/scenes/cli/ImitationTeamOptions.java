@@ -6,7 +6,6 @@ import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.imitation.ImitationTeam;
 import org.scenes.agent.imitation.Viewing;
 import org.scenes.api.PluginRegistry;
-import org.scenes.evaluate.ClockPacedBrain;
 import org.scenes.evaluate.PacedBrain;
 import org.scenes.internal.validate.MatchConfig;
 import org.scenes.simulator.BrainFactory;
@@ -14,7 +13,7 @@ import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.TypeConversionException;
 
-/** {@code --knowledge}, {@code --think-steps} and {@code --think-millis}: how an imitation team ({@code play}, {@code match}) is assembled. */
+/** {@code --knowledge} and {@code --think-steps}: how an imitation team ({@code play}, {@code match}) is assembled. */
 final class ImitationTeamOptions {
     @Option(names = "--knowledge", paramLabel = "counterpart|team", defaultValue = "counterpart",
             converter = KnowledgeConverter.class,
@@ -28,43 +27,19 @@ final class ImitationTeamOptions {
                     + " (the scenes' own tempo). Default: ${DEFAULT-VALUE}.")
     int thinkSteps;
 
-    /** A rest longer than this (a minute) is a typing error, not a tempo. */
-    private static final long MAX_THINK_MILLIS = 60_000;
-
-    @Option(names = "--think-millis", paramLabel = "MS", defaultValue = "0",
-            description = "Imitators rest MS milliseconds of wall time after each decision, then decide on the"
-                    + " next see (the classic Krislet client's 200 ms sleep); for real-time servers only. Not with"
-                    + " --think-steps. Default: ${DEFAULT-VALUE} (off).")
-    long thinkMillis;
-
     /** The team from the scene files, on the configuration's matching. */
     ImitationTeam load(List<Path> files, MatchConfig config, PluginRegistry registry) {
         if (thinkSteps < 0) {
             throw new UsageException("--think-steps: must be 0 or more, not " + thinkSteps);
         }
-        if (thinkMillis < 0 || thinkMillis > MAX_THINK_MILLIS) {
-            throw new UsageException("--think-millis: must be 0 to " + MAX_THINK_MILLIS + ", not " + thinkMillis);
-        }
-        if (thinkMillis > 0 && thinkSteps > 0) {
-            throw new UsageException("--think-millis and --think-steps: give one tempo, not both");
-        }
         return ImitationTeam.load(files, config.transformFactory(registry),
                 knowledgeBase -> config.recognizer(knowledgeBase, registry, config.k()), knowledge);
     }
 
-    /** In the embedded simulator the steps do not follow the clock: a wall-clock tempo is a usage error there. */
-    void requireNoClockTempo() {
-        if (thinkMillis != 0) {
-            throw new UsageException("--think-millis: only for a real-time server (--server); in the embedded simulator"
-                    + " the steps do not follow the clock (--think-steps paces by steps)");
-        }
-    }
-
     /** The players' brains, paced when asked. */
     BrainFactory brains(ImitationTeam team, MatchConfig config, PluginRegistry registry, ImitationBrain.Guards guards) {
-        BrainFactory brains = team.brains(config.selectorFactory(registry), config.transformFactory(registry), guards,
-                config.replay());
-        return Viewing.with(ClockPacedBrain.pace(PacedBrain.pace(brains, thinkSteps), thinkMillis), config.view());
+        return Viewing.with(PacedBrain.pace(team.brains(config.selectorFactory(registry),
+                config.transformFactory(registry), guards, config.replay()), thinkSteps), config.view());
     }
 
     static final class KnowledgeConverter implements ITypeConverter<ImitationTeam.Knowledge> {

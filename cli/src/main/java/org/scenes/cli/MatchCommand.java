@@ -88,7 +88,6 @@ final class MatchCommand implements Callable<Integer> {
         if (roles.thinkSteps < 0) {
             throw new UsageException("--think-steps: must be 0 or more, not " + roles.thinkSteps);
         }
-        roles.requireNoClockTempo();
         BrainFactory shadowTeacher;
         try {
             shadowTeacher = Teachers.byName(shadow);

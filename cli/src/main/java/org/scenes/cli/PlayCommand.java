@@ -100,7 +100,6 @@ final class PlayCommand implements Callable<Integer> {
         if (outDir == null) {
             throw new UsageException("--out-dir: say where the player logs go (or play on a server with --server)");
         }
-        roles.requireNoClockTempo();
         int players = this.players == null ? 5 : this.players;
         String[] teamNames = names.split(",", -1);
         if (teamNames.length != 2) {
