@@ -267,11 +267,7 @@ public final class Destinations {
      * base stood behind their own goal line in 3 % of play on, HELIOS base in none).
      */
     static double[] onPitch(double[] point) {
-        return new double[] {clamp(point[0], PITCH_HALF_LENGTH - LINE_INSET),
-            clamp(point[1], PITCH_HALF_WIDTH - LINE_INSET)};
-    }
-
-    private static double clamp(double value, double limit) {
-        return Math.max(-limit, Math.min(limit, value));
+        return new double[] {Targets.clamp(point[0], PITCH_HALF_LENGTH - LINE_INSET),
+            Targets.clamp(point[1], PITCH_HALF_WIDTH - LINE_INSET)};
     }
 }

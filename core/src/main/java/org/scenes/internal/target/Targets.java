@@ -381,7 +381,8 @@ public final class Targets {
         return Math.toDegrees(Math.atan2(dy, dx));
     }
 
-    private static double clamp(double value, double limit) {
+    /** {@code value} within [-limit, limit]. */
+    static double clamp(double value, double limit) {
         return Math.max(-limit, Math.min(limit, value));
     }
 }

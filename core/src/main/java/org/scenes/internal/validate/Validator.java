@@ -119,7 +119,8 @@ public final class Validator {
      */
     private static List<Action> steered(List<Action> reached, List<Neighbour> nearest, Scene query,
                                         double[] destination, double power, Steering steering) {
-        boolean useless = Targets.alreadyReached(reached, query) || Targets.futile(reached, query);
+        boolean futile = Targets.futile(reached, query);
+        boolean useless = futile || Targets.alreadyReached(reached, query);
         if (!useless && !steering.reverses(reached.get(0))) {
             return reached;
         }
@@ -137,7 +138,7 @@ public final class Validator {
                 }
             }
         }
-        if (firstUseful == null && Targets.futile(reached, query)) {
+        if (firstUseful == null && futile) {
             double[] ball = Targets.intercept(query.world());
             if (ball != null) {
                 return List.of(Targets.runTo(ball, query.world(), Double.isNaN(power) ? ServerDefaults.MAX_POWER : power));
