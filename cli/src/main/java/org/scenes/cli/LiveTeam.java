@@ -54,11 +54,7 @@ final class LiveTeam {
             throw new IllegalStateException("could not write the reports as JSON", e);
         } finally {
             printed.countDown();
-            try {
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException shuttingDown) {
-                // the hook is running: it stopped the players
-            }
+            ShutdownHooks.remove(hook); // unless it is running: then it stopped the players
         }
         return TeamRunner.exitCode(reports) == 0 ? ExitCodes.OK : ExitCodes.FAILURE;
     }

@@ -1,8 +1,9 @@
 package org.scenes.cli;
 
 /**
- * The shutdown hooks by which commands report what an interrupt left complete. A signal may come
- * while the command is still starting, when the JVM refuses new hooks: the report is made at once.
+ * The commands' shutdown hooks (reports of what an interrupt left complete, players' goodbyes,
+ * logs completed). A signal may come while a command is still starting, when the JVM refuses new
+ * hooks: the hook's work is then done at once.
  */
 final class ShutdownHooks {
     private ShutdownHooks() {
@@ -19,12 +20,12 @@ final class ShutdownHooks {
         }
     }
 
-    /** Removes {@code hook} unless it is running (the JVM is stopping: it reports). */
+    /** Removes {@code hook} unless it is running (the JVM is stopping: it does its work). */
     static void remove(Thread hook) {
         try {
             Runtime.getRuntime().removeShutdownHook(hook);
         } catch (IllegalStateException stopping) {
-            // the hook reports
+            // the hook is running
         }
     }
 }

@@ -47,10 +47,6 @@ final class StopSignals implements AutoCloseable {
     /** The command ended by itself: its shutdown hook is not needed any more. */
     @Override
     public void close() {
-        try {
-            Runtime.getRuntime().removeShutdownHook(hook);
-        } catch (IllegalStateException shuttingDown) {
-            // the hook is running: it waits for the shutdown to complete
-        }
+        ShutdownHooks.remove(hook); // unless it is running: then it waits for the shutdown to complete
     }
 }
