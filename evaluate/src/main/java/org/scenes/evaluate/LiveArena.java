@@ -23,7 +23,6 @@ import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.GameLogReader;
 import org.scenes.internal.protocol.Hear;
 import org.scenes.internal.protocol.InitReply;
-import org.scenes.internal.protocol.Message;
 import org.scenes.internal.protocol.MessageParser;
 import org.scenes.internal.protocol.SenseBody;
 import org.scenes.simulator.Brain;
@@ -282,9 +281,8 @@ public final class LiveArena implements Arena {
             @Override
             public void receive(String message, Consumer<String> send) {
                 if (inner == null) {
-                    Message parsed = message.startsWith("(init ") || message.startsWith("(reconnect ")
-                            ? parser.parse(message) : null;
-                    if (!(parsed instanceof InitReply init) || init.side() == null) {
+                    InitReply init = PlayerNumber.given(parser, message);
+                    if (init == null) {
                         return;
                     }
                     if (init.side() != side) {

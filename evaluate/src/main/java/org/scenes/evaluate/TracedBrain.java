@@ -57,8 +57,8 @@ final class TracedBrain implements Brain {
 
     @Override
     public void receive(String message, Consumer<String> send) {
-        if (trace == null && (message.startsWith("(init ") || message.startsWith("(reconnect "))
-                && parser.parse(message) instanceof InitReply reply && reply.side() != null) {
+        InitReply reply = trace == null ? PlayerNumber.given(parser, message) : null;
+        if (reply != null) {
             Seat seat = seats.apply(reply.uniformNumber());
             trace = seat.trace();
             shadow = seat.shadow();
