@@ -176,11 +176,16 @@ public final class SoccerServer implements AutoCloseable {
      * player starts where it placed itself. (rcssserver, too, sends {@code (think)} before kick-off.)
      */
     private void awaitFirstMoves() throws IOException {
+        askToThink();
+        pump(System.nanoTime() + config.thinkTimeout().toNanos(), true);
+    }
+
+    /** A {@code (think)} to every player, each owing its {@code (done)} again. */
+    private void askToThink() {
         for (Remote remote : remotes) {
             remote.done = false;
             send(remote, "(think)");
         }
-        pump(System.nanoTime() + config.thinkTimeout().toNanos(), true);
     }
 
     /**
@@ -225,10 +230,7 @@ public final class SoccerServer implements AutoCloseable {
             if (!engine.sense()) {
                 return true;
             }
-            for (Remote remote : remotes) {
-                remote.done = false;
-                send(remote, "(think)");
-            }
+            askToThink();
             long deadline = System.nanoTime() + config.thinkTimeout().toNanos();
             pump(deadline, true);
             for (Remote remote : List.copyOf(remotes)) {
