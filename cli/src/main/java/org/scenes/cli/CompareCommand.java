@@ -7,6 +7,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -14,6 +15,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 import org.scenes.internal.convert.SceneComparison;
+import org.scenes.internal.scene.SceneCompression;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -58,11 +60,16 @@ final class CompareCommand implements Callable<Integer> {
         }
         List<Path> left = new ArrayList<>();
         List<Path> right = new ArrayList<>();
+        // namesakes: the same player's file, whatever each side's compression (Teal_1.json.gz, Teal_1.json.zst)
+        Map<String, Path> seconds = new HashMap<>();
+        try (Stream<Path> files = Files.list(second)) {
+            files.filter(f -> SceneCompression.isSceneFile(f) && Files.isRegularFile(f)).sorted()
+                    .forEach(f -> seconds.putIfAbsent(SceneCompression.baseName(f), f));
+        }
         try (Stream<Path> files = Files.list(first)) {
-            for (Path file : files.filter(f -> f.getFileName().toString().matches(".*\\.json(\\.gz)?"))
-                    .sorted().toList()) {
-                Path other = second.resolve(file.getFileName().toString());
-                if (Files.isRegularFile(other)) {
+            for (Path file : files.filter(SceneCompression::isSceneFile).sorted().toList()) {
+                Path other = seconds.get(SceneCompression.baseName(file));
+                if (other != null) {
                     left.add(file);
                     right.add(other);
                 }

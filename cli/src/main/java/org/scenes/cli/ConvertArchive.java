@@ -94,8 +94,8 @@ final class ConvertArchive {
                 converted, result.resumed());
         out.printf(Locale.ROOT, "%-22s %d%n", "Failed", failed);
         out.printf(Locale.ROOT, "%-22s %d (no command log)%n", "Skipped", skipped);
-        out.printf(Locale.ROOT, "%-22s %d scene files, %d scenes, in %s/TEAM/GAME_UNUM.json.gz%n", "Written",
-                players, scenes, outDir);
+        out.printf(Locale.ROOT, "%-22s %d scene files, %d scenes, in %s/TEAM/%s%n", "Written",
+                players, scenes, outDir, options.compression.fileName("GAME_UNUM"));
         out.printf(Locale.ROOT, "%-22s %d (each game's in the manifest and %s/.games/GAME.json)%n", "Warnings",
                 warnings, outDir);
         out.printf(Locale.ROOT, "%-22s %s%n", "Manifest", result.manifest());

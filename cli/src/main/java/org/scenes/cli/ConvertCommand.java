@@ -16,6 +16,7 @@ import org.scenes.internal.convert.DropReason;
 import org.scenes.internal.convert.MalformedLine;
 import org.scenes.internal.files.AtomicOutput;
 import org.scenes.internal.gamelog.GameLogs;
+import org.scenes.internal.scene.SceneCompression;
 import org.scenes.options.GameLogOptions;
 import org.scenes.options.GridOptions;
 import org.scenes.options.KeyConverters;
@@ -57,15 +58,22 @@ final class ConvertCommand implements Callable<Integer> {
     Output output;
 
     static final class Output {
-        @Option(names = {"-o", "--output"}, paramLabel = "OUT.json[.gz]",
-                description = "One scene file for all logs (gzip when the name ends in .gz).")
+        @Option(names = {"-o", "--output"}, paramLabel = "OUT.json[.gz|.zst]",
+                description = "One scene file for all logs (gzip when the name ends in .gz, zstd in .zst).")
         Path file;
 
         @Option(names = "--out-dir", paramLabel = "DIR",
                 description = "One scene file per log: DIR/<log name>.json.gz (game logs: DIR/TEAM_UNUM.json.gz;"
-                        + " an archive: DIR/TEAM/GAME_UNUM.json.gz).")
+                        + " an archive: DIR/TEAM/GAME_UNUM.json.gz); .json.zst or .json with --compression.")
         Path directory;
     }
+
+    @Option(names = "--compression", paramLabel = "gzip|zstd|none", defaultValue = "gzip",
+            converter = KeyConverters.Compression.class,
+            description = {"With --out-dir: how the scene files are compressed. zstd writes files as small as gzip's"
+                    + " in a tenth of its CPU, and every scenes command reads them (zstd -d too); gzip is what zcat"
+                    + " reads. Default: ${DEFAULT-VALUE}."})
+    SceneCompression compression;
 
     @Mixin
     GridOptions gridOptions;
@@ -120,7 +128,7 @@ final class ConvertCommand implements Callable<Integer> {
         gameLogOptions.check();
         return new ConvertSettings(grid, pairingOptions.pairing(), pairingOptions.strict(), worldOptions.world(),
                 unanswered == Unanswered.KEEP, gameLogOptions.fading(), gameLogOptions.selected(),
-                gameLogOptions.commandsFirst(), gameLogOptions.seePhase(), threads);
+                gameLogOptions.commandsFirst(), gameLogOptions.seePhase(), threads, compression);
     }
 
     @Override
@@ -131,11 +139,15 @@ final class ConvertCommand implements Callable<Integer> {
             return new ConvertArchive(this).run(grid);
         }
         if (output.file != null) {
+            if (spec.commandLine().getParseResult().hasMatchedOption("--compression")) {
+                throw new UsageException("--compression names the files of --out-dir; -o " + output.file
+                        + " is compressed as its name ends (.gz gzip, .zst zstd)");
+            }
             OutputPaths.checkFile("-o", output.file, logs);
         } else {
             OutputPaths.checkDirectory("--out-dir", output.directory);
             for (String name : outputNames(logs)) {
-                OutputPaths.checkNotInput("--out-dir", output.directory.resolve(name + ".json.gz"), logs);
+                OutputPaths.checkNotInput("--out-dir", output.directory.resolve(compression.fileName(name)), logs);
             }
         }
         PrintWriter err = spec.commandLine().getErr();

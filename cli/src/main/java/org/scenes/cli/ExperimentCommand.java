@@ -11,6 +11,7 @@ import java.util.stream.Stream;
 import org.scenes.app.experiment.Sweeping;
 import org.scenes.internal.experiment.ResultTable;
 import org.scenes.internal.experiment.Sweep;
+import org.scenes.internal.scene.SceneCompression;
 import org.scenes.options.SweepOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -61,15 +62,14 @@ final class ExperimentCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
-    /** The scene files, a directory standing for the .json and .json.gz files in it, sorted. */
+    /** The scene files, a directory standing for the scene files in it (.json, .json.gz, .json.zst), sorted. */
     private static List<Path> read(List<String> data) throws IOException {
         List<Path> paths = new ArrayList<>();
         for (String entry : data) {
             Path path = Path.of(entry);
             if (Files.isDirectory(path)) {
                 try (Stream<Path> listing = Files.list(path)) {
-                    paths.addAll(listing.filter(f -> f.toString().endsWith(".json") || f.toString().endsWith(".json.gz"))
-                            .sorted().toList());
+                    paths.addAll(listing.filter(SceneCompression::isSceneFile).sorted().toList());
                 }
             } else if (Files.isRegularFile(path)) {
                 paths.add(path);

@@ -18,6 +18,7 @@ import org.scenes.evaluate.Arena;
 import org.scenes.evaluate.GameFigures;
 import org.scenes.evaluate.Match;
 import org.scenes.evaluate.Tables;
+import org.scenes.internal.scene.SceneCompression;
 import org.scenes.internal.validate.MatchConfig;
 import org.scenes.simulator.BrainFactory;
 import org.scenes.simulator.GameSetup;
@@ -148,7 +149,7 @@ final class MatchCommand implements Callable<Integer> {
             Path path = Path.of(part);
             if (Files.isDirectory(path)) {
                 try (Stream<Path> list = Files.list(path)) {
-                    list.filter(f -> f.getFileName().toString().matches(".*\\.json(\\.gz)?")).sorted().forEach(files::add);
+                    list.filter(SceneCompression::isSceneFile).sorted().forEach(files::add);
                 }
             } else if (Files.isRegularFile(path)) {
                 files.add(path);

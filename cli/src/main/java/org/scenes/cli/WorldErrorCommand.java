@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
+import org.scenes.internal.scene.SceneCompression;
 import org.scenes.internal.world.WorldAccuracy;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -67,7 +68,7 @@ final class WorldErrorCommand implements Callable<Integer> {
         for (Path path : scenes) {
             if (Files.isDirectory(path)) {
                 try (Stream<Path> listed = Files.list(path)) {
-                    listed.filter(f -> f.getFileName().toString().matches(".*\\.json(\\.gz)?")).sorted()
+                    listed.filter(SceneCompression::isSceneFile).sorted()
                             .forEach(files::add);
                 }
             } else if (Files.isRegularFile(path)) {

@@ -34,6 +34,7 @@ import org.scenes.app.convert.ConvertSettings;
 import org.scenes.internal.convert.GameLogConverter;
 import org.scenes.internal.convert.Pairing;
 import org.scenes.internal.gamelog.GameLogs;
+import org.scenes.internal.scene.SceneCompression;
 import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.internal.vision.Fading;
 
@@ -281,7 +282,8 @@ class ConvertArchiveTest {
 
         // a run stopped between games (its progress callback throws): the games done stay, with their records
         ConvertSettings settings = new ConvertSettings(Grid.DEFAULT, Pairing.AUTO, false, false, false,
-                Fading.named("dice", 1), GameLogConverter.everyone(), false, GameLogConverter.SeePhase.INFER, 1);
+                Fading.named("dice", 1), GameLogConverter.everyone(), false, GameLogConverter.SeePhase.INFER, 1,
+                SceneCompression.GZIP);
         Path stopped = dir.resolve("stopped");
         RuntimeException stop = assertThrows(RuntimeException.class, () -> new ArchiveConversion(
                 new ArchiveConversion.Request(archive, stopped, settings, GameLogs.Commands.RCL)).run(new Progress() {

@@ -1,9 +1,11 @@
 package org.scenes.cli;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
@@ -13,6 +15,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.api.Side;
+import org.scenes.internal.files.Inputs;
 import org.scenes.internal.gamelog.CommandLogWriter;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.GameLogWriter;
@@ -78,6 +81,30 @@ class GameLogConvertCommandTest {
         assertTrue(out.contains("My_Team_1"), out);
         assertEquals(0, run("compare", dir.resolve("s"), dir.resolve("s")), err);
         assertTrue(out.contains("100.000 % same type"), out);
+    }
+
+    @Test
+    void zstdCompressionWritesTheSameScenesUnderTheirOwnEndingAndOnlyForOutDir() throws IOException {
+        Path rcg = game();
+        assertEquals(0, run("convert", rcg, "--out-dir", dir.resolve("gzip")), err);
+        assertEquals(0, run("convert", rcg, "--out-dir", dir.resolve("zstd"), "--compression", "zstd"), err);
+        for (String player : List.of("My_Team_1", "Other_1")) {
+            Path zstd = dir.resolve("zstd/" + player + ".json.zst");
+            assertTrue(Files.isRegularFile(zstd), player);
+            assertEquals(0x28, Files.readAllBytes(zstd)[0], "zstd's magic");
+            try (InputStream a = Inputs.open(dir.resolve("gzip/" + player + ".json.gz"));
+                 InputStream b = Inputs.open(zstd)) {
+                assertArrayEquals(a.readAllBytes(), b.readAllBytes(), player);
+            }
+        }
+        assertEquals(0, run("compare", dir.resolve("gzip"), dir.resolve("zstd")), err);
+        assertTrue(out.contains("100.000 % same type"), out);
+
+        assertEquals(2, run("convert", rcg, "-o", dir.resolve("one.json.gz"), "--team", "Other",
+                "--compression", "zstd"));
+        assertTrue(err.contains("--compression names the files of --out-dir"), err);
+        assertEquals(2, run("convert", rcg, "--out-dir", dir.resolve("x"), "--compression", "xz"));
+        assertTrue(err.contains("expected gzip, zstd or none, not 'xz'"), err);
     }
 
     @Test

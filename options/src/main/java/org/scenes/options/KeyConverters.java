@@ -2,6 +2,7 @@ package org.scenes.options;
 
 import java.util.function.Function;
 import org.scenes.internal.gamelog.GameLogs;
+import org.scenes.internal.scene.SceneCompression;
 import org.scenes.internal.validate.Folds;
 import org.scenes.internal.validate.Tuner;
 import picocli.CommandLine.ITypeConverter;
@@ -51,6 +52,14 @@ public final class KeyConverters {
         public org.scenes.internal.target.Replay convert(String value) {
             return KeyConverters.convert(value, org.scenes.internal.target.Replay::fromKey,
                     org.scenes.internal.target.Replay.keys());
+        }
+    }
+
+    /** {@code --compression gzip|zstd|none}: how scene files written into a directory are compressed. */
+    public static final class Compression implements ITypeConverter<SceneCompression> {
+        @Override
+        public SceneCompression convert(String value) {
+            return KeyConverters.convert(value, SceneCompression::fromKey, "gzip, zstd or none");
         }
     }
 

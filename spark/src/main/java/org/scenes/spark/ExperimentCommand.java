@@ -16,6 +16,7 @@ import org.scenes.internal.experiment.FoldValidation;
 import org.scenes.internal.experiment.Result;
 import org.scenes.internal.experiment.ResultTable;
 import org.scenes.internal.experiment.Sweep;
+import org.scenes.internal.scene.SceneCompression;
 import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.validate.MatchConfig;
 import org.scenes.options.SweepOptions;
@@ -99,14 +100,14 @@ final class ExperimentCommand implements Callable<Integer> {
         return written;
     }
 
-    /** The sweep's scene files, a directory standing for the .json and .json.gz files in it, sorted (as the local command). */
+    /** The sweep's scene files, a directory standing for the scene files in it (.json, .json.gz, .json.zst), sorted (as the local command). */
     static List<String> dataPaths(List<String> data, HadoopFiles hadoop) throws IOException {
         List<String> paths = new ArrayList<>();
         for (String entry : data) {
             if (hadoop.isDirectory(entry)) {
                 for (FileStatus status : hadoop.list(entry)) {
                     String file = status.getPath().getName();
-                    if (status.isFile() && (file.endsWith(".json") || file.endsWith(".json.gz"))) {
+                    if (status.isFile() && SceneCompression.isSceneFile(Path.of(file))) {
                         paths.add(entry.replaceFirst("/+$", "") + "/" + file);
                     }
                 }

@@ -18,6 +18,7 @@ import org.scenes.internal.convert.Pairing;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.gamelog.GameLogs;
 import org.scenes.internal.scene.LazySceneFileWriter;
+import org.scenes.internal.scene.SceneCompression;
 import org.scenes.internal.vision.Fading;
 import org.scenes.options.GameLogOptions;
 
@@ -62,7 +63,7 @@ final class GameConversion {
             return new ConvertSettings(grid(), Pairing.fromKey(pairing), strict, world, false,
                     Fading.named(gameLogs.fading(), gameLogs.fadingSeed()),
                     GameLogConverter.only(gameLogs.team(), gameLogs.unum()), gameLogs.commandsFirst(),
-                    gameLogs.seePhase(), 1);
+                    gameLogs.seePhase(), 1, SceneCompression.GZIP);
         }
     }
 

@@ -1,6 +1,5 @@
 package org.scenes.spark;
 
-import java.io.BufferedInputStream;
 import java.io.FileNotFoundException;
 import java.io.IOException;
 import java.io.InputStream;
@@ -12,11 +11,11 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.UUID;
-import java.util.zip.GZIPInputStream;
 import org.apache.hadoop.conf.Configuration;
 import org.apache.hadoop.fs.FileStatus;
 import org.apache.hadoop.fs.FileSystem;
 import org.apache.hadoop.fs.Path;
+import org.scenes.internal.files.Inputs;
 import org.scenes.internal.gamelog.ServerLogs;
 
 /**
@@ -66,12 +65,7 @@ final class HadoopFiles {
 
     /** The kind of server log a file is (by content, gzip or not), or null for any other file. */
     ServerLogs.Kind serverLogKind(String path) throws IOException {
-        try (InputStream raw = new BufferedInputStream(fileSystem(path).open(path(path)))) {
-            raw.mark(2);
-            int first = raw.read();
-            int second = raw.read();
-            raw.reset();
-            InputStream in = first == 0x1f && second == 0x8b ? new GZIPInputStream(raw) : raw;
+        try (InputStream in = Inputs.decompressed(java.nio.file.Path.of(path), fileSystem(path).open(path(path)))) {
             return ServerLogs.detect(in);
         }
     }

@@ -29,7 +29,7 @@ import org.scenes.internal.gamelog.GameLogs;
 /**
  * {@code scenes convert ARCHIVE_DIR --out-dir DIR}: every game log in a directory tree
  * ({@code .rcg}, {@code .rcg.gz}, the command log beside it) into a scene file per player, grouped
- * by team: {@code DIR/TEAM/GAME_UNUM.json.gz}. Each game is converted on its own: its files are
+ * by team: {@code DIR/TEAM/GAME_UNUM.json.gz} (or as the settings compress). Each game is converted on its own: its files are
  * committed together once it gave scenes, then its row is recorded in {@code DIR/.games/GAME.json};
  * a game with a record is skipped by the next run, so an interrupted run resumes where it stopped
  * (a game cut off leaves no file: {@link AtomicOutput}, and no record, so it is converted again).
@@ -304,7 +304,7 @@ public final class ArchiveConversion {
                         throw new IllegalArgumentException("team name '" + team + "' is not a directory name"
                                 + " (letters, digits, '-' and '_')");
                     }
-                    Path target = outDir.resolve(team).resolve(game.name() + "_" + key.substring(cut + 1) + ".json.gz");
+                    Path target = outDir.resolve(team).resolve(settings.compression().fileName(game.name() + "_" + key.substring(cut + 1)));
                     targets.add(target);
                     return target;
                 });

@@ -9,6 +9,7 @@ import org.scenes.internal.convert.GameLogConverter;
 import org.scenes.internal.convert.MalformedLine;
 import org.scenes.internal.convert.Pairing;
 import org.scenes.internal.convert.SceneConverter;
+import org.scenes.internal.scene.SceneCompression;
 import org.scenes.internal.vision.Fading;
 
 /**
@@ -26,16 +27,19 @@ import org.scenes.internal.vision.Fading;
  * @param commandsFirst game logs: a player's commands came before its see within a step
  * @param seePhase game logs: where asynchronous see clocks start
  * @param threads game logs: threads rebuilding a game's players
+ * @param compression how scene files written into a directory are compressed
  */
 public record ConvertSettings(Grid grid, Pairing pairing, boolean strict, boolean world, boolean keepUnanswered,
                               Fading fading, Predicate<Observer> selected, boolean commandsFirst,
-                              GameLogConverter.SeePhase seePhase, int threads) {
+                              GameLogConverter.SeePhase seePhase, int threads,
+                              SceneCompression compression) {
     public ConvertSettings {
         Objects.requireNonNull(grid, "grid");
         Objects.requireNonNull(pairing, "pairing");
         Objects.requireNonNull(fading, "fading");
         Objects.requireNonNull(selected, "selected");
         Objects.requireNonNull(seePhase, "seePhase");
+        Objects.requireNonNull(compression, "compression");
         if (threads < 1) {
             throw new IllegalArgumentException("threads must be 1 or more, not " + threads);
         }

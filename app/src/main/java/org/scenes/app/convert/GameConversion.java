@@ -9,7 +9,7 @@ import org.scenes.internal.gamelog.GameLogs;
 
 /**
  * {@code scenes convert GAME.rcg [GAME.rcl]}: a game's server logs into a scene file per player,
- * {@code DIR/TEAM_UNUM.json.gz}, or the one chosen player's into one file. The files are committed
+ * {@code DIR/TEAM_UNUM.json.gz} (or as the settings compress), or the one chosen player's into one file. The files are committed
  * together, and only when the game gave scenes (core's {@link GameSceneFiles}).
  */
 public final class GameConversion {
@@ -56,7 +56,7 @@ public final class GameConversion {
             if (request.file() != null && players[0]++ > 0) {
                 throw new OnePlayerPerFile();
             }
-            return request.file() != null ? request.file() : request.directory().resolve(key + ".json.gz");
+            return request.file() != null ? request.file() : request.directory().resolve(request.settings().compression().fileName(key));
         };
         long started = System.nanoTime();
         GameSceneFiles.Written written = GameSceneFiles.write(request.settings().gameLogConverter(),

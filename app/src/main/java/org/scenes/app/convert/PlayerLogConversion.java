@@ -102,7 +102,7 @@ public final class PlayerLogConversion {
                 List<String> names = outputNames(logs);
                 for (int i = 0; i < logs.size(); i++) {
                     Path log = logs.get(i);
-                    Path target = request.directory().resolve(names.get(i) + ".json.gz");
+                    Path target = request.directory().resolve(request.settings().compression().fileName(names.get(i)));
                     try (LazySceneFileWriter writer = new LazySceneFileWriter(target, request.settings().grid(),
                             log.getFileName().toString())) {
                         ConversionReport report = convertLog(converter, log, writer, total, failed, text);
@@ -160,7 +160,7 @@ public final class PlayerLogConversion {
                 name = parent.getFileName() + "-" + name;
             }
             if (names.contains(name)) {
-                throw new IllegalArgumentException("two logs would both be written to " + name + ".json.gz");
+                throw new IllegalArgumentException("two logs would both be written as scene file " + name);
             }
             names.add(name);
         }

@@ -17,12 +17,13 @@ import org.scenes.api.Scene;
 import org.scenes.app.Progress;
 import org.scenes.app.convert.ArchiveConversion;
 import org.scenes.app.convert.ManifestRow;
+import org.scenes.internal.scene.SceneCompression;
 import org.scenes.internal.scene.SceneFileReader;
 
 /**
  * {@code scenes stats DIR} over an archive's conversion ({@link ArchiveConversion}): per team, the
  * games the manifest lists as converted, won, drawn and lost, and the action mix of the scenes in
- * the team's directory ({@code DIR/TEAM/*.json.gz}, each scene's primary action).
+ * the team's directory ({@code DIR/TEAM/*.json.gz} or {@code .json.zst}, each scene's primary action).
  */
 public final class ArchiveStats {
     private ArchiveStats() {
@@ -74,7 +75,7 @@ public final class ArchiveStats {
                 continue;
             }
             try (Stream<Path> list = Files.list(teamDirectory)) {
-                files.put(team, list.filter(f -> f.getFileName().toString().endsWith(".json.gz")).sorted().toList());
+                files.put(team, list.filter(SceneCompression::isSceneFile).sorted().toList());
             }
         }
         progress.begin("Reading", files.values().stream().mapToLong(List::size).sum());

@@ -78,7 +78,7 @@ public final class LogReader implements AutoCloseable {
         }
         try {
             return new LogReader(file, in);
-        } catch (Inputs.CorruptGzipException e) {
+        } catch (Inputs.CorruptCompressionException e) {
             closeQuietly(in);
             throw new LogException(file, 0, e.reason(), e);
         } catch (IOException e) {

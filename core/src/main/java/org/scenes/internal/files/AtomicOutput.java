@@ -21,12 +21,13 @@ import java.util.concurrent.ThreadLocalRandom;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.zip.GZIPOutputStream;
+import com.github.luben.zstd.ZstdOutputStream;
 
 /**
  * An output file that appears only when complete: bytes go to a temporary file beside the
  * target, which {@link #commit()} renames over it. Closing without commit deletes the
  * temporary file, so a crash or an error never leaves a half-written target. A target
- * ending in {@code .gz} is gzip-compressed. A command stopped by Ctrl-C or SIGTERM before its
+ * ending in {@code .gz} is gzip-compressed, one ending in {@code .zst} zstd-compressed. A command stopped by Ctrl-C or SIGTERM before its
  * commit calls {@link #abandonAll()} from its shutdown hook, so no temporary file is left behind
  * (not a hook of its own here: commands such as the proxy commit their logs in their hooks).
  * SIGKILL runs no hook: the next output into the same directory removes such leftovers
@@ -102,7 +103,7 @@ public final class AtomicOutput implements AutoCloseable {
             }
         }
         OutputStream named = new NamedErrors(out, requested);
-        this.file = requested.getFileName().toString().endsWith(".gz") ? new GZIPOutputStream(named, 1 << 16) : named;
+        this.file = compressing(requested.getFileName().toString(), named);
         // Writers wrapping the stream may close it; only commit() or close() may end the file.
         this.stream = new FilterOutputStream(file) {
             @Override
@@ -115,6 +116,21 @@ public final class AtomicOutput implements AutoCloseable {
                 flush();
             }
         };
+    }
+
+    /** Level 1: on scene JSON as small as gzip's default level, in a tenth of its CPU (docs/scale.md). */
+    static final int ZSTD_LEVEL = 1;
+
+    /** A name ending in {@code .gz} is written gzip-compressed, {@code .zst} zstd-compressed. */
+    private static OutputStream compressing(String name, OutputStream out) throws IOException {
+        if (name.endsWith(".gz")) {
+            return new GZIPOutputStream(out, 1 << 16);
+        }
+        if (name.endsWith(".zst")) {
+            // each write is a call into the native library: hand it large blocks
+            return new BufferedOutputStream(new ZstdOutputStream(out, ZSTD_LEVEL), 1 << 16);
+        }
+        return out;
     }
 
     /** Write errors (disk full, a device refusing) name the target, not the temporary file. */

@@ -8,15 +8,18 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.zip.GZIPInputStream;
+import com.github.luben.zstd.ZstdInputStream;
 
 /**
- * Opens input files, decompressing gzip by its magic bytes whatever the file is called; {@code -}
- * is standard input, and pipes such as {@code /dev/stdin} are read as streams (never sought).
+ * Opens input files, decompressing gzip and zstd by their magic bytes whatever the file is called;
+ * {@code -} is standard input, and pipes such as {@code /dev/stdin} are read as streams (never sought).
  */
 public final class Inputs {
     /** The name that stands for standard input. */
     public static final String STANDARD_INPUT = "-";
     private static final int GZIP_MAGIC = 0x8b1f;
+    /** A zstd frame's first four bytes, little-endian. */
+    private static final int ZSTD_MAGIC = 0xFD2FB528;
     /** For a message when memory runs out: which input was being read, most likely. */
     private static volatile Path lastOpened;
 
@@ -50,31 +53,51 @@ public final class Inputs {
             // which fails on a pipe with "Illegal seek"; FileInputStream asks the kernel instead
             raw = new FileInputStream(file.toFile());
         }
+        return decompressed(file, raw);
+    }
+
+    /**
+     * {@code raw}, decompressed when its first bytes are gzip's or zstd's magic; errors of corrupt
+     * data name {@code file}.
+     */
+    public static InputStream decompressed(Path file, InputStream raw) throws IOException {
         InputStream in = new BufferedInputStream(raw, 1 << 16);
-        in.mark(2);
-        int first = in.read();
-        int second = in.read();
+        in.mark(4);
+        int magic = 0;
+        int read = 0;
+        for (int b; read < 4 && (b = in.read()) >= 0; read++) {
+            magic |= b << (8 * read);
+        }
         in.reset();
-        if (first >= 0 && second >= 0 && (first | (second << 8)) == GZIP_MAGIC) {
-            return new BufferedInputStream(new NamedGzip(file, in), 1 << 16);
+        if (read >= 2 && (magic & 0xffff) == GZIP_MAGIC) {
+            return new BufferedInputStream(new Decompressing(file, "gzip", in), 1 << 16);
+        }
+        if (read == 4 && magic == ZSTD_MAGIC) {
+            return new BufferedInputStream(new Decompressing(file, "zstd", in), 1 << 16);
         }
         return in;
     }
 
-    /** Gzip whose errors (corrupt data, truncated stream, bad trailer) name the file. */
-    private static final class NamedGzip extends FilterInputStream {
+    /** Gzip or zstd whose errors (corrupt data, truncated stream, bad trailer) name the file. */
+    private static final class Decompressing extends FilterInputStream {
         private final Path file;
+        private final String format;
 
-        NamedGzip(Path file, InputStream compressed) throws IOException {
-            super(gzip(file, compressed));
+        Decompressing(Path file, String format, InputStream compressed) throws IOException {
+            super(decompress(file, format, compressed));
             this.file = file;
+            this.format = format;
         }
 
-        private static InputStream gzip(Path file, InputStream compressed) throws IOException {
+        private static InputStream decompress(Path file, String format, InputStream compressed) throws IOException {
             try {
+                if (format.equals("zstd")) {
+                    // a stream cut short must fail, not end quietly as if complete
+                    return new ZstdInputStream(compressed).setContinuous(false);
+                }
                 return new GZIPInputStream(compressed, 1 << 16);
             } catch (IOException e) {
-                throw named(file, e);
+                throw named(file, format, e);
             }
         }
 
@@ -83,7 +106,7 @@ public final class Inputs {
             try {
                 return super.read();
             } catch (IOException e) {
-                throw named(file, e);
+                throw named(file, format, e);
             }
         }
 
@@ -92,25 +115,25 @@ public final class Inputs {
             try {
                 return super.read(bytes, offset, length);
             } catch (IOException e) {
-                throw named(file, e);
+                throw named(file, format, e);
             }
         }
 
-        private static IOException named(Path file, IOException e) {
-            return e instanceof CorruptGzipException ? e : new CorruptGzipException(file, e);
+        private static IOException named(Path file, String format, IOException e) {
+            return e instanceof CorruptCompressionException ? e : new CorruptCompressionException(file, format, e);
         }
     }
 
-    /** Gzip data that cannot be decompressed; the message names the file, {@link #reason()} does not. */
-    public static final class CorruptGzipException extends IOException {
+    /** Gzip or zstd data that cannot be decompressed; the message names the file, {@link #reason()} does not. */
+    public static final class CorruptCompressionException extends IOException {
         private final String reason;
 
-        CorruptGzipException(Path file, IOException cause) {
-            this(file, "corrupt or truncated gzip (" + (cause.getMessage() == null
-                    ? cause.getClass().getSimpleName() : cause.getMessage()) + ")", cause);
+        CorruptCompressionException(Path file, String format, IOException cause) {
+            this(file, "corrupt or truncated " + format + " (" + (cause.getMessage() == null
+                    ? cause.getClass().getSimpleName() : cause.getMessage()) + ")", (Throwable) cause);
         }
 
-        private CorruptGzipException(Path file, String reason, IOException cause) {
+        private CorruptCompressionException(Path file, String reason, Throwable cause) {
             super(file + ": " + reason, cause);
             this.reason = reason;
         }

@@ -577,8 +577,8 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         if (e instanceof java.io.EOFException) {
             return new SceneFileException(file, 0, 0, "the compressed file ends early (is it truncated?)", e);
         }
-        if (e instanceof org.scenes.internal.files.Inputs.CorruptGzipException gzip) {
-            return new SceneFileException(file, 0, 0, gzip.reason(), e);
+        if (e instanceof org.scenes.internal.files.Inputs.CorruptCompressionException corrupt) {
+            return new SceneFileException(file, 0, 0, corrupt.reason(), e);
         }
         long line = json == null ? 0 : json.currentLocation().getLineNr();
         long column = json == null ? 0 : json.currentLocation().getColumnNr();
