@@ -13,7 +13,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import java.util.stream.Stream;
 import org.scenes.internal.convert.SceneComparison;
 import org.scenes.internal.scene.SceneCompression;
 import picocli.CommandLine.Command;
@@ -62,17 +61,16 @@ final class CompareCommand implements Callable<Integer> {
         List<Path> right = new ArrayList<>();
         // namesakes: the same player's file, whatever each side's compression (Teal_1.json.gz, Teal_1.json.zst)
         Map<String, Path> seconds = new HashMap<>();
-        try (Stream<Path> files = Files.list(second)) {
-            files.filter(f -> SceneCompression.isSceneFile(f) && Files.isRegularFile(f)).sorted()
-                    .forEach(f -> seconds.putIfAbsent(SceneCompression.baseName(f), f));
+        for (Path file : SceneCompression.sceneFilesIn(second)) {
+            if (Files.isRegularFile(file)) {
+                seconds.putIfAbsent(SceneCompression.baseName(file), file);
+            }
         }
-        try (Stream<Path> files = Files.list(first)) {
-            for (Path file : files.filter(SceneCompression::isSceneFile).sorted().toList()) {
-                Path other = seconds.get(SceneCompression.baseName(file));
-                if (other != null) {
-                    left.add(file);
-                    right.add(other);
-                }
+        for (Path file : SceneCompression.sceneFilesIn(first)) {
+            Path other = seconds.get(SceneCompression.baseName(file));
+            if (other != null) {
+                left.add(file);
+                right.add(other);
             }
         }
         if (left.isEmpty()) {

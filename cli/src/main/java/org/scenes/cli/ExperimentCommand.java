@@ -7,7 +7,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
-import java.util.stream.Stream;
 import org.scenes.app.experiment.Sweeping;
 import org.scenes.internal.experiment.ResultTable;
 import org.scenes.internal.experiment.Sweep;
@@ -68,9 +67,7 @@ final class ExperimentCommand implements Callable<Integer> {
         for (String entry : data) {
             Path path = Path.of(entry);
             if (Files.isDirectory(path)) {
-                try (Stream<Path> listing = Files.list(path)) {
-                    paths.addAll(listing.filter(SceneCompression::isSceneFile).sorted().toList());
-                }
+                paths.addAll(SceneCompression.sceneFilesIn(path));
             } else if (Files.isRegularFile(path)) {
                 paths.add(path);
             } else {

@@ -10,7 +10,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import java.util.stream.Stream;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.imitation.ImitationTeam;
 import org.scenes.app.Teams;
@@ -148,9 +147,7 @@ final class MatchCommand implements Callable<Integer> {
         for (String part : parts[2].split("\\+")) {
             Path path = Path.of(part);
             if (Files.isDirectory(path)) {
-                try (Stream<Path> list = Files.list(path)) {
-                    list.filter(SceneCompression::isSceneFile).sorted().forEach(files::add);
-                }
+                files.addAll(SceneCompression.sceneFilesIn(path));
             } else if (Files.isRegularFile(path)) {
                 files.add(path);
             } else {

@@ -8,7 +8,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.stream.Stream;
 import org.scenes.internal.scene.SceneCompression;
 import org.scenes.internal.world.WorldAccuracy;
 import picocli.CommandLine.Command;
@@ -67,10 +66,7 @@ final class WorldErrorCommand implements Callable<Integer> {
         List<Path> files = new ArrayList<>();
         for (Path path : scenes) {
             if (Files.isDirectory(path)) {
-                try (Stream<Path> listed = Files.list(path)) {
-                    listed.filter(SceneCompression::isSceneFile).sorted()
-                            .forEach(files::add);
-                }
+                files.addAll(SceneCompression.sceneFilesIn(path));
             } else if (Files.isRegularFile(path)) {
                 files.add(path);
             } else {

@@ -9,7 +9,6 @@ import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
-import java.util.stream.Stream;
 import org.apache.commons.csv.CSVFormat;
 import org.apache.commons.csv.CSVRecord;
 import org.scenes.api.ActionType;
@@ -74,9 +73,7 @@ public final class ArchiveStats {
                 files.put(team, List.of());
                 continue;
             }
-            try (Stream<Path> list = Files.list(teamDirectory)) {
-                files.put(team, list.filter(SceneCompression::isSceneFile).sorted().toList());
-            }
+            files.put(team, SceneCompression.sceneFilesIn(teamDirectory));
         }
         progress.begin("Reading", files.values().stream().mapToLong(List::size).sum());
         List<Team> teams = new ArrayList<>();

@@ -1,6 +1,10 @@
 package org.scenes.internal.scene;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
 import java.util.Locale;
 
 /**
@@ -45,6 +49,13 @@ public enum SceneCompression {
     /** True for the names scene files are given: {@code .json}, {@code .json.gz}, {@code .json.zst}. */
     public static boolean isSceneFile(Path file) {
         return baseName(file) != null;
+    }
+
+    /** The scene files of {@code directory} (named as {@link #isSceneFile} says), sorted by name. */
+    public static List<Path> sceneFilesIn(Path directory) throws IOException {
+        try (Stream<Path> files = Files.list(directory)) {
+            return files.filter(SceneCompression::isSceneFile).sorted().toList();
+        }
     }
 
     /**
