@@ -233,11 +233,6 @@ public final class Engine {
         return step;
     }
 
-    /** Whether the first kick-off has not happened yet. */
-    public boolean beforeKickOff() {
-        return world.mode == PlayMode.BEFORE_KICK_OFF && world.time == 0;
-    }
-
     public int scoreLeft() {
         return world.scoreLeft;
     }
