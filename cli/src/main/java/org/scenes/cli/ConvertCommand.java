@@ -24,12 +24,14 @@ import org.scenes.options.PairingOptions;
 import org.scenes.options.WorldOptions;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
+import picocli.CommandLine.TypeConversionException;
 
 /** {@code scenes convert}: player logs to scene files, with a summary of what was kept and dropped. */
 @Command(name = "convert", mixinStandardHelpOptions = true,
@@ -109,13 +111,13 @@ final class ConvertCommand implements Callable<Integer> {
                     + " waits (docs/conversion.md, unanswered sees)."})
     Unanswered unanswered;
 
-    static final class UnansweredConverter implements picocli.CommandLine.ITypeConverter<Unanswered> {
+    static final class UnansweredConverter implements ITypeConverter<Unanswered> {
         @Override
         public Unanswered convert(String value) {
             return switch (value) {
                 case "keep" -> Unanswered.KEEP;
                 case "drop" -> Unanswered.DROP;
-                default -> throw new picocli.CommandLine.TypeConversionException("expected keep or drop, not '"
+                default -> throw new TypeConversionException("expected keep or drop, not '"
                         + value + "'");
             };
         }

@@ -1,5 +1,6 @@
 package org.scenes.cli;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
 import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
@@ -50,7 +51,7 @@ final class LiveTeam {
                 print(out, reports);
             }
             out.flush();
-        } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+        } catch (JsonProcessingException e) {
             throw new IllegalStateException("could not write the reports as JSON", e);
         } finally {
             printed.countDown();

@@ -13,6 +13,7 @@ import org.scenes.app.Teams;
 import org.scenes.internal.validate.MatchConfig;
 import org.scenes.simulator.GameResult;
 import org.scenes.simulator.GameSetup;
+import org.scenes.simulator.Simulator;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -122,7 +123,7 @@ final class PlayCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         out.printf(Locale.ROOT, "%-14s %d scenes from %d files, %s; %s%n", "Learnt", team.scenes(), sceneFiles.size(),
                 team.describe(), config.describe());
-        org.scenes.simulator.Simulator simulator = new org.scenes.simulator.Simulator(setup);
+        Simulator simulator = new Simulator(setup);
         if (recordDir != null) {
             simulator.recordTo(recordDir);
         }

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import org.scenes.internal.convert.LogFormat;
 import org.scenes.logproxy.ClientKind;
@@ -159,7 +160,7 @@ final class ProxyCommand implements Callable<Integer> {
         }
         console.printf("logging to %s (%s); Ctrl-C to stop%n", out, format);
         console.flush();
-        while (!stopped.await(200, java.util.concurrent.TimeUnit.MILLISECONDS)) {
+        while (!stopped.await(200, TimeUnit.MILLISECONDS)) {
             if (games != null && proxy.gamesEnded() >= games) {
                 console.printf("%d game%s ended: stopping%n", games, games == 1 ? "" : "s");
                 new Thread(stop, "scenes-proxy-games-ended").start();

@@ -5,6 +5,8 @@ import java.io.InputStream;
 import java.io.PrintWriter;
 import java.nio.file.FileSystemException;
 import java.util.Properties;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.scenes.api.Grid;
 import org.scenes.api.PluginException;
 import org.scenes.api.PluginRegistry;
@@ -51,12 +53,12 @@ final class ScenesCommand implements Runnable {
     }
 
     /** picocli's words for a value that starts with '-', such as {@code --bounds=-1,5}. */
-    private static final java.util.regex.Pattern DASHED_VALUE =
-            java.util.regex.Pattern.compile("Expected parameter for option '([^']+)' but found '(-[0-9.][^']*)'");
+    private static final Pattern DASHED_VALUE =
+            Pattern.compile("Expected parameter for option '([^']+)' but found '(-[0-9.][^']*)'");
 
     private static int handleUsageError(CommandLine.ParameterException e, String[] args) {
         PrintWriter err = e.getCommandLine().getErr();
-        java.util.regex.Matcher dashed = DASHED_VALUE.matcher(e.getMessage());
+        Matcher dashed = DASHED_VALUE.matcher(e.getMessage());
         if (dashed.find()) {
             // --bounds=-1,5: not an unknown option, a value that looks like one
             err.println("scenes: option '" + dashed.group(1) + "' expects a value, not '" + dashed.group(2)

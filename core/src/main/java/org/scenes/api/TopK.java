@@ -1,6 +1,7 @@
 package org.scenes.api;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.function.IntFunction;
 
@@ -109,7 +110,7 @@ public final class TopK {
         for (int i = 0; i < size; i++) {
             order[i] = i;
         }
-        java.util.Arrays.sort(order, (a, b) -> compare(a, b));
+        Arrays.sort(order, (a, b) -> compare(a, b));
         List<Neighbour> result = new ArrayList<>(size);
         for (int slot : order) {
             result.add(new Neighbour(scenes.apply(index[slot]), index[slot], distance[slot]));

@@ -2,6 +2,7 @@ package org.scenes.api;
 
 import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.Objects;
 
 /**
@@ -41,7 +42,7 @@ public record TuneDimension(String option, List<Double> values, Scale scale) {
         for (double value : values) {
             if (!Double.isFinite(value) || scale == Scale.LOG && value < 0) {
                 throw new IllegalArgumentException("tune dimension " + option + ": " + value
-                        + " is not a value of a " + scale.name().toLowerCase(java.util.Locale.ROOT) + " scale");
+                        + " is not a value of a " + scale.name().toLowerCase(Locale.ROOT) + " scale");
             }
         }
     }

@@ -1,6 +1,7 @@
 package org.scenes.api;
 
 import java.util.Arrays;
+import java.util.Collections;
 
 /** Parsing of weight lists, positional ({@code 1/0/1}, {@code {1,0,1}}) or named ({@code ball=1}). */
 final class Weights {
@@ -23,7 +24,7 @@ final class Weights {
         }
         if (trimmed.isEmpty()) {
             throw new IllegalArgumentException(what + " are empty; expected e.g. "
-                    + String.join("/", java.util.Collections.nCopies(names.length, "1")) + " or " + names[1] + "=1");
+                    + String.join("/", Collections.nCopies(names.length, "1")) + " or " + names[1] + "=1");
         }
         double[] weights = new double[names.length];
         if (trimmed.contains("=")) {

@@ -3,6 +3,7 @@ package org.scenes.evaluate;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.function.ToDoubleFunction;
 import java.util.stream.Stream;
@@ -136,23 +137,23 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
         double goalsI = byKey.get("goalsPer1000").imitator().mean();
         double off = goalsT == 0 ? (goalsI == 0 ? 0 : Double.POSITIVE_INFINITY) : Math.abs(goalsI - goalsT) / goalsT;
         targets.add(new Target("goals / 1000 cycles within 20% of the teacher's",
-                goalsT == 0 ? String.format(java.util.Locale.ROOT, "%.2f vs %.2f", goalsI, goalsT)
-                        : String.format(java.util.Locale.ROOT, "%.2f vs %.2f (%+.0f%%)", goalsI, goalsT,
+                goalsT == 0 ? String.format(Locale.ROOT, "%.2f vs %.2f", goalsI, goalsT)
+                        : String.format(Locale.ROOT, "%.2f vs %.2f (%+.0f%%)", goalsI, goalsT,
                                 100 * (goalsI - goalsT) / goalsT), off <= 0.2));
         targets.add(new Target(divergenceLabel + " <= 0.02",
-                String.format(java.util.Locale.ROOT, "%.4f", divergence.mean()), divergence.mean() <= 0.02));
+                String.format(Locale.ROOT, "%.4f", divergence.mean()), divergence.mean() <= 0.02));
         // the stuck share of the players' own traffic where there is one, else the server log's
         Figure stuckFigure = byKey.getOrDefault("stuckShare", byKey.get("logStuckShare"));
         double stuck = stuckFigure.imitator().mean();
         targets.add(new Target(stuckFigure.label() + " <= 2%",
-                String.format(java.util.Locale.ROOT, "%.1f%%", 100 * stuck), stuck <= 0.02));
+                String.format(Locale.ROOT, "%.1f%%", 100 * stuck), stuck <= 0.02));
         if (byKey.containsKey("agreement")) {
             double agreement = byKey.get("agreement").imitator().mean();
             targets.add(new Target("student-driven agreement >= 90%",
-                    String.format(java.util.Locale.ROOT, "%.1f%%", 100 * agreement), agreement >= 0.9));
+                    String.format(Locale.ROOT, "%.1f%%", 100 * agreement), agreement >= 0.9));
         }
         targets.add(new Target("Turing accuracy <= 60%",
-                String.format(java.util.Locale.ROOT, "%.1f%%", 100 * turing.accuracy()), turing.accuracy() <= 0.6));
+                String.format(Locale.ROOT, "%.1f%%", 100 * turing.accuracy()), turing.accuracy() <= 0.6));
         return targets;
     }
 

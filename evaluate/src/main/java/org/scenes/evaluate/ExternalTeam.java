@@ -1,6 +1,7 @@
 package org.scenes.evaluate;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -98,7 +99,7 @@ public record ExternalTeam(String command) implements BrainFactory {
                         return line.length() > 160 ? line.substring(0, 160) + "..." : line;
                     }
                 }
-            } catch (IOException | java.io.UncheckedIOException e) {
+            } catch (IOException | UncheckedIOException e) {
                 // no output to quote
             }
             return "";

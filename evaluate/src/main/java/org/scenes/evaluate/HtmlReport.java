@@ -4,9 +4,11 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.scenes.internal.files.AtomicOutput;
 
@@ -130,7 +132,7 @@ public final class HtmlReport {
      * holding a '/' or ending in an extension) breaks only after a '/', never inside a name (at
      * its dashes), so a list of paths wraps between paths or directories.
      */
-    private static final java.util.regex.Pattern FILE_WORD = java.util.regex.Pattern.compile("/|\\.[a-z]{2,4}\\b");
+    private static final Pattern FILE_WORD = Pattern.compile("/|\\.[a-z]{2,4}\\b");
 
     static String aboutTable(Map<String, String> about) {
         StringBuilder html = new StringBuilder("<table class=\"about\">\n");
@@ -183,7 +185,7 @@ public final class HtmlReport {
                                String format) {
         // the figures the games gave: games read from logs have no traced ones
         List<Comparison.Figure> figures = comparison.figures().stream().filter(f -> keys.contains(f.key()))
-                .sorted(java.util.Comparator.comparingInt(f -> keys.indexOf(f.key()))).toList();
+                .sorted(Comparator.comparingInt(f -> keys.indexOf(f.key()))).toList();
         if (figures.isEmpty()) {
             return "";
         }

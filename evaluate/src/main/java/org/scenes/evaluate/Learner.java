@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.Random;
 import java.util.function.Consumer;
 import java.util.function.LongConsumer;
+import java.util.function.Supplier;
 import java.util.stream.Stream;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.imitation.ImitationTeam;
@@ -66,21 +67,21 @@ public final class Learner {
      * How to match: the metric, k, selector and transforms, as made from a configuration, how the
      * chosen action is carried out and the view the players ask for (null: the server's).
      */
-    public record Matching(java.util.function.Supplier<SceneMetric> metric, int k,
-                           java.util.function.Supplier<ActionSelector> selector,
-                           java.util.function.Supplier<List<SceneTransform>> transforms, Replay replay,
+    public record Matching(Supplier<SceneMetric> metric, int k,
+                           Supplier<ActionSelector> selector,
+                           Supplier<List<SceneTransform>> transforms, Replay replay,
                            ViewWidth view) {
         /** Matching on the server's view. */
-        public Matching(java.util.function.Supplier<SceneMetric> metric, int k,
-                        java.util.function.Supplier<ActionSelector> selector,
-                        java.util.function.Supplier<List<SceneTransform>> transforms, Replay replay) {
+        public Matching(Supplier<SceneMetric> metric, int k,
+                        Supplier<ActionSelector> selector,
+                        Supplier<List<SceneTransform>> transforms, Replay replay) {
             this(metric, k, selector, transforms, replay, null);
         }
 
         /** Matching that sends the recorded commands as they are. */
-        public Matching(java.util.function.Supplier<SceneMetric> metric, int k,
-                        java.util.function.Supplier<ActionSelector> selector,
-                        java.util.function.Supplier<List<SceneTransform>> transforms) {
+        public Matching(Supplier<SceneMetric> metric, int k,
+                        Supplier<ActionSelector> selector,
+                        Supplier<List<SceneTransform>> transforms) {
             this(metric, k, selector, transforms, Replay.RAW);
         }
 

@@ -7,6 +7,7 @@ import java.nio.file.attribute.FileTime;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.Random;
 import java.util.concurrent.ConcurrentHashMap;
@@ -395,7 +396,7 @@ public final class LiveArena implements Arena {
         int kicks(Side side) {
             String prefix = side + "_";
             return kickCounters.entrySet().stream().filter(e -> e.getKey().startsWith(prefix))
-                    .mapToInt(java.util.Map.Entry::getValue).sum();
+                    .mapToInt(Map.Entry::getValue).sum();
         }
     }
 }

@@ -1,5 +1,7 @@
 package org.scenes.evaluate;
 
+import java.util.Map;
+import java.util.Random;
 import java.util.function.Consumer;
 import org.scenes.simulator.Brain;
 import org.scenes.simulator.BrainFactory;
@@ -40,7 +42,7 @@ public final class PacedBrain implements Brain {
         }
         return new BrainFactory() {
             @Override
-            public Brain create(String team, java.util.Random random) {
+            public Brain create(String team, Random random) {
                 return new PacedBrain(factory.create(team, random), steps);
             }
 
@@ -65,7 +67,7 @@ public final class PacedBrain implements Brain {
     }
 
     @Override
-    public java.util.Map<String, Long> counters() {
+    public Map<String, Long> counters() {
         return inner.counters();
     }
 

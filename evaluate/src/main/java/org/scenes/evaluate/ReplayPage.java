@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import org.scenes.api.Side;
 import org.scenes.internal.files.AtomicOutput;
@@ -93,7 +94,7 @@ public final class ReplayPage {
     }
 
     private static String firstWord(String team) {
-        return team.toLowerCase(java.util.Locale.ROOT).split("[^a-z]", 2)[0];
+        return team.toLowerCase(Locale.ROOT).split("[^a-z]", 2)[0];
     }
 
     static String style() {

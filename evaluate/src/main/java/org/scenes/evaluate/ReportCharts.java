@@ -8,6 +8,8 @@ import java.awt.geom.Ellipse2D;
 import java.awt.geom.Rectangle2D;
 import java.text.DecimalFormat;
 import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.annotations.XYLineAnnotation;
 import org.jfree.chart.annotations.XYShapeAnnotation;
@@ -151,7 +153,7 @@ final class ReportCharts {
     /** The paths of {@code side}'s players, as they are on the pitch. */
     static JFreeChart trajectories(String title, List<GameFrame> frames, int cycles, Side side) {
         XYSeriesCollection data = new XYSeriesCollection();
-        java.util.Map<Integer, XYSeries> byPlayer = new java.util.TreeMap<>();
+        Map<Integer, XYSeries> byPlayer = new TreeMap<>();
         int count = 0;
         for (GameFrame frame : frames) {
             if (count++ > cycles) {

@@ -1,5 +1,6 @@
 package org.scenes.evaluate;
 
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -158,7 +159,7 @@ public final class Tables {
     }
 
     private static List<Object> nullable(double[] values) {
-        List<Object> list = new java.util.ArrayList<>();
+        List<Object> list = new ArrayList<>();
         for (double v : values) {
             list.add(nullable(v));
         }

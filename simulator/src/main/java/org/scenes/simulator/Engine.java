@@ -2,6 +2,7 @@ package org.scenes.simulator;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -417,7 +418,7 @@ public final class Engine {
      */
     private Datagram datagram(String text) {
         List<Message> messages = new ArrayList<>(2);
-        byte[] bytes = text.getBytes(java.nio.charset.StandardCharsets.UTF_8);
+        byte[] bytes = text.getBytes(StandardCharsets.UTF_8);
         try {
             parser.parseAll(bytes, 0, bytes.length, messages::add);
             return new Datagram(messages, false);

@@ -1,5 +1,9 @@
 package org.scenes.simulator;
 
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
 import static org.scenes.internal.world.ServerDefaults.BALL_ACCEL_MAX;
 import static org.scenes.internal.world.ServerDefaults.BALL_DECAY;
 import static org.scenes.internal.world.ServerDefaults.BALL_SIZE;
@@ -95,7 +99,7 @@ record ServerParams(double ballAccelMax, double ballDecay, double ballRand, doub
      * modes off.
      */
     String serverParamMessageV7(int halfTime, int dropBallTime) {
-        java.util.Map<String, String> ours = new java.util.HashMap<>();
+        Map<String, String> ours = new HashMap<>();
         ours.put("goalWidth", n(goalWidth));
         ours.put("inertiaMoment", n(inertiaMoment));
         ours.put("playerSize", n(playerSize));
@@ -174,7 +178,7 @@ record ServerParams(double ballAccelMax, double ballDecay, double ballRand, doub
     static final int CATCH_BAN_CYCLE = 5;
 
     /** The version 7 server_param's order (the server's accessor names) with the server's defaults. */
-    private static final java.util.List<String> V7_ORDER = java.util.List.of(
+    private static final List<String> V7_ORDER = List.of(
             "goalWidth 14.02", "inertiaMoment 5", "playerSize 0.3", "playerDecay 0.4", "playerRand 0.1",
             "playerWeight 60", "playerSpeedMax 1.05", "playerAccelMax 1", "staminaMax 8000", "staminaInc 45",
             "recoverInit 1", "recoverDecThr 0.3", "recoverMin 0.5", "recoverDec 0.002", "effortInit 1",

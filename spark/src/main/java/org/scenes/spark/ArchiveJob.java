@@ -6,6 +6,7 @@ import java.io.Serializable;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
@@ -184,7 +185,7 @@ final class ArchiveJob {
             return row;
         } finally {
             try (Stream<Path> walk = Files.walk(scratch)) {
-                for (Path file : walk.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                for (Path file : walk.sorted(Comparator.reverseOrder()).toList()) {
                     Files.deleteIfExists(file);
                 }
             }

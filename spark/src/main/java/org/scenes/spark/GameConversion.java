@@ -5,6 +5,7 @@ import java.io.Serializable;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Locale;
@@ -200,7 +201,7 @@ final class GameConversion {
 
     private static void deleteTree(Path directory) throws IOException {
         try (var walk = Files.walk(directory)) {
-            for (Path file : walk.sorted(java.util.Comparator.reverseOrder()).toList()) {
+            for (Path file : walk.sorted(Comparator.reverseOrder()).toList()) {
                 Files.deleteIfExists(file);
             }
         }

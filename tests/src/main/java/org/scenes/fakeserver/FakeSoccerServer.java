@@ -21,6 +21,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.BiFunction;
+import java.util.function.Predicate;
 import org.scenes.internal.files.Inputs;
 
 /**
@@ -67,7 +68,7 @@ public final class FakeSoccerServer implements AutoCloseable {
     }
 
     /** A server that replays the given server messages ({@code see}, {@code sense_body}...). */
-    private volatile java.util.function.Predicate<String> refusedTeams = team -> false;
+    private volatile Predicate<String> refusedTeams = team -> false;
 
     public static FakeSoccerServer start(List<String> recordedServerMessages) throws IOException {
         return new FakeSoccerServer(recordedServerMessages, 0);
@@ -96,7 +97,7 @@ public final class FakeSoccerServer implements AutoCloseable {
 
     /** Replies to every later (non-init) client datagram with what this returns; null = no reply. */
     /** Inits of teams this accepts are refused with {@code (error no_more_team_or_player_or_goalie)}, as a full server does. */
-    public void refuseTeams(java.util.function.Predicate<String> refused) {
+    public void refuseTeams(Predicate<String> refused) {
         this.refusedTeams = refused;
     }
 

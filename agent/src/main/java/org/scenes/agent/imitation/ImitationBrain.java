@@ -1,9 +1,13 @@
 package org.scenes.agent.imitation;
 
+import java.util.ArrayDeque;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.Random;
 import java.util.function.Consumer;
+import java.util.function.Predicate;
 import java.util.function.Supplier;
 import org.scenes.api.Action;
 import org.scenes.api.ActionSelector;
@@ -93,7 +97,7 @@ public final class ImitationBrain implements Brain {
     private final boolean withRoles;
     private final ActionSelector selector;
     private final Supplier<List<SceneTransform>> transforms;
-    private final java.util.ArrayDeque<Scene> history = new java.util.ArrayDeque<>(HISTORY);
+    private final ArrayDeque<Scene> history = new ArrayDeque<>(HISTORY);
     private final Random random;
     private final MessageParser parser = new MessageParser();
     /** What the player believes of the game, built as scene conversion builds it; each query carries it. */
@@ -382,7 +386,7 @@ public final class ImitationBrain implements Brain {
     }
 
     /** The primary action of the nearest neighbour whose action passes, or null. */
-    private static Action nearestOther(List<Neighbour> nearest, java.util.function.Predicate<Action> wanted) {
+    private static Action nearestOther(List<Neighbour> nearest, Predicate<Action> wanted) {
         for (Neighbour neighbour : nearest) {
             Action action = neighbour.scene().primaryAction();
             if (action != null && wanted.test(action)) {
@@ -426,8 +430,8 @@ public final class ImitationBrain implements Brain {
     }
 
     @Override
-    public java.util.Map<String, Long> counters() {
-        java.util.Map<String, Long> counters = new java.util.LinkedHashMap<>();
+    public Map<String, Long> counters() {
+        Map<String, Long> counters = new LinkedHashMap<>();
         counters.put("decisions", decisions);
         counters.put("silent", silent);
         if (guards.enabled()) {

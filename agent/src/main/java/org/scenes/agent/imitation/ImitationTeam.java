@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Random;
 import java.util.TreeMap;
 import java.util.function.Function;
 import java.util.function.Supplier;
@@ -20,6 +21,7 @@ import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.internal.scene.SceneSource;
 import org.scenes.internal.target.Replay;
+import org.scenes.simulator.Brain;
 import org.scenes.simulator.BrainFactory;
 
 /**
@@ -201,7 +203,7 @@ public final class ImitationTeam {
                                ImitationBrain.Guards guards, Replay replay) {
         return new BrainFactory() {
             @Override
-            public org.scenes.simulator.Brain create(String teamName, java.util.Random random) {
+            public Brain create(String teamName, Random random) {
                 return new ImitationBrain(teamName, ImitationTeam.this, selectors.get(), transforms, random, guards,
                         replay);
             }

@@ -1,10 +1,12 @@
 package org.scenes.agent.net;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 import java.util.TreeMap;
@@ -415,7 +417,7 @@ public final class LivePlayer implements Runnable {
         while (end < bytes.length && bytes[end] != ' ' && bytes[end] != '(' && bytes[end] != ')' && end < 40) {
             end++;
         }
-        return end == 1 ? "headless" : new String(bytes, 1, end - 1, java.nio.charset.StandardCharsets.UTF_8);
+        return end == 1 ? "headless" : new String(bytes, 1, end - 1, StandardCharsets.UTF_8);
     }
 
     private Message parseQuietly(Datagram datagram) {
@@ -460,6 +462,6 @@ public final class LivePlayer implements Runnable {
     }
 
     private static String seconds(long millis) {
-        return millis % 1000 == 0 ? Long.toString(millis / 1000) : String.format(java.util.Locale.ROOT, "%.1f", millis / 1000.0);
+        return millis % 1000 == 0 ? Long.toString(millis / 1000) : String.format(Locale.ROOT, "%.1f", millis / 1000.0);
     }
 }

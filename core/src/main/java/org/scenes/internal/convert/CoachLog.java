@@ -1,6 +1,7 @@
 package org.scenes.internal.convert;
 
 import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
 
 /**
  * Tells an online coach's traffic from a player's by messages only a coach exchanges, so that a
@@ -49,7 +50,7 @@ final class CoachLog {
         }
         for (int i = 0; i < MARKS.length; i++) {
             byte[] prefix = PREFIXES[i];
-            if (end - at >= prefix.length && java.util.Arrays.equals(bytes, at, at + prefix.length, prefix, 0, prefix.length)) {
+            if (end - at >= prefix.length && Arrays.equals(bytes, at, at + prefix.length, prefix, 0, prefix.length)) {
                 return MARKS[i][1];
             }
         }

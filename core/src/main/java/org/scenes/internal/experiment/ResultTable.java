@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import org.scenes.internal.files.AtomicOutput;
+import org.scenes.internal.validate.Folds;
 
 /**
  * The results of a sweep: one row per configuration with every measure (the CSV and JSON
@@ -248,7 +249,7 @@ public final class ResultTable {
         text.append("Regenerate with `").append(command).append("` (sweep script, data and protocol: ")
                 .append("docs/scripting.md). Cross-validation over ").append(sweep.data().size())
                 .append(" scene files, each tested against ")
-                .append(sweep.protocol() == org.scenes.internal.validate.Folds.Protocol.NEXT ? "the next one" : "all the others")
+                .append(sweep.protocol() == Folds.Protocol.NEXT ? "the next one" : "all the others")
                 .append("; seed ").append(sweep.seed());
         if (!sweep.transforms().isEmpty()) {
             text.append("; transforms ").append(String.join(", ", sweep.transforms()));

@@ -9,6 +9,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.PushbackInputStream;
+import java.math.BigDecimal;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -18,6 +19,7 @@ import java.util.Map;
 import java.util.function.Consumer;
 import org.scenes.api.Side;
 import org.scenes.internal.files.Inputs;
+import org.scenes.internal.files.JsonErrors;
 
 /**
  * Reads a server game log ({@code .rcg}) into {@link GameFrame}s, one per {@code show}, as a
@@ -284,7 +286,7 @@ public final class GameLogReader {
             }
         } catch (JsonParseException e) {
             throw new GameLogException(file, e.getLocation() == null ? 0 : e.getLocation().getLineNr(),
-                    org.scenes.internal.files.JsonErrors.plain(e.getOriginalMessage()));
+                    JsonErrors.plain(e.getOriginalMessage()));
         }
     }
 
@@ -345,7 +347,7 @@ public final class GameLogReader {
             if (value instanceof Boolean bool) {
                 text.append(bool ? '1' : '0');
             } else if (value instanceof Double number) {
-                text.append(java.math.BigDecimal.valueOf(number).stripTrailingZeros().toPlainString());
+                text.append(BigDecimal.valueOf(number).stripTrailingZeros().toPlainString());
             } else if (value instanceof Number number) {
                 text.append(number);
             } else if (value != null) {

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * The server's two logs of one game: the game log ({@code GAME.rcg}) and the command log
@@ -23,7 +24,7 @@ public record GameLogs(Path gameLog, Path commandLog) {
         /** The choice of its lower-case name ({@code rcl}, {@code infer}, {@code auto}), null for another word. */
         public static Commands named(String name) {
             for (Commands commands : values()) {
-                if (commands.name().toLowerCase(java.util.Locale.ROOT).equals(name)) {
+                if (commands.name().toLowerCase(Locale.ROOT).equals(name)) {
                     return commands;
                 }
             }

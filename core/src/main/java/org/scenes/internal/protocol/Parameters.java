@@ -1,5 +1,7 @@
 package org.scenes.internal.protocol;
 
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -10,7 +12,7 @@ import java.util.Map;
  */
 public record Parameters(String head, Map<String, String> named, List<String> positional) implements Message {
     public Parameters {
-        named = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(named));
+        named = Collections.unmodifiableMap(new LinkedHashMap<>(named));
         positional = List.copyOf(positional);
     }
 

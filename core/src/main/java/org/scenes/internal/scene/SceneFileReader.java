@@ -5,6 +5,7 @@ import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.core.JsonToken;
 import com.fasterxml.jackson.core.io.JsonEOFException;
+import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.NoSuchFileException;
@@ -13,6 +14,7 @@ import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
 import java.util.NoSuchElementException;
+import java.util.function.Function;
 import org.scenes.api.Action;
 import org.scenes.api.ActionType;
 import org.scenes.api.Cell;
@@ -26,6 +28,7 @@ import org.scenes.api.Side;
 import org.scenes.api.World;
 import org.scenes.internal.files.Inputs;
 import org.scenes.internal.files.IoErrors;
+import org.scenes.internal.files.JsonErrors;
 
 /**
  * Streams the scenes of a scene file one at a time, never holding the JSON tree, so files
@@ -488,7 +491,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         throw error("action '" + type.key() + "' has no parameter '" + field + "'");
     }
 
-    private <T> T parseEnum(JsonToken value, java.util.function.Function<String, T> parse) throws IOException {
+    private <T> T parseEnum(JsonToken value, Function<String, T> parse) throws IOException {
         String text = text(value);
         try {
             return parse.apply(text);
@@ -572,12 +575,12 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
             JsonLocation location = jsonError.getLocation();
             return new SceneFileException(file, location == null ? 0 : location.getLineNr(),
                     location == null ? 0 : location.getColumnNr(),
-                    "malformed JSON: " + org.scenes.internal.files.JsonErrors.plain(jsonError.getOriginalMessage()), e);
+                    "malformed JSON: " + JsonErrors.plain(jsonError.getOriginalMessage()), e);
         }
-        if (e instanceof java.io.EOFException) {
+        if (e instanceof EOFException) {
             return new SceneFileException(file, 0, 0, "the compressed file ends early (is it truncated?)", e);
         }
-        if (e instanceof org.scenes.internal.files.Inputs.CorruptCompressionException corrupt) {
+        if (e instanceof Inputs.CorruptCompressionException corrupt) {
             return new SceneFileException(file, 0, 0, corrupt.reason(), e);
         }
         long line = json == null ? 0 : json.currentLocation().getLineNr();

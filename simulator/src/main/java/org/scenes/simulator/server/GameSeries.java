@@ -1,6 +1,7 @@
 package org.scenes.simulator.server;
 
 import java.io.IOException;
+import java.nio.file.DirectoryNotEmptyException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -92,7 +93,7 @@ public final class GameSeries {
         if (games > 1 && config.recordDirectory() != null) {
             try {
                 Files.deleteIfExists(config.recordDirectory().resolve(".serving"));
-            } catch (java.nio.file.DirectoryNotEmptyException e) {
+            } catch (DirectoryNotEmptyException e) {
                 // a stopped game's incomplete logs stay for the user to see
             }
         }

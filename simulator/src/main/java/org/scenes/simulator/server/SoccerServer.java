@@ -3,6 +3,7 @@ package org.scenes.simulator.server;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.InetSocketAddress;
+import java.net.PortUnreachableException;
 import java.net.SocketAddress;
 import java.net.StandardSocketOptions;
 import java.nio.ByteBuffer;
@@ -10,6 +11,7 @@ import java.nio.channels.DatagramChannel;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -130,7 +132,7 @@ public final class SoccerServer implements AutoCloseable {
                         : ", real time"));
                 over = config.synch() ? playSynchronously(frames) : playInRealTime(frames);
             }
-            List<java.nio.file.Path> logs = recorder == null ? List.of() : recorder.commit();
+            List<Path> logs = recorder == null ? List.of() : recorder.commit();
             double seconds = (System.nanoTime() - begun) / 1e9;
             events.accept((over ? "Time over: " : "Stopped: ") + engine.team(Side.LEFT) + " " + engine.scoreLeft()
                     + " : " + engine.scoreRight() + " " + engine.team(Side.RIGHT) + " after " + engine.time()
@@ -314,7 +316,7 @@ public final class SoccerServer implements AutoCloseable {
             SocketAddress from;
             try {
                 from = channel.receive(in);
-            } catch (java.net.PortUnreachableException e) {
+            } catch (PortUnreachableException e) {
                 continue;
             }
             if (from == null) {
@@ -439,7 +441,7 @@ public final class SoccerServer implements AutoCloseable {
     private void send(Remote remote, String message) {
         try {
             remote.channel.send(nulTerminated(message), remote.address);
-        } catch (java.net.PortUnreachableException e) {
+        } catch (PortUnreachableException e) {
             // the client is gone; silence will drop it in synchronous mode
         } catch (IOException e) {
             throw new UncheckedIOException(e);

@@ -1,6 +1,7 @@
 package org.scenes.simulator.teacher;
 
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import org.scenes.api.Side;
 import org.scenes.internal.protocol.See;
@@ -25,7 +26,7 @@ public final class Teachers {
         return factory;
     }
 
-    public static java.util.Set<String> names() {
+    public static Set<String> names() {
         return BY_NAME.keySet();
     }
 

@@ -7,6 +7,7 @@ import java.util.random.RandomGenerator;
 import org.scenes.api.Action;
 import org.scenes.api.ActionLabel;
 import org.scenes.api.ActionSelector;
+import org.scenes.api.ActionType;
 import org.scenes.api.ActionWeights;
 import org.scenes.api.Neighbour;
 import org.scenes.api.PluginConfig;
@@ -49,7 +50,7 @@ public final class BodyVoteSelectorProvider implements SelectorProvider {
                 Action body = ActionLabel.bodyAction(neighbour.scene().actions());
                 // a scene without any action (an unanswered see, kept by convert) votes for sending nothing
                 double weight = body != null ? weights.weight(body.type())
-                        : neighbour.scene().actions().isEmpty() ? weights.weight(org.scenes.api.ActionType.NONE) : 0;
+                        : neighbour.scene().actions().isEmpty() ? weights.weight(ActionType.NONE) : 0;
                 if (weight <= 0) {
                     continue;
                 }
