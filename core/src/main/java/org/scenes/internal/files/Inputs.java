@@ -1,5 +1,6 @@
 package org.scenes.internal.files;
 
+import com.github.luben.zstd.ZstdInputStream;
 import java.io.BufferedInputStream;
 import java.io.FileInputStream;
 import java.io.FilterInputStream;
@@ -8,7 +9,6 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.zip.GZIPInputStream;
-import com.github.luben.zstd.ZstdInputStream;
 
 /**
  * Opens input files, decompressing gzip and zstd by their magic bytes whatever the file is called;
