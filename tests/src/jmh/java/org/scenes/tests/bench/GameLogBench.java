@@ -49,8 +49,8 @@ import org.scenes.simulator.teacher.Teachers;
  * beside it), e.g. one of the real HELIOS games. The JVM's heap is capped at 256 MB: conversion
  * streams both logs. One operation is a whole game; {@code -prof gc} gives its allocation.
  *
- * <p>The other benchmarks split the cost: {@link #plainJson} writes the same scene files without
- * gzip, {@link #noFiles} hands the scenes to a blackhole (rebuilding, parsing, world models,
+ * <p>The other benchmarks split the cost: {@link #zstdFiles} writes them zstd-compressed,
+ * {@link #plainJson} the same scene files without compression, {@link #noFiles} hands the scenes to a blackhole (rebuilding, parsing, world models,
  * pairing, and the inference for {@code infer}), {@link #readGameLog} only reads the game log's
  * shows. Each operation prints the process's CPU time it took (JIT and GC threads included),
  * the figure to read on a machine whose cores are shared.
@@ -135,6 +135,12 @@ public class GameLogBench {
     @Benchmark
     public long allPlayers() throws IOException {
         return write(".json.gz");
+    }
+
+    /** As {@code scenes convert --compression zstd}. */
+    @Benchmark
+    public long zstdFiles() throws IOException {
+        return write(".json.zst");
     }
 
     @Benchmark
