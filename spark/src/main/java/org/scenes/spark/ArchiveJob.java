@@ -146,9 +146,10 @@ final class ArchiveJob {
         out.printf(Locale.ROOT, "%-22s %d%n", "Failed", failed);
         out.printf(Locale.ROOT, "%-22s %d (no command log)%n", "Skipped",
                 manifest.stream().filter(r -> r.status() == ManifestRow.Status.skipped).count());
-        out.printf(Locale.ROOT, "%-22s %d scene files, %d scenes, in %s/TEAM/GAME_UNUM.json.gz%n", "Written",
+        out.printf(Locale.ROOT, "%-22s %d scene files, %d scenes, in %s/TEAM/%s%n", "Written",
                 manifest.stream().mapToLong(ManifestRow::players).sum(),
-                manifest.stream().mapToLong(ManifestRow::scenes).sum(), outDir);
+                manifest.stream().mapToLong(ManifestRow::scenes).sum(), outDir,
+                settings.compression().fileName("GAME_UNUM"));
         out.printf(Locale.ROOT, "%-22s %s/%s%n", "Manifest", outDir, ArchiveConversion.MANIFEST);
         out.printf(Locale.ROOT, "%-22s %.2f s%n", "Time", (System.nanoTime() - started) / 1e9);
         out.flush();

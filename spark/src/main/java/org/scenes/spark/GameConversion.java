@@ -46,13 +46,19 @@ final class GameConversion {
 
     /**
      * How logs become scenes: the grid, the pairing and strictness of {@code scenes convert}, and
-     * for game logs the players chosen, the fading and the order of commands and sees.
+     * for game logs the players chosen, the fading and the order of commands and sees; how the scene
+     * files are compressed (its key: the settings travel to the executors serialized).
      */
     record Settings(int columns, double minAngle, double maxAngle, double[] bounds, String pairing, boolean strict,
-                    GameLogSettings gameLogs, boolean world) implements Serializable {
-        static Settings of(Grid grid, Pairing pairing, boolean strict, GameLogSettings gameLogs, boolean world) {
+                    GameLogSettings gameLogs, boolean world, String compressionKey) implements Serializable {
+        static Settings of(Grid grid, Pairing pairing, boolean strict, GameLogSettings gameLogs, boolean world,
+                           SceneCompression compression) {
             return new Settings(grid.columns(), grid.minAngle(), grid.maxAngle(), grid.bounds(), pairing.key(), strict,
-                    gameLogs, world);
+                    gameLogs, world, compression.key());
+        }
+
+        SceneCompression compression() {
+            return SceneCompression.fromKey(compressionKey);
         }
 
         Grid grid() {
@@ -64,7 +70,7 @@ final class GameConversion {
             return new ConvertSettings(grid(), Pairing.fromKey(pairing), strict, world, false,
                     Fading.named(gameLogs.fading(), gameLogs.fadingSeed()),
                     GameLogConverter.only(gameLogs.team(), gameLogs.unum()), gameLogs.commandsFirst(),
-                    gameLogs.seePhase(), 1, SceneCompression.GZIP);
+                    gameLogs.seePhase(), 1, compression());
         }
     }
 
@@ -112,8 +118,9 @@ final class GameConversion {
                         .build();
                 Path local = hadoop.local(log, scratch);
                 String fileName = log.substring(log.lastIndexOf('/') + 1);
-                Path sceneFile = scratch.resolve(names.get(i) + ".json.gz");
-                String target = outDir.replaceFirst("/+$", "") + "/" + game.name() + "/" + names.get(i) + ".json.gz";
+                String sceneName = settings.compression().fileName(names.get(i));
+                Path sceneFile = scratch.resolve(sceneName);
+                String target = outDir.replaceFirst("/+$", "") + "/" + game.name() + "/" + sceneName;
                 ConversionReport report;
                 String error = null;
                 try (LazySceneFileWriter writer = new LazySceneFileWriter(sceneFile, grid, fileName)) {
@@ -141,7 +148,7 @@ final class GameConversion {
 
     /**
      * A game's server logs: {@link GameSceneFiles} writes a scene file per player, as {@code scenes
-     * convert GAME.rcg --out-dir} does, and each is published as {@code OUT/GAME/TEAM_UNUM.json.gz}.
+     * convert GAME.rcg --out-dir} does, and each is published as {@code OUT/GAME/TEAM_UNUM.json.gz} (or as compressed).
      * A result per player; the game's warnings go with the first.
      */
     private static List<LogResult> convertServerLogs(Game game, Settings settings, String outDir, HadoopFiles hadoop,
@@ -155,7 +162,7 @@ final class GameConversion {
             GameLogs logs = new GameLogs(hadoop.local(gameLog, scratch), hadoop.local(commandLog, scratch));
             written = GameSceneFiles.write(settings.gameLogs().converter(grid, Pairing.fromKey(settings.pairing()))
                             .world(settings.world()),
-                    grid, logs, key -> files.resolve(key + ".json.gz"));
+                    grid, logs, key -> files.resolve(settings.compression().fileName(key)));
         } catch (IOException | RuntimeException e) {
             return List.of(failed(gameLog, gameLog + ": " + e.getMessage(), new ArrayList<>()));
         }
@@ -170,8 +177,9 @@ final class GameConversion {
         }
         List<LogResult> results = new ArrayList<>();
         for (GameLogConverter.PlayerResult player : written.result().players()) {
-            String target = outDir.replaceFirst("/+$", "") + "/" + game.name() + "/" + player.key() + ".json.gz";
-            hadoop.publish(files.resolve(player.key() + ".json.gz"), target);
+            String sceneName = settings.compression().fileName(player.key());
+            String target = outDir.replaceFirst("/+$", "") + "/" + game.name() + "/" + sceneName;
+            hadoop.publish(files.resolve(sceneName), target);
             results.add(result(gameLog + "#" + player.key(), target, null, player.report(),
                     results.isEmpty() ? warnings : new ArrayList<>()));
         }

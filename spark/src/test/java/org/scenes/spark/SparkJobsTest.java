@@ -10,6 +10,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -20,6 +21,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.scenes.internal.files.Inputs;
 import org.scenes.simulator.GameSetup;
 import org.scenes.simulator.Simulator;
 import org.scenes.simulator.teacher.Teachers;
@@ -148,6 +150,27 @@ class SparkJobsTest {
             }
         }
         assertEquals(12, files(out).size());
+    }
+
+    @Test
+    void convertWritesZstdScenesAsScenesConvertDoesWhenAsked() throws IOException {
+        Path gameLog = serverLogs.get(0);
+        String base = gameLog.getFileName().toString().replaceFirst("\\.rcg$", "");
+        Path out = work.resolve("spark-zstd-scenes");
+        Run job = spark("convert", gameLog.toString(), "--out-dir", out.toString(), "--compression", "zstd");
+        assertEquals(0, job.status(), job.err());
+        Path expected = work.resolve("local-zstd-scenes");
+        Run convert = local("convert", gameLog.toString(), "--out-dir", expected.toString(), "--compression", "zstd");
+        assertEquals(0, convert.status(), convert.err());
+        List<Path> local = files(expected);
+        assertEquals(6, local.size(), "a scene file per player");
+        for (Path file : local) {
+            assertTrue(file.getFileName().toString().endsWith(".json.zst"), file.toString());
+            try (InputStream a = Inputs.open(file); InputStream b = Inputs.open(out.resolve(base).resolve(file.getFileName()))) {
+                assertEquals(new String(a.readAllBytes(), StandardCharsets.UTF_8), new String(b.readAllBytes(),
+                        StandardCharsets.UTF_8), file.toString());
+            }
+        }
     }
 
     @Test
