@@ -12,28 +12,16 @@ import java.util.List;
 final class LowDimensionalTreeBuilder {
     private static final int LEAF = 16;
 
+    private final LowDimensionalPoints points;
     private final ObjectSetMetric metric;
     private final int stride;
-    private final int[] slotGroup;
-    private final double[] slotWeight;
     private final int width;
-    private final float[] values;
-    private final int[] mask;
-    private final int[] actionClass;
-    private final int[] indexStart;
-    private final int[] indices;
 
     LowDimensionalTreeBuilder(LowDimensionalPoints points) {
+        this.points = points;
         this.metric = points.metric();
         this.stride = metric.stride();
-        this.slotGroup = points.slotGroup();
-        this.slotWeight = points.slotWeight();
-        this.width = slotGroup.length * stride;
-        this.values = points.values();
-        this.mask = points.mask();
-        this.actionClass = points.actionClass();
-        this.indexStart = points.indexStart();
-        this.indices = points.indices();
+        this.width = points.slotGroup().length * stride;
     }
 
     /**
@@ -42,21 +30,22 @@ final class LowDimensionalTreeBuilder {
      * in some slot.
      */
     int[] grow(LowDimensionalTree tree) {
-        int points = mask.length;
-        int[] order = new int[points];
-        for (int p = 0; p < points; p++) {
+        int pointCount = points.mask().length;
+        int[] order = new int[pointCount];
+        for (int p = 0; p < pointCount; p++) {
             order[p] = p;
         }
         List<Integer> bucketStarts = new ArrayList<>();
-        for (int p = 0; p <= points; p++) {
-            if (p == 0 || p == points || mask[p] != mask[p - 1] || actionClass[p] != actionClass[p - 1]) {
+        for (int p = 0; p <= pointCount; p++) {
+            if (p == 0 || p == pointCount || points.mask()[p] != points.mask()[p - 1]
+                    || points.actionClass()[p] != points.actionClass()[p - 1]) {
                 bucketStarts.add(p);
             }
         }
         if (!categorize(tree)) {
             return null;
         }
-        int root = node(tree, order, 0, points);
+        int root = node(tree, order, 0, pointCount);
         buckets(tree, order, bucketStarts.stream().mapToInt(Integer::intValue).toArray(), 0, bucketStarts.size() - 1, root);
         return order;
     }
@@ -67,30 +56,30 @@ final class LowDimensionalTreeBuilder {
      * more tightly and more cheaply than a box. False beyond 64 in some slot.
      */
     private boolean categorize(LowDimensionalTree tree) {
-        int slots = slotGroup.length;
+        int slots = points.slotGroup().length;
         int additiveAt = metric.additiveAt();
         int additive = stride - additiveAt;
-        int points = mask.length;
+        int pointCount = points.mask().length;
         tree.categoryValues = new float[slots][];
         tree.categoryCount = new int[slots];
-        tree.pointCategory = new int[points * slots];
+        tree.pointCategory = new int[pointCount * slots];
         float[] table = new float[Long.SIZE * additive];
         for (int s = 0; s < slots; s++) {
             int count = 0;
-            for (int p = 0; p < points; p++) {
-                if ((mask[p] & 1 << s) == 0) {
+            for (int p = 0; p < pointCount; p++) {
+                if ((points.mask()[p] & 1 << s) == 0) {
                     continue;
                 }
                 int at = p * width + s * stride + additiveAt;
                 int c = 0;
-                while (c < count && !Arrays.equals(table, c * additive, (c + 1) * additive, values, at, at + additive)) {
+                while (c < count && !Arrays.equals(table, c * additive, (c + 1) * additive, points.values(), at, at + additive)) {
                     c++;
                 }
                 if (c == count) {
                     if (count == Long.SIZE) {
                         return false;
                     }
-                    System.arraycopy(values, at, table, c * additive, additive);
+                    System.arraycopy(points.values(), at, table, c * additive, additive);
                     count++;
                 }
                 tree.pointCategory[p * slots + s] = c;
@@ -114,11 +103,11 @@ final class LowDimensionalTreeBuilder {
         int from = starts[first];
         int to = starts[last];
         int middle = first + 1;
-        int differ = mask[starts[first]] ^ mask[starts[last - 1]];
+        int differ = points.mask()[starts[first]] ^ points.mask()[starts[last - 1]];
         if (differ != 0) {
             // buckets are in order of their masks: split where the highest slot bit in which they differ turns on
             int bit = Integer.highestOneBit(differ);
-            while ((mask[starts[middle]] & bit) == 0) {
+            while ((points.mask()[starts[middle]] & bit) == 0) {
                 middle++;
             }
         } else {
@@ -156,7 +145,7 @@ final class LowDimensionalTreeBuilder {
         tree.to.add(to);
         tree.left.add(-1);
         tree.right.add(-1);
-        int slots = slotGroup.length;
+        int slots = points.slotGroup().length;
         float[] low = new float[width];
         float[] high = new float[width];
         Arrays.fill(low, Float.POSITIVE_INFINITY);
@@ -170,22 +159,22 @@ final class LowDimensionalTreeBuilder {
         int classes = 0;
         for (int r = from; r < to; r++) {
             int p = order[r];
-            some |= mask[p];
-            all &= mask[p];
-            classes |= 1 << (actionClass[p] + 1);
+            some |= points.mask()[p];
+            all &= points.mask()[p];
+            classes |= 1 << (points.actionClass()[p] + 1);
             for (int s = 0; s < slots; s++) {
-                if ((mask[p] & 1 << s) == 0) {
+                if ((points.mask()[p] & 1 << s) == 0) {
                     continue;
                 }
                 for (int f = s * stride; f < (s + 1) * stride; f++) {
-                    float v = values[p * width + f];
+                    float v = points.values()[p * width + f];
                     low[f] = Math.min(low[f], v);
                     high[f] = Math.max(high[f], v);
                 }
-                penalty[s] = Math.min(penalty[s], metric.penalty(values, p * width + s * stride));
+                penalty[s] = Math.min(penalty[s], metric.penalty(points.values(), p * width + s * stride));
                 categories[s] |= 1L << tree.pointCategory[p * slots + s];
             }
-            least = Math.min(least, indices[indexStart[p]]);
+            least = Math.min(least, points.indices()[points.indexStart()[p]]);
         }
         tree.some.add(some);
         tree.all.add(all);
@@ -219,23 +208,23 @@ final class LowDimensionalTreeBuilder {
         double extent = 0;
         for (int f = 0; f < width; f++) {
             int s = f / stride;
-            if ((mask[order[from]] & 1 << s) == 0 || f % stride == metric.penaltyIndex()) {
+            if ((points.mask()[order[from]] & 1 << s) == 0 || f % stride == metric.penaltyIndex()) {
                 continue;
             }
-            double e = slotWeight[s] * ((double) high[f] - low[f]);
+            double e = points.slotWeight()[s] * ((double) high[f] - low[f]);
             if (e > extent) {
                 extent = e;
                 widest = f;
             }
         }
         if (widest < 0) {
-            return; // all points alike in every compared float (cannot happen for distinct points)
+            return; // all pointCount alike in every compared float (cannot happen for distinct pointCount)
         }
         int middle = (from + to) >>> 1;
         // sorted as primitive keys: the float made order-preserving in the high half, the point in the low
         long[] keys = new long[to - from];
         for (int r = from; r < to; r++) {
-            int bits = Float.floatToIntBits(values[order[r] * width + widest]);
+            int bits = Float.floatToIntBits(points.values()[order[r] * width + widest]);
             int ordered = bits ^ ((bits >> 31) & 0x7fffffff);
             keys[r - from] = (long) ordered << 32 | (order[r] & 0xffffffffL);
         }
