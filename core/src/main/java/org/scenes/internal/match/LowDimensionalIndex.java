@@ -1,9 +1,6 @@
 package org.scenes.internal.match;
 
-import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
-import org.scenes.api.ActionType;
 import org.scenes.api.PackedMetric;
 import org.scenes.api.Scene;
 import org.scenes.api.TopK;
@@ -35,7 +32,6 @@ import org.scenes.api.TopK;
  * rounding. Read-only once built: queries keep their scratch per call.
  */
 final class LowDimensionalIndex implements PackedMetric.PackedScenes {
-    private static final int LEAF = 16;
     /** Bounds are lowered by this share: single-precision pair costs are within 3e-7 of the exact one. */
     private static final double SHAVE = 1e-6;
 
@@ -87,8 +83,9 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
     private final int[] boxBit;
     private final double[] boxWeight;
 
-    private LowDimensionalIndex(ObjectSetMetric metric, int[] slotGroup, boolean[] slotPrevious, double[] slotWeight,
-                                float[] values, int[] mask, int[] actionClass, int[] indexStart, int[] indices, Tree tree) {
+    private LowDimensionalIndex(LowDimensionalPoints points, LowDimensionalTree tree) {
+        ObjectSetMetric metric = points.metric();
+        int[] slotGroup = points.slotGroup();
         this.metric = metric;
         this.stride = metric.stride();
         ObjectSetMetric.Settings settings = metric.settings();
@@ -96,14 +93,14 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         this.optimal = !metric.greedy();
         this.memoryAction = settings.memoryActionWeight();
         this.slotGroup = slotGroup;
-        this.slotPrevious = slotPrevious;
-        this.slotWeight = slotWeight;
+        this.slotPrevious = points.slotPrevious();
+        this.slotWeight = points.slotWeight();
         this.width = slotGroup.length * stride;
-        this.values = values;
-        this.mask = mask;
-        this.actionClass = actionClass;
-        this.indexStart = indexStart;
-        this.indices = indices;
+        this.values = points.values();
+        this.mask = points.mask();
+        this.actionClass = points.actionClass();
+        this.indexStart = points.indexStart();
+        this.indices = points.indices();
         this.categoryValues = tree.categoryValues;
         int nodes = tree.from.size();
         int anywhere = nodes == 0 ? 0 : tree.some.get(0);
@@ -165,409 +162,13 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
      * where the other paths serve.
      */
     static LowDimensionalIndex build(ObjectSetMetric metric, List<Scene> scenes) {
-        ObjectSetMetric.Settings settings = metric.settings();
-        List<Integer> groups = new ArrayList<>();
-        for (int g = 0; g < ObjectSetMetric.GROUPS; g++) {
-            if (metric.groupWeight(g) != 0) {
-                groups.add(g);
-            }
-        }
-        boolean remember = settings.memoryWeight() > 0;
-        int slots = groups.size() * (remember ? 2 : 1);
-        if (slots == 0 || slots > 30) {
+        LowDimensionalPoints points = LowDimensionalPoints.of(metric, scenes);
+        if (points == null) {
             return null;
         }
-        int[] slotGroup = new int[slots];
-        boolean[] slotPrevious = new boolean[slots];
-        double[] slotWeight = new double[slots];
-        for (int s = 0; s < slots; s++) {
-            slotGroup[s] = groups.get(s % groups.size());
-            slotPrevious[s] = s >= groups.size();
-            // as ObjectSetMetric.distance weighs them: scale times the group's weight
-            slotWeight[s] = (slotPrevious[s] ? settings.memoryWeight() : 1) * metric.groupWeight(slotGroup[s]);
-        }
-        int stride = metric.stride();
-        int width = slots * stride;
-        int n = scenes.size();
-        // one pass (each stored scene is decoded once): encode, and give up at a group of two objects
-        float[] all = new float[Math.multiplyExact(n, width)];
-        if (ActionType.values().length * 3 > 31) {
-            return null; // previous action classes (and none) must fit a node's bits
-        }
-        int[] sceneMask = new int[n];
-        int[] sceneClass = new int[n];
-        for (int i = 0; i < n; i++) {
-            Scene scene = scenes.get(i);
-            float[][] current = metric.encode(scene, false).groups();
-            float[][] previous = remember ? metric.encodePrevious(scene.previous()).groups() : null;
-            for (int s = 0; s < slots; s++) {
-                float[] objects = (slotPrevious[s] ? previous : current)[slotGroup[s]];
-                if (objects.length > stride) {
-                    return null;
-                }
-                if (objects.length > 0) {
-                    sceneMask[i] |= 1 << s;
-                    System.arraycopy(objects, 0, all, i * width + s * stride, stride);
-                }
-            }
-            sceneClass[i] = settings.memoryActionWeight() > 0 && scene.previous() != null
-                    ? ObjectSetMetric.actionClass(scene.previous()) : -1;
-        }
-        // scenes in order of (mask, class, floats, index): equal runs are points, buckets contiguous
-        Integer[] order = new Integer[n];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-        }
-        Arrays.sort(order, (x, y) -> {
-            int c = Integer.compare(sceneMask[x], sceneMask[y]);
-            if (c != 0) {
-                return c;
-            }
-            c = Integer.compare(sceneClass[x], sceneClass[y]);
-            if (c != 0) {
-                return c;
-            }
-            for (int f = 0; f < width; f++) {
-                c = Integer.compare(Float.floatToIntBits(all[x * width + f]), Float.floatToIntBits(all[y * width + f]));
-                if (c != 0) {
-                    return c;
-                }
-            }
-            return Integer.compare(x, y);
-        });
-        List<Integer> starts = new ArrayList<>();
-        for (int r = 0; r < n; r++) {
-            if (r == 0 || !samePoint(all, width, sceneMask, sceneClass, order[r - 1], order[r])) {
-                starts.add(r);
-            }
-        }
-        int points = starts.size();
-        float[] values = new float[points * width];
-        int[] mask = new int[points];
-        int[] actionClass = new int[points];
-        int[] indexStart = new int[points + 1];
-        int[] indices = new int[n];
-        for (int p = 0; p < points; p++) {
-            int first = order[starts.get(p)];
-            System.arraycopy(all, first * width, values, p * width, width);
-            mask[p] = sceneMask[first];
-            actionClass[p] = sceneClass[first];
-            indexStart[p] = starts.get(p);
-        }
-        indexStart[points] = n;
-        for (int r = 0; r < n; r++) {
-            indices[r] = order[r];
-        }
-        LowDimensionalIndex shape = new LowDimensionalIndex(metric, slotGroup, slotPrevious, slotWeight, values, mask,
-                actionClass, indexStart, indices, new Tree());
-        return shape.withTree();
-    }
-
-    private static boolean samePoint(float[] all, int width, int[] mask, int[] classes, int x, int y) {
-        if (mask[x] != mask[y] || classes[x] != classes[y]) {
-            return false;
-        }
-        for (int f = 0; f < width; f++) {
-            if (Float.floatToIntBits(all[x * width + f]) != Float.floatToIntBits(all[y * width + f])) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /** The tree under construction, in growable lists. */
-    private static final class Tree {
-        final List<Integer> from = new ArrayList<>();
-        final List<Integer> to = new ArrayList<>();
-        final List<Integer> left = new ArrayList<>();
-        final List<Integer> right = new ArrayList<>();
-        final List<Integer> some = new ArrayList<>();
-        final List<Integer> all = new ArrayList<>();
-        final List<Integer> classes = new ArrayList<>();
-        final FloatList min = new FloatList();
-        final FloatList max = new FloatList();
-        final List<Double> penalty = new ArrayList<>();
-        final List<Long> category = new ArrayList<>();
-        final List<Integer> index = new ArrayList<>();
-        /** Per slot its distinct additive tuples; per point and slot the index of its tuple there. */
-        float[][] categoryValues;
-        int[] categoryCount;
-        int[] pointCategory;
-    }
-
-    private static final class FloatList {
-        private float[] data = new float[64];
-        private int size;
-
-        void add(float value) {
-            if (size == data.length) {
-                data = Arrays.copyOf(data, size * 2);
-            }
-            data[size++] = value;
-        }
-
-        float get(int i) {
-            return data[i];
-        }
-
-        float[] toArray() {
-            return Arrays.copyOf(data, size);
-        }
-    }
-
-    /**
-     * Numbers each slot's distinct additive tuples (weighted row, sides: a few values each) into
-     * the tree: a node then keeps which of them its points hold as bits, which bounds their cost
-     * more tightly and more cheaply than a box. False beyond 64 in some slot.
-     */
-    private boolean categorize(Tree tree) {
-        int slots = slotGroup.length;
-        int additiveAt = metric.additiveAt();
-        int additive = stride - additiveAt;
-        int points = mask.length;
-        tree.categoryValues = new float[slots][];
-        tree.categoryCount = new int[slots];
-        tree.pointCategory = new int[points * slots];
-        float[] table = new float[Long.SIZE * additive];
-        for (int s = 0; s < slots; s++) {
-            int count = 0;
-            for (int p = 0; p < points; p++) {
-                if ((mask[p] & 1 << s) == 0) {
-                    continue;
-                }
-                int at = p * width + s * stride + additiveAt;
-                int c = 0;
-                while (c < count && !Arrays.equals(table, c * additive, (c + 1) * additive, values, at, at + additive)) {
-                    c++;
-                }
-                if (c == count) {
-                    if (count == Long.SIZE) {
-                        return false;
-                    }
-                    System.arraycopy(values, at, table, c * additive, additive);
-                    count++;
-                }
-                tree.pointCategory[p * slots + s] = c;
-            }
-            tree.categoryCount[s] = count;
-            tree.categoryValues[s] = Arrays.copyOf(table, count * additive);
-        }
-        return true;
-    }
-
-    /**
-     * This index with its k-d tree: the points reordered within each bucket so that every
-     * node is a contiguous range.
-     */
-    private LowDimensionalIndex withTree() {
-        int points = mask.length;
-        int[] order = new int[points];
-        for (int p = 0; p < points; p++) {
-            order[p] = p;
-        }
-        List<Integer> bucketStarts = new ArrayList<>();
-        for (int p = 0; p <= points; p++) {
-            if (p == 0 || p == points || mask[p] != mask[p - 1] || actionClass[p] != actionClass[p - 1]) {
-                bucketStarts.add(p);
-            }
-        }
-        Tree tree = new Tree();
-        if (!categorize(tree)) {
-            return null;
-        }
-        int root = node(tree, order, 0, points);
-        buckets(tree, order, bucketStarts.stream().mapToInt(Integer::intValue).toArray(), 0, bucketStarts.size() - 1, root);
-        // points in tree order, with their indices
-        float[] sortedValues = new float[values.length];
-        int[] sortedMask = new int[points];
-        int[] sortedClass = new int[points];
-        int[] sortedStart = new int[points + 1];
-        int[] sortedIndices = new int[indices.length];
-        int at = 0;
-        for (int r = 0; r < points; r++) {
-            int p = order[r];
-            System.arraycopy(values, p * width, sortedValues, r * width, width);
-            sortedMask[r] = mask[p];
-            sortedClass[r] = actionClass[p];
-            sortedStart[r] = at;
-            for (int i = indexStart[p]; i < indexStart[p + 1]; i++) {
-                sortedIndices[at++] = indices[i];
-            }
-        }
-        sortedStart[points] = at;
-        return new LowDimensionalIndex(metric, slotGroup, slotPrevious, slotWeight, sortedValues, sortedMask, sortedClass,
-                sortedStart, sortedIndices, tree);
-    }
-
-    /**
-     * The children of a node over buckets [first, last) (bucket b being points starts[b] to
-     * starts[b + 1]): one bucket is split by its floats; several are halved at the bucket boundary
-     * nearest the middle point, so buckets of every size sit under one root.
-     */
-    private void buckets(Tree tree, int[] order, int[] starts, int first, int last, int node) {
-        if (last - first == 1) {
-            split(tree, order, node);
-            return;
-        }
-        int from = starts[first];
-        int to = starts[last];
-        int middle = first + 1;
-        int differ = mask[starts[first]] ^ mask[starts[last - 1]];
-        if (differ != 0) {
-            // buckets are in order of their masks: split where the highest slot bit in which they differ turns on
-            int bit = Integer.highestOneBit(differ);
-            while ((mask[starts[middle]] & bit) == 0) {
-                middle++;
-            }
-        } else {
-            for (int b = first + 2; b < last; b++) {
-                if (Math.abs(2L * starts[b] - from - to) < Math.abs(2L * starts[middle] - from - to)) {
-                    middle = b;
-                }
-            }
-        }
-        int left = children(tree, order, node, starts[middle]);
-        buckets(tree, order, starts, first, middle, left);
-        buckets(tree, order, starts, middle, last, left + 1);
-    }
-
-    /**
-     * Two children of the node, split at point {@code middle}, made one after the other: a query
-     * computes both bounds together, from one run of memory. Returns the left one.
-     */
-    private int children(Tree tree, int[] order, int node, int middle) {
-        int left = node(tree, order, tree.from.get(node), middle);
-        int right = node(tree, order, middle, tree.to.get(node));
-        tree.left.set(node, left);
-        tree.right.set(node, right);
-        return left;
-    }
-
-    /**
-     * A new leaf over order[from, to): which slots some and all of its points hold, their
-     * classes, per slot the box of the floats and the least penalty of the points holding it,
-     * the least scene index.
-     */
-    private int node(Tree tree, int[] order, int from, int to) {
-        int node = tree.from.size();
-        tree.from.add(from);
-        tree.to.add(to);
-        tree.left.add(-1);
-        tree.right.add(-1);
-        int slots = slotGroup.length;
-        float[] low = new float[width];
-        float[] high = new float[width];
-        Arrays.fill(low, Float.POSITIVE_INFINITY);
-        Arrays.fill(high, Float.NEGATIVE_INFINITY);
-        double[] penalty = new double[slots];
-        Arrays.fill(penalty, Double.POSITIVE_INFINITY);
-        long[] categories = new long[slots];
-        int least = Integer.MAX_VALUE;
-        int some = 0;
-        int all = -1;
-        int classes = 0;
-        for (int r = from; r < to; r++) {
-            int p = order[r];
-            some |= mask[p];
-            all &= mask[p];
-            classes |= 1 << (actionClass[p] + 1);
-            for (int s = 0; s < slots; s++) {
-                if ((mask[p] & 1 << s) == 0) {
-                    continue;
-                }
-                for (int f = s * stride; f < (s + 1) * stride; f++) {
-                    float v = values[p * width + f];
-                    low[f] = Math.min(low[f], v);
-                    high[f] = Math.max(high[f], v);
-                }
-                penalty[s] = Math.min(penalty[s], metric.penalty(values, p * width + s * stride));
-                categories[s] |= 1L << tree.pointCategory[p * slots + s];
-            }
-            least = Math.min(least, indices[indexStart[p]]);
-        }
-        tree.some.add(some);
-        tree.all.add(all);
-        tree.classes.add(classes);
-        for (int f = 0; f < width; f++) {
-            tree.min.add(low[f]);
-            tree.max.add(high[f]);
-        }
-        for (int s = 0; s < slots; s++) {
-            tree.penalty.add(penalty[s]);
-            tree.category.add(categories[s]);
-        }
-        tree.index.add(least);
-        return node;
-    }
-
-    /** Below a node within one bucket and above a leaf's size, children split at the median of the widest weighted float. */
-    private void split(Tree tree, int[] order, int node) {
-        int from = tree.from.get(node);
-        int to = tree.to.get(node);
-        if (to - from <= LEAF) {
-            return;
-        }
-        float[] low = new float[width];
-        float[] high = new float[width];
-        for (int f = 0; f < width; f++) {
-            low[f] = tree.min.get(node * width + f);
-            high[f] = tree.max.get(node * width + f);
-        }
-        int widest = -1;
-        double extent = 0;
-        for (int f = 0; f < width; f++) {
-            int s = f / stride;
-            if ((mask[order[from]] & 1 << s) == 0 || f % stride == metric.penaltyIndex()) {
-                continue;
-            }
-            double e = slotWeight[s] * ((double) high[f] - low[f]);
-            if (e > extent) {
-                extent = e;
-                widest = f;
-            }
-        }
-        if (widest < 0) {
-            return; // all points alike in every compared float (cannot happen for distinct points)
-        }
-        int middle = (from + to) >>> 1;
-        // sorted as primitive keys: the float made order-preserving in the high half, the point in the low
-        long[] keys = new long[to - from];
-        for (int r = from; r < to; r++) {
-            int bits = Float.floatToIntBits(values[order[r] * width + widest]);
-            int ordered = bits ^ ((bits >> 31) & 0x7fffffff);
-            keys[r - from] = (long) ordered << 32 | (order[r] & 0xffffffffL);
-        }
-        Arrays.sort(keys);
-        for (int r = from; r < to; r++) {
-            order[r] = (int) keys[r - from];
-        }
-        middle = from + betweenValues(keys, middle - from);
-        int left = children(tree, order, node, middle);
-        split(tree, order, left);
-        split(tree, order, left + 1);
-    }
-
-    /**
-     * Where to split sorted keys (value in the high half) near position {@code middle}: the
-     * nearest boundary between two values that leaves each side at least an eighth, else middle.
-     * Equal values on both sides (rows, sides of the heading, repeated positions) would leave
-     * both children's boxes around a query that has that value, and the search would visit both.
-     */
-    private static int betweenValues(long[] keys, int middle) {
-        int n = keys.length;
-        for (int d = 0; d <= n / 2 - n / 8; d++) {
-            if (startsValue(keys, middle - d)) {
-                return middle - d;
-            }
-            if (startsValue(keys, middle + d)) {
-                return middle + d;
-            }
-        }
-        return middle;
-    }
-
-    private static boolean startsValue(long[] keys, int r) {
-        return r > 0 && r < keys.length && keys[r] >>> 32 != keys[r - 1] >>> 32;
+        LowDimensionalTree tree = new LowDimensionalTree();
+        int[] order = new LowDimensionalTreeBuilder(points).grow(tree);
+        return order == null ? null : new LowDimensionalIndex(points.inOrder(order), tree);
     }
 
     /**
@@ -755,67 +356,6 @@ final class LowDimensionalIndex implements PackedMetric.PackedScenes {
         int last = Math.min(indexStart[p + 1], indexStart[p] + top.capacity());
         for (int i = indexStart[p]; i < last; i++) {
             top.offer(total, indices[i]);
-        }
-    }
-
-    /** A min-heap of nodes by lower bound. */
-    private static final class NodeHeap {
-        private double[] bounds = new double[64];
-        private int[] nodes = new int[64];
-        int size;
-
-        void push(double bound, int node) {
-            if (size == nodes.length) {
-                bounds = Arrays.copyOf(bounds, size * 2);
-                nodes = Arrays.copyOf(nodes, size * 2);
-            }
-            int child = size++;
-            while (child > 0) {
-                int parent = (child - 1) >>> 1;
-                if (bounds[parent] <= bound) {
-                    break;
-                }
-                bounds[child] = bounds[parent];
-                nodes[child] = nodes[parent];
-                child = parent;
-            }
-            bounds[child] = bound;
-            nodes[child] = node;
-        }
-
-        double topBound() {
-            return bounds[0];
-        }
-
-        int topNode() {
-            return nodes[0];
-        }
-
-        void pop() {
-            size--;
-            if (size == 0) {
-                return;
-            }
-            double bound = bounds[size];
-            int node = nodes[size];
-            int parent = 0;
-            while (true) {
-                int child = 2 * parent + 1;
-                if (child >= size) {
-                    break;
-                }
-                if (child + 1 < size && bounds[child + 1] < bounds[child]) {
-                    child++;
-                }
-                if (bounds[child] >= bound) {
-                    break;
-                }
-                bounds[parent] = bounds[child];
-                nodes[parent] = nodes[child];
-                parent = child;
-            }
-            bounds[parent] = bound;
-            nodes[parent] = node;
         }
     }
 }

@@ -1,22 +1,14 @@
 package org.scenes.internal.match;
 
-import java.util.ArrayList;
-import java.util.Arrays;
-import java.util.Comparator;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import org.scenes.api.ActionType;
 import org.scenes.api.EncodedMetric;
-import org.scenes.api.ObjectKind;
 import org.scenes.api.ObjectWeights;
 import org.scenes.api.PackedMetric;
 import org.scenes.api.PluginConfig;
 import org.scenes.api.PluginException;
-import org.scenes.api.Relation;
 import org.scenes.api.Scene;
-import org.scenes.api.SeenObject;
 
 /**
  * The object-by-object scene distance shared by the {@code continuous}, {@code cell} and
@@ -93,108 +85,25 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
 
     /** Options every object-set metric accepts, with descriptions, for the providers' {@code options()}. */
     public static Map<String, String> options(boolean projection) {
-        Map<String, String> options = new LinkedHashMap<>();
-        options.put("matching", "greedy (sort by distance, pair in order; default) or optimal (minimum-cost assignment)");
-        options.put("log-distance", "true to compare ln(1 + distance) instead of distance (default false)");
-        options.put("distance-weight", "weight of distance differences in polar space (default 1)");
-        options.put("direction-weight", "weight of direction differences, per degree, in polar space (default 1)");
-        options.put("row-weight", "cost per grid row (distance ring) of difference, added to the pair cost (default 0)");
-        options.put("penalty", "cost of an unmatched object at the observer (default 10)");
-        options.put("penalty-scale", "distance at which the unmatched penalty halves (default 10)");
-        options.put("memory", "weight of the remembered previous scene (needs the memory transform; default 0)");
-        options.put("memory-direction-weight", "direction-weight of the remembered previous scene, per degree, in polar space"
-                + " (default: direction-weight)");
-        options.put("side-weight", "cost added to a pair on different sides of the heading: left, straight ahead, right"
-                + " (default 0); agents that turn until an object is dead ahead decide by its side, not by its degrees");
-        options.put("ahead-width", "degrees counted as straight ahead for side-weight, centred on the heading (default 1:"
-                + " the directions the server rounds to 0)");
-        options.put("own-goal-weight", "the own goal's weight as a share of the goal weight (default 1); 0 for agents that"
-                + " look only at the goal they attack");
-        options.put("memory-row-weight", "row-weight of the remembered previous scene (default: row-weight)");
-        options.put("memory-action", "cost when the remembered previous actions differ in type or turn direction (default 0)");
-        options.put("nearest-players", "true to compare only the nearest player of each weighted player class"
-                + " (teammates, opponents, unknown, all players), which the exact index then serves (default false)");
-        options.put("memory-depth", "previous actions memory-action compares, 1 to " + Scene.MAX_MEMORY
-                + " (default 1); the i-th back costs memory-action · memory-decay^(i-1)");
-        options.put("memory-decay", "factor of each further action back (default 0.5)");
-        options.put("index", "true (default) to search an exact index when every weighted group holds at most one object"
-                + " per scene (ball, goals, nearest players); false to scan every scene");
-        if (projection) {
-            options.put("cycles", "cycles to project objects forward by their distance/direction change (default 1; negative: back)");
-        } else {
-            options.put("space", "cartesian or polar (default for continuous: cartesian)");
-        }
-        return options;
+        return ObjectSetOptions.describe(projection);
     }
 
     /** The metric a plugin config asks for, with the defaults of the calling metric (and its {@code index} option). */
     public static ObjectSetMetric create(PluginConfig config, Space defaultSpace, double defaultProjection) {
-        String index = config.option("index", "true").toLowerCase(Locale.ROOT);
-        if (!index.equals("true") && !index.equals("false")) {
-            throw new PluginException("option index=" + index + " must be true or false");
-        }
-        return new ObjectSetMetric(settings(config, defaultSpace, defaultProjection), index.equals("true"));
+        boolean indexed = ObjectSetOptions.indexed(config);
+        return new ObjectSetMetric(settings(config, defaultSpace, defaultProjection), indexed);
     }
 
     /** Settings from a plugin config, with the defaults of the calling metric. */
     public static Settings settings(PluginConfig config, Space defaultSpace, double defaultProjection) {
-        Matching matching = switch (config.option("matching", "greedy").toLowerCase(Locale.ROOT)) {
-            case "greedy" -> Matching.GREEDY;
-            case "optimal" -> Matching.OPTIMAL;
-            default -> throw new PluginException("option matching=" + config.option("matching", "")
-                    + " is unknown; use greedy or optimal");
-        };
-        Space space = defaultSpace;
-        if (config.options().containsKey("space")) {
-            space = switch (config.option("space", "").toLowerCase(Locale.ROOT)) {
-                case "cartesian" -> Space.CARTESIAN;
-                case "polar" -> Space.POLAR;
-                default -> throw new PluginException("option space=" + config.option("space", "")
-                        + " is unknown; use cartesian or polar");
-            };
-        }
-        return new Settings(config.objectWeights(), matching, space, flag(config, "log-distance"),
-                config.doubleOption("distance-weight", 1), config.doubleOption("direction-weight", 1),
-                config.doubleOption("row-weight", 0),
-                config.doubleOption("penalty", 10), config.doubleOption("penalty-scale", 10),
-                config.doubleOption("cycles", defaultProjection), config.doubleOption("memory", 0),
-                config.doubleOption("memory-action", 0), memoryDepth(config), config.doubleOption("memory-decay", 0.5),
-                flag(config, "nearest-players"),
-                config.doubleOption("memory-direction-weight", config.doubleOption("direction-weight", 1)),
-                config.doubleOption("side-weight", 0), config.doubleOption("ahead-width", 1),
-                config.doubleOption("own-goal-weight", 1),
-                config.doubleOption("memory-row-weight", config.doubleOption("row-weight", 0)));
-    }
-
-    /** A true/false option, false by default. */
-    private static boolean flag(PluginConfig config, String name) {
-        String value = config.option(name, "false").toLowerCase(Locale.ROOT);
-        if (!value.equals("true") && !value.equals("false")) {
-            throw new PluginException("option " + name + "=" + value + " must be true or false");
-        }
-        return value.equals("true");
-    }
-
-    private static int memoryDepth(PluginConfig config) {
-        double depth = config.doubleOption("memory-depth", 1);
-        if (depth != Math.rint(depth) || depth < 1 || depth > Scene.MAX_MEMORY) {
-            throw new PluginException("option memory-depth must be a whole number from 1 to " + Scene.MAX_MEMORY
-                    + ", not " + config.option("memory-depth", ""));
-        }
-        return (int) depth;
+        return ObjectSetOptions.settings(config, defaultSpace, defaultProjection);
     }
 
     // groups: ball, own goal, opponent goal, goal of unknown side, flags, lines, all players,
     // teammates, opponents, unknown players; each takes the weight of its object class
     static final int GROUPS = 10;
     private static final int[] CLASS_OF_GROUP = {0, 1, 1, 1, 2, 3, 4, 5, 6, 7};
-    private static final int PLAYERS = 6;
     private static final int OWN_GOAL = 1;
-
-    /** Whether a group holds players (all, teammates, opponents, unknown): with nearest-players, its nearest only. */
-    private static boolean playerGroup(int group) {
-        return group >= PLAYERS;
-    }
 
     /**
      * A scene as packed numbers: per group, per object nearest first, {@link #stride()} 32-bit
@@ -211,8 +120,6 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     // read on every pair: plain fields rather than record accessors and enum compares
     private final boolean polar;
     private final boolean greedy;
-    private final boolean rows;
-    private final boolean sides;
     private final int stride;
     /** Where the penalty is within an object's floats; -1 when not stored. */
     private final int penaltyAt;
@@ -222,6 +129,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
     private final double penaltyTimesScale;
     /** Whether {@link #pack} may build the {@link LowDimensionalIndex}. */
     private final boolean indexed;
+    private final ObjectSetEncoder encoder;
     // scratch of the Encoded path; a metric instance serves one thread at a time
     private Assignment.Workspace workspace;
 
@@ -235,11 +143,11 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         this.indexed = indexed;
         polar = settings.space() == Space.POLAR;
         greedy = settings.matching() == Matching.GREEDY;
-        rows = settings.rowWeight() > 0 || settings.memoryRowWeight() > 0;
+        boolean rows = settings.rowWeight() > 0 || settings.memoryRowWeight() > 0;
         cell = settings.space() == Space.CELL;
         // the penalty is a function of the stored position when that holds the distance itself
         boolean derived = cell || settings.space() == Space.CARTESIAN && !settings.logDistance();
-        sides = settings.sideWeight() > 0;
+        boolean sides = settings.sideWeight() > 0;
         penaltyAt = derived ? -1 : 2;
         additiveAt = derived ? 2 : 3;
         stride = additiveAt + (rows ? 1 : 0) + (sides ? 2 : 0);
@@ -248,6 +156,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         for (int group = 0; group < GROUPS; group++) {
             groupWeight[group] = classWeights[CLASS_OF_GROUP[group]] * (group == OWN_GOAL ? settings.ownGoalShare() : 1);
         }
+        encoder = new ObjectSetEncoder(settings, groupWeight, stride, penaltyAt, additiveAt, rows, sides);
     }
 
     public Settings settings() {
@@ -312,112 +221,27 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         return encode(scene, true);
     }
 
-    /** One object in the configured space, as stored, and the distance it is sorted by. */
-    private record Placed(double distance, float a, float b, float penalty, float row, float sideX, float sideY) {
-    }
-
-    private static final Comparator<Placed> NEAREST_FIRST = Comparator.comparingDouble(Placed::distance);
-    /** The encoding of an empty group, shared (encodings are never written to). */
-    private static final float[] NO_OBJECTS = new float[0];
-
     /**
      * The remembered previous scene as the memory term compares it: as {@link #encode(Scene, boolean)}
      * without memory, but with memory-direction-weight, since the direction that tells a turn from a dash
      * now may be noise one scene back.
      */
     Encoded encodePrevious(Scene previous) {
-        return encode(previous, false, settings.memoryDirectionWeight(), settings.memoryRowWeight());
+        return encoder.encodePrevious(previous);
     }
 
     Encoded encode(Scene scene, boolean withMemory) {
-        return encode(scene, withMemory, settings.directionWeight(), settings.rowWeight());
+        return encoder.encode(scene, withMemory);
     }
-
-    private Encoded encode(Scene scene, boolean withMemory, double directionWeight, double rowWeight) {
-        if (scene == null) {
-            return new Encoded(new float[GROUPS][0], null, NO_ACTIONS);
-        }
-        // lists only for weighted groups: the others stay empty (a query is encoded on every decision)
-        List<List<Placed>> groups = new ArrayList<>(GROUPS);
-        for (int group = 0; group < GROUPS; group++) {
-            groups.add(groupWeight[group] > 0 ? new ArrayList<>() : null);
-        }
-        for (SeenObject object : scene.objects()) {
-            int group = groupOf(object);
-            if (groupWeight[group] > 0) {
-                groups.get(group).add(place(object, directionWeight, rowWeight));
-            }
-            if (object.kind() == ObjectKind.PLAYER && groupWeight[PLAYERS] > 0) {
-                groups.get(PLAYERS).add(place(object, directionWeight, rowWeight));
-            }
-        }
-        float[][] packed = new float[GROUPS][];
-        for (int group = 0; group < GROUPS; group++) {
-            List<Placed> objects = groups.get(group);
-            if (objects == null || objects.isEmpty()) {
-                packed[group] = NO_OBJECTS;
-                continue;
-            }
-            objects.sort(NEAREST_FIRST);
-            int kept = settings.nearestPlayers() && playerGroup(group) ? Math.min(1, objects.size()) : objects.size();
-            float[] values = new float[kept * stride];
-            for (int i = 0; i < kept; i++) {
-                Placed object = objects.get(i);
-                int at = i * stride;
-                values[at] = object.a();
-                values[at + 1] = object.b();
-                if (penaltyAt >= 0) {
-                    values[at + penaltyAt] = object.penalty();
-                }
-                int additive = at + additiveAt;
-                if (rows) {
-                    values[additive++] = object.row();
-                }
-                if (sides) {
-                    values[additive] = object.sideX();
-                    values[additive + 1] = object.sideY();
-                }
-            }
-            packed[group] = values;
-        }
-        boolean remember = withMemory && (settings.memoryWeight() > 0 || settings.memoryActionWeight() > 0);
-        Encoded previous = remember && settings.memoryWeight() > 0 ? encodePrevious(scene.previous()) : null;
-        return new Encoded(packed, previous, remember ? rememberedActions(scene) : NO_ACTIONS);
-    }
-
-    private static final int[] NO_ACTIONS = new int[0];
 
     /** The action classes 1 .. memory-depth scenes back (-1 past the start of the remembered chain). */
     int[] rememberedActions(Scene scene) {
-        if (settings.memoryActionWeight() == 0) {
-            return NO_ACTIONS;
-        }
-        int[] classes = new int[settings.memoryDepth()];
-        Scene earlier = scene.previous();
-        for (int i = 0; i < classes.length; i++) {
-            classes[i] = earlier == null ? -1 : actionClass(earlier);
-            earlier = earlier == null ? null : earlier.previous();
-        }
-        return classes;
+        return encoder.rememberedActions(scene);
     }
 
     /** Objects per group as {@link #encode} stores them, without placing them. */
     void count(Scene scene, int[] counts) {
-        Arrays.fill(counts, 0);
-        for (SeenObject object : scene.objects()) {
-            int group = groupOf(object);
-            if (groupWeight[group] > 0) {
-                counts[group]++;
-            }
-            if (object.kind() == ObjectKind.PLAYER && groupWeight[PLAYERS] > 0) {
-                counts[PLAYERS]++;
-            }
-        }
-        if (settings.nearestPlayers()) {
-            for (int group = PLAYERS; group < GROUPS; group++) {
-                counts[group] = Math.min(1, counts[group]);
-            }
-        }
+        encoder.count(scene, counts);
     }
 
     /**
@@ -430,62 +254,6 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
             return type * 3;
         }
         return type * 3 + 1 + (int) Math.signum(scene.primaryAction().first());
-    }
-
-    private static int groupOf(SeenObject object) {
-        return switch (object.kind()) {
-            case BALL -> 0;
-            case GOAL -> object.relation() == Relation.OWN ? 1 : object.relation() == Relation.OPPONENT ? 2 : 3;
-            case FLAG -> 4;
-            case LINE -> 5;
-            case PLAYER -> object.relation() == Relation.TEAMMATE ? 7 : object.relation() == Relation.OPPONENT ? 8 : 9;
-        };
-    }
-
-    /** (a, b, penalty, weighted row) of one object in the configured space, rounded to floats. */
-    private Placed place(SeenObject object, double directionWeight, double rowWeight) {
-        double r = object.distance();
-        double direction = Double.isNaN(object.direction()) ? 0 : object.direction();
-        if (settings.projectCycles() != 0) {
-            if (!Double.isNaN(object.distanceChange()) && !Double.isNaN(r)) {
-                r = Math.max(0, r + settings.projectCycles() * object.distanceChange());
-            }
-            if (!Double.isNaN(object.directionChange())) {
-                direction += settings.projectCycles() * object.directionChange();
-            }
-        }
-        if (Double.isNaN(r)) {
-            r = 100; // not sent: as far as the field allows
-        }
-        double radial = settings.logDistance() ? Math.log1p(r) : r;
-        double a;
-        double b;
-        double penaltyDistance = r;
-        switch (settings.space()) {
-            case CARTESIAN -> {
-                double radians = Math.toRadians(direction);
-                a = radial * Math.cos(radians);
-                b = radial * Math.sin(radians);
-            }
-            case POLAR -> {
-                a = settings.distanceWeight() * radial;
-                b = directionWeight * direction;
-            }
-            default -> {
-                a = object.cell().column();
-                b = object.cell().row();
-                penaltyDistance = object.cell().row();
-            }
-        }
-        double l = settings.penaltyScale();
-        double penalty = settings.penalty() * l / (l + penaltyDistance);
-        // left (0, 0), ahead (ws/2, ws/2), right (ws, 0): every two sides ws apart in |dx| + |dy|
-        double side = settings.sideWeight();
-        boolean ahead = Math.abs(direction) < settings.aheadWidth() / 2;
-        float sideX = (float) (ahead ? side / 2 : direction > 0 ? side : 0);
-        float sideY = (float) (ahead ? side / 2 : 0);
-        return new Placed(r, (float) a, (float) b, (float) penalty, (float) (rowWeight * object.cell().row()),
-                sideX, sideY);
     }
 
     @Override
@@ -530,7 +298,7 @@ public final class ObjectSetMetric implements EncodedMetric<ObjectSetMetric.Enco
         return settings.memoryActionWeight() > 0 ? settings.memoryDepth() : 0;
     }
 
-    private static final Encoded EMPTY = new Encoded(new float[GROUPS][0], null, NO_ACTIONS);
+    private static final Encoded EMPTY = new Encoded(new float[GROUPS][0], null, ObjectSetEncoder.NO_ACTIONS);
 
     private double groupsDistance(Encoded query, Encoded stored, double total, double bound, double scale) {
         for (int group = 0; group < GROUPS; group++) {
