@@ -33,7 +33,8 @@ final class BenchCommand implements Callable<Integer> {
     @ParentCommand
     ScenesCommand top;
 
-    @Parameters(arity = "0..*", paramLabel = "FILE", description = "Scene files (.json or .json.gz): the knowledge base; queries are spread over it.")
+    @Parameters(arity = "0..*", paramLabel = "FILE",
+            description = "Scene files (.json, .json.gz or .json.zst): the knowledge base; queries are spread over it.")
     List<Path> files;
 
     @Option(names = "--synthetic", paramLabel = "N", description = "Instead of files, a knowledge base of N synthetic scenes "

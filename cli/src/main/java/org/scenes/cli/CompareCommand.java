@@ -30,11 +30,12 @@ final class CompareCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "A", description = "A scene file (.json or .json.gz), or a directory of them.")
+    @Parameters(index = "0", paramLabel = "A", description = "A scene file (.json, .json.gz or .json.zst), or a directory of them.")
     Path first;
 
     @Parameters(index = "1", paramLabel = "B", description = {"The scene file to compare it with, or a directory:"
-            + " its files of the same names (every player of a game): each player's figures, then their sum."})
+            + " its files of the same names, whatever their compression (every player of a game): each player's figures,"
+            + " then their sum."})
     Path second;
 
     @Option(names = "--json", description = "Print the figures as JSON.")

@@ -38,7 +38,7 @@ final class ExportCommand implements Callable<Integer> {
     @Option(names = "--format", required = true, paramLabel = "csv|arff", description = "Output format: ${COMPLETION-CANDIDATES}.")
     Export.Format format;
 
-    @Parameters(arity = "1..*", paramLabel = "FILE", description = "Scene files (.json or .json.gz): one table, a file column"
+    @Parameters(arity = "1..*", paramLabel = "FILE", description = "Scene files (.json, .json.gz or .json.zst): one table, a file column"
             + " first when there are several.")
     List<Path> files;
 

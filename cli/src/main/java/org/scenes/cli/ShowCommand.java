@@ -26,7 +26,7 @@ final class ShowCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(paramLabel = "FILE", description = "A scene file (.json or .json.gz).")
+    @Parameters(paramLabel = "FILE", description = "A scene file (.json, .json.gz or .json.zst).")
     Path file;
 
     @ArgGroup(exclusive = true)

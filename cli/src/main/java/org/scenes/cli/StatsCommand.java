@@ -37,7 +37,7 @@ final class StatsCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(paramLabel = "FILE", description = "A scene file (.json or .json.gz), or the directory of an"
+    @Parameters(paramLabel = "FILE", description = "A scene file (.json, .json.gz or .json.zst), or the directory of an"
             + " archive's conversion.")
     Path file;
 

@@ -118,7 +118,7 @@ public final class AtomicOutput implements AutoCloseable {
         };
     }
 
-    /** Level 1: on scene JSON as small as gzip's default level, in a tenth of its CPU (docs/scale.md). */
+    /** Level 1: on scene JSON about a tenth of gzip's CPU at its default level, the size within 13 % (docs/scale.md). */
     static final int ZSTD_LEVEL = 1;
 
     /** A name ending in {@code .gz} is written gzip-compressed, {@code .zst} zstd-compressed. */
