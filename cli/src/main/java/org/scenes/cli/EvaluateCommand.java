@@ -102,6 +102,12 @@ final class EvaluateCommand implements Callable<Integer> {
                     + " the teacher in process, or --shadow-command. Default: ${DEFAULT-VALUE}.")
     int dagger;
 
+    @Option(names = "--dagger-out", paramLabel = "DIR",
+            description = "With --dagger: write each round's labelled scenes, DIR/round-R/TEAM_UNUM-gN.json.gz (the"
+                    + " player's N-th game), so 'scenes play', 'validate' and 'evaluate' can learn from them as from"
+                    + " any recorded player's scenes (round R's labels are what round R + 1 adds).")
+    Path daggerOut;
+
     @Option(names = "--shadow-command", paramLabel = "CMD",
             description = "A shadow teacher that is a program (HELIOS base's player, the classic Krislet): a process"
                     + " per imitating player, started (bash -c, in its own session) before each imitator game and"
@@ -179,7 +185,7 @@ final class EvaluateCommand implements Callable<Integer> {
         Evaluating.Request request = new Evaluating.Request(sceneFiles, configs,
                 new Evaluating.Lineup(teacher, players, opponent, teacherCommand, opponentCommand), cycles, seeds,
                 firstSeed, trainGames, thinkSteps, knowledge, new Evaluating.Server(server, serverLogs, serverWait, version),
-                shadowCommand, dagger, disagreements, gameLogs, report);
+                shadowCommand, dagger, daggerOut, disagreements, gameLogs, report);
         PrintWriter out = spec.commandLine().getOut();
         Evaluating.Outcome outcome = Evaluating.run(request, top.global::registry,
                 TerminalProgress.reporter(gameLogs.given() ? " games" : " cycles", 1), new Printed(out, spec.commandLine().getErr()));

@@ -6,8 +6,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.scenes.internal.scene.SceneFile;
+import org.scenes.internal.scene.SceneFileReader;
 
 class EvaluateDaggerTest {
     @TempDir
@@ -33,6 +37,40 @@ class EvaluateDaggerTest {
                 root.at("/figures/agreement/imitator/mean").asDouble(), 1e-12);
         String page = Files.readString(report.resolve("index.html"));
         assertTrue(page.contains("DAgger: round 1"), "the rounds in the report");
+    }
+
+    @Test
+    void daggerOutWritesEachRoundsLabelsAsSceneFilesThatTrainAnImitator() throws Exception {
+        Path labels = dir.resolve("labels");
+        int status = cli.run("evaluate", "--metric", "ball-goal", "--players", "2", "--opponent", "krislet:2",
+                "--cycles", "300", "--seeds", "1", "--train-games", "1", "--dagger", "1", "--dagger-out", labels,
+                "--json");
+        assertEquals(ExitCodes.OK, status, cli.err());
+        int labelled = ConfigFiles.JSON.readTree(cli.out()).get("rounds").get(0).get("labelled").asInt();
+        assertTrue(cli.err().contains("DAgger labels"), cli.err());
+        // round 0's labels, one file per imitating player of its one game; the last round's are never used
+        List<Path> files;
+        try (Stream<Path> listed = Files.list(labels.resolve("round-0"))) {
+            files = listed.sorted().toList();
+        }
+        assertEquals(List.of("Teal_1-g1.json.gz", "Teal_2-g1.json.gz"),
+                files.stream().map(f -> f.getFileName().toString()).toList());
+        assertTrue(Files.notExists(labels.resolve("round-1")));
+        long scenes = 0;
+        for (Path file : files) {
+            SceneFile read = SceneFileReader.read(file);
+            assertEquals(file.getFileName().toString().startsWith("Teal_1") ? 1 : 2, read.header().source().observer().uniformNumber());
+            scenes += read.scenes().size();
+        }
+        assertEquals(labelled, scenes, "every labelled scene, as it joined the next round");
+        // they train an imitator as any recorded player's scenes do
+        CommandRunner validate = new CommandRunner();
+        assertEquals(ExitCodes.OK, validate.run("validate", "--train", files.get(0), "--test", files.get(1)),
+                validate.err());
+
+        CommandRunner alone = new CommandRunner();
+        assertEquals(ExitCodes.USAGE, alone.run("evaluate", "--dagger-out", labels));
+        assertTrue(alone.err().contains("--dagger-out: writes DAgger's labelled scenes"), alone.err());
     }
 
     @Test

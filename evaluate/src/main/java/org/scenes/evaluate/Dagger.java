@@ -11,6 +11,7 @@ import java.util.TreeMap;
 import java.util.function.LongConsumer;
 import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.agent.imitation.Viewing;
+import org.scenes.api.Grid;
 import org.scenes.api.Scene;
 import org.scenes.simulator.Brain;
 import org.scenes.simulator.BrainFactory;
@@ -181,6 +182,27 @@ public final class Dagger {
     /** The scenes the last round labelled, one sequence per imitating player and game, in seed and uniform number order. */
     List<List<Scene>> corrections() {
         return corrections.stream().map(ShadowLabels::labelled).toList();
+    }
+
+    /**
+     * One imitating player's scenes of one game of the last round, labelled with its shadow's replies.
+     *
+     * @param unum the player's uniform number
+     * @param goalie whether it kept goal
+     * @param scenes the labelled scenes, in cycle order
+     */
+    public record Correction(int unum, boolean goalie, List<Scene> scenes) {
+    }
+
+    /** The last round's labelled scenes, player by player and game by game, as they join the next round's knowledge. */
+    public List<Correction> labelled() {
+        return corrections.stream().map(player -> new Correction(player.unum(), imitator.brains().goalie(player.unum()),
+                player.labelled())).toList();
+    }
+
+    /** The grid of the imitator's scenes, labelled ones included. */
+    public Grid grid() {
+        return imitator.knowledge().grid();
     }
 
     /**

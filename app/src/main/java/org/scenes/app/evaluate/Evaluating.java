@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -17,6 +18,7 @@ import org.scenes.agent.imitation.ImitationTeam;
 import org.scenes.agent.net.ClientOptions;
 import org.scenes.agent.net.ServerAddress;
 import org.scenes.api.PluginRegistry;
+import org.scenes.api.Scene;
 import org.scenes.api.Side;
 import org.scenes.app.Progress;
 import org.scenes.app.RequestException;
@@ -35,6 +37,8 @@ import org.scenes.evaluate.PacedBrain;
 import org.scenes.evaluate.ServerLogGames;
 import org.scenes.evaluate.Tables;
 import org.scenes.internal.match.KnowledgeBase;
+import org.scenes.internal.scene.LazySceneFileWriter;
+import org.scenes.internal.scene.SceneCompression;
 import org.scenes.internal.validate.MatchConfig;
 import org.scenes.simulator.GameSetup;
 
@@ -110,8 +114,8 @@ public final class Evaluating {
      */
     public record Request(List<Path> sceneFiles, List<MatchConfig> configs, Lineup teams, int cycles, int seeds,
                           long firstSeed, int trainGames, int thinkSteps, ImitationTeam.Knowledge knowledge,
-                          Server server, String shadowCommand, int dagger, Path disagreements, GameLogs gameLogs,
-                          Path report) {
+                          Server server, String shadowCommand, int dagger, Path daggerOut, Path disagreements,
+                          GameLogs gameLogs, Path report) {
         public Request {
             sceneFiles = List.copyOf(sceneFiles);
             configs = List.copyOf(configs);
@@ -292,6 +296,10 @@ public final class Evaluating {
         }
         require(request.thinkSteps() >= 0, "--think-steps: must be 0 or more, not " + request.thinkSteps());
         require(request.dagger() >= 0, "--dagger: must be 0 or more rounds, not " + request.dagger());
+        require(request.daggerOut() == null || request.dagger() > 0, "--dagger-out: writes DAgger's labelled scenes;"
+                + " give --dagger N too");
+        require(request.daggerOut() == null || !Files.isRegularFile(request.daggerOut()), "--dagger-out: "
+                + request.daggerOut() + " is a file, not a directory");
         require(request.knowledge() == null || !sceneFiles.isEmpty(),
                 "--knowledge: roles come from the uniform numbers of scene files; give SCENES");
         String teacherCommand = teams.teacherCommand();
@@ -472,8 +480,44 @@ public final class Evaluating {
                 progress.end();
             }
             events.round(rounds.get(r));
+            if (request.daggerOut() != null && r < request.dagger()) {
+                events.notice(writeLabels(dagger, request.daggerOut().resolve("round-" + r)));
+            }
         }
         return rounds;
+    }
+
+    /**
+     * A round's labelled scenes as scene files, {@code TEAM_UNUM-gN.json.gz} for the player's N-th game,
+     * which {@code scenes play}, {@code validate} and {@code evaluate} take as they take any recorded
+     * player's (the goalie marked); what was written, in a line.
+     */
+    private static String writeLabels(Dagger dagger, Path directory) throws IOException {
+        Files.createDirectories(directory);
+        Map<String, Integer> games = new HashMap<>();
+        int files = 0;
+        long scenes = 0;
+        for (Dagger.Correction player : dagger.labelled()) {
+            if (player.scenes().isEmpty()) {
+                continue;
+            }
+            String name = player.scenes().get(0).observer().team() + "_" + player.unum();
+            int game = games.merge(name, 1, Integer::sum);
+            Path target = directory.resolve(SceneCompression.GZIP.fileName(name + "-g" + game));
+            try (LazySceneFileWriter writer = new LazySceneFileWriter(target, dagger.grid(), "DAgger labels")) {
+                if (player.goalie()) {
+                    writer.goalie();
+                }
+                for (Scene scene : player.scenes()) {
+                    writer.write(scene);
+                }
+                writer.commit();
+            }
+            files++;
+            scenes += player.scenes().size();
+        }
+        return String.format(Locale.ROOT, "%-22s %d scene files, %d scenes, in %s", "DAgger labels", files, scenes,
+                directory);
     }
 
     /** A team as the report's about table names it: with its command when it is external. */

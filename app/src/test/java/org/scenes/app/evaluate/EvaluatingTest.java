@@ -125,12 +125,12 @@ class EvaluatingTest {
         assertTrue(team.getMessage().startsWith("--team: ") && team.getMessage().contains("Red"), team.getMessage());
         RequestException opponent = assertThrows(RequestException.class, () -> Evaluating.run(new Evaluating.Request(
                 List.of(), List.of(BALL_GOAL), new Evaluating.Lineup("krislet", 2, "krislet", null, null), 300, 1, 1, 1,
-                0, null, new Evaluating.Server(null, null, 60, 9), null, 0, null, Evaluating.GameLogs.NONE, null),
+                0, null, new Evaluating.Server(null, null, 60, 9), null, 0, null, null, Evaluating.GameLogs.NONE, null),
                 registry, progress, events()));
         assertEquals("--teams: 'krislet' is not TEACHER:N, e.g. krislet:5", opponent.getMessage());
         RequestException server = assertThrows(RequestException.class, () -> Evaluating.run(new Evaluating.Request(
                 List.of(), List.of(BALL_GOAL), new Evaluating.Lineup("krislet", 2, "krislet:2", null, null), 300, 1, 1,
-                1, 0, null, new Evaluating.Server(null, dir, 60, 9), null, 0, null, Evaluating.GameLogs.NONE, null),
+                1, 0, null, new Evaluating.Server(null, dir, 60, 9), null, 0, null, null, Evaluating.GameLogs.NONE, null),
                 registry, progress, events()));
         assertTrue(server.getMessage().startsWith("--server-logs: needs --server"), server.getMessage());
         // the game logs were read for the --team refusal; nothing else began
@@ -152,12 +152,12 @@ class EvaluatingTest {
                                        int trainGames) {
         return new Evaluating.Request(List.of(), List.of(BALL_GOAL),
                 new Evaluating.Lineup("krislet", 2, "krislet:2", null, null), 300, seeds, 1, trainGames, 0, null,
-                new Evaluating.Server(null, null, 60, 9), null, dagger, disagreements, logs, report);
+                new Evaluating.Server(null, null, 60, 9), null, dagger, null, disagreements, logs, report);
     }
 
     private Evaluating.Request logs(Path teacher, Path imitator, String team) {
         return new Evaluating.Request(List.of(), List.of(), new Evaluating.Lineup("krislet", 5, "krislet:5", null, null),
-                6000, 5, 1, 2, 0, null, new Evaluating.Server(null, null, 60, 9), null, 0, null,
+                6000, 5, 1, 2, 0, null, new Evaluating.Server(null, null, 60, 9), null, 0, null, null,
                 new Evaluating.GameLogs(teacher, imitator, team), null);
     }
 
