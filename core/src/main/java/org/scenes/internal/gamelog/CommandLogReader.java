@@ -5,6 +5,9 @@ import java.io.IOException;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.List;
 import org.scenes.internal.files.Inputs;
 
 /**
@@ -12,7 +15,10 @@ import org.scenes.internal.files.Inputs;
  * rcssserver write it: {@code TIME,STOPPAGE<TAB>Recv TEAM_UNUM: (command)...} for what a player
  * sent (team names may hold {@code _}: the number follows the last one; a coach's
  * {@code TEAM_Coach} has none) and {@code TIME,STOPPAGE<TAB>(referee WORD)} for the referee.
- * Plain or gzip. Lines must come in the order of the steps; errors name the file and line.
+ * Plain or gzip. Lines must come in the order of the steps; errors name the file and line. One
+ * exception, as rcssserver 19 writes it when a half ends on the step after a goal's kick-off: the
+ * referee's calls stamped a cycle ahead of the players' lines that follow them (the break's
+ * placements); such calls are read at the step of those lines, as in every other game's log.
  */
 public final class CommandLogReader implements CommandSource {
     /**
@@ -38,6 +44,8 @@ public final class CommandLogReader implements CommandSource {
     private long line;
     private int lastTime = Integer.MIN_VALUE;
     private int lastStoppage;
+    /** Referee calls read but not yet returned, and the entry that ended them. */
+    private final ArrayDeque<Entry> ready = new ArrayDeque<>();
 
     private CommandLogReader(Path file) throws IOException {
         this.file = file;
@@ -56,6 +64,38 @@ public final class CommandLogReader implements CommandSource {
     /** The next entry that is a player's message or the referee's; null at the end of the log. */
     @Override
     public Entry next() throws IOException {
+        if (!ready.isEmpty()) {
+            return ready.poll();
+        }
+        Entry entry = read();
+        if (entry == null || !entry.referee()) {
+            return entry;
+        }
+        // a run of referee calls: the line after it says whether they were stamped a cycle ahead
+        List<Entry> calls = new ArrayList<>();
+        while (entry != null && entry.referee()) {
+            calls.add(entry);
+            entry = read();
+        }
+        Entry last = calls.get(calls.size() - 1);
+        boolean ahead = entry != null && entry.before(last.time(), last.stoppage())
+                && entry.time() == last.time() - 1 && !entry.before(calls.get(0).time() - 1, 0);
+        if (entry != null && entry.before(last.time(), last.stoppage()) && !ahead) {
+            throw new GameLogException(file, entry.line(), "cycle " + entry.time() + "," + entry.stoppage()
+                    + " comes after " + last.time() + "," + last.stoppage() + ": the command log is out of order");
+        }
+        for (Entry call : calls) {
+            ready.add(ahead ? new Entry(call.line(), entry.time(), entry.stoppage(), call.team(), call.unum(),
+                    call.text()) : call);
+        }
+        if (entry != null) {
+            ready.add(entry);
+        }
+        return ready.poll();
+    }
+
+    /** The next line's entry as it stands in the log; null at the end of the log. */
+    private Entry read() throws IOException {
         String text;
         while ((text = in.readLine()) != null) {
             line++;
@@ -88,13 +128,14 @@ public final class CommandLogReader implements CommandSource {
             throw error("cycle " + time + "," + stoppage + " comes after " + lastTime + "," + lastStoppage
                     + ": the command log is out of order");
         }
-        lastTime = time;
-        lastStoppage = stoppage;
         String rest = text.substring(tab + 1);
         if (rest.startsWith("(referee ")) {
+            // a referee call does not move the order on: it may stand a cycle ahead (next())
             int close = rest.lastIndexOf(')');
             return new Entry(line, time, stoppage, "", 0, rest.substring(9, close < 9 ? rest.length() : close).strip());
         }
+        lastTime = time;
+        lastStoppage = stoppage;
         if (!rest.startsWith("Recv ")) {
             return null; // other lines (a trainer's, a monitor's) say nothing of the players
         }

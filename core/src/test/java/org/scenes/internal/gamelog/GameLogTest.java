@@ -293,4 +293,40 @@ class GameLogTest {
         assertEquals(List.of("0,0\tRecv Teal_1: (init Teal (version 9))", "0,30\t(referee kick_off_l)",
                 "12,0\tRecv Amber_11: (dash 100)"), Files.readAllLines(file));
     }
+
+    /** The entries of a command log as TIME,STOPPAGE SENDER TEXT, or the error's message. */
+    private List<String> entries(String... lines) throws IOException {
+        Path file = dir.resolve("read.rcl");
+        Files.write(file, List.of(lines));
+        List<String> read = new ArrayList<>();
+        try (CommandLogReader reader = CommandLogReader.open(file)) {
+            for (CommandLogReader.Entry e = reader.next(); e != null; e = reader.next()) {
+                read.add(e.time() + "," + e.stoppage() + " " + (e.referee() ? "referee" : e.team() + e.unum()) + " "
+                        + e.text());
+            }
+        } catch (GameLogException e) {
+            read.add(e.getMessage());
+        }
+        return read;
+    }
+
+    @Test
+    void refereeCallsStampedACycleAheadOfTheBreaksPlacementsReadAtTheirStep() throws IOException {
+        // rcssserver 19, a half ending on the step after a goal's kick-off (a HELIOS base game of 2026-12-07)
+        assertEquals(List.of("1500,0 A6 (turn 60)", "1500,0 referee half_time", "1500,0 referee before_kick_off",
+                "1500,0 B9 (move -1 -12)", "1501,0 B2 (dash 100)"), entries(
+                "1500,0\tRecv A_6: (turn 60)", "1500,0\tRecv B_Coach: (done)", "1501,0\t(referee half_time)",
+                "1501,0\t(referee before_kick_off)", "1500,0\tRecv B_9: (move -1 -12)", "1501,0\tRecv B_2: (dash 100)"));
+        // as in every other game's log, calls at the players' step are read as they stand
+        assertEquals(List.of("1500,0 referee half_time", "1500,0 A6 (move -25 0)"), entries(
+                "1500,0\t(referee half_time)", "1500,0\tRecv A_6: (move -25 0)"));
+        // out of order otherwise: two cycles ahead, or a player's line going back
+        List<String> twoAhead = entries("1500,0\tRecv A_6: (turn 60)", "1502,0\t(referee half_time)",
+                "1500,0\tRecv A_6: (move -25 0)");
+        assertTrue(twoAhead.get(twoAhead.size() - 1).endsWith(":3: cycle 1500,0 comes after 1502,0: the command log is"
+                + " out of order"), twoAhead.toString());
+        List<String> back = entries("1501,0\tRecv A_6: (turn 60)", "1500,0\tRecv A_6: (move -25 0)");
+        assertTrue(back.get(back.size() - 1).endsWith(":2: cycle 1500,0 comes after 1501,0: the command log is out of"
+                + " order"), back.toString());
+    }
 }
