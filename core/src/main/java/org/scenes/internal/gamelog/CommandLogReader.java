@@ -74,6 +74,10 @@ public final class CommandLogReader implements CommandSource {
         // a run of referee calls: the line after it says whether they were stamped a cycle ahead
         List<Entry> calls = new ArrayList<>();
         while (entry != null && entry.referee()) {
+            Entry previous = calls.isEmpty() ? null : calls.get(calls.size() - 1);
+            if (previous != null && entry.before(previous.time(), previous.stoppage())) {
+                throw outOfOrder(entry.line(), entry.time(), entry.stoppage(), previous.time(), previous.stoppage());
+            }
             calls.add(entry);
             entry = read();
         }
@@ -81,8 +85,7 @@ public final class CommandLogReader implements CommandSource {
         boolean ahead = entry != null && entry.before(last.time(), last.stoppage())
                 && entry.time() == last.time() - 1 && !entry.before(calls.get(0).time() - 1, 0);
         if (entry != null && entry.before(last.time(), last.stoppage()) && !ahead) {
-            throw new GameLogException(file, entry.line(), "cycle " + entry.time() + "," + entry.stoppage()
-                    + " comes after " + last.time() + "," + last.stoppage() + ": the command log is out of order");
+            throw outOfOrder(entry.line(), entry.time(), entry.stoppage(), last.time(), last.stoppage());
         }
         for (Entry call : calls) {
             ready.add(ahead ? new Entry(call.line(), entry.time(), entry.stoppage(), call.team(), call.unum(),
@@ -125,8 +128,7 @@ public final class CommandLogReader implements CommandSource {
             throw error("expected 'TIME,STOPPAGE' in whole numbers, found '" + shorten(text.substring(0, tab)) + "'");
         }
         if (time < lastTime || (time == lastTime && stoppage < lastStoppage)) {
-            throw error("cycle " + time + "," + stoppage + " comes after " + lastTime + "," + lastStoppage
-                    + ": the command log is out of order");
+            throw outOfOrder(line, time, stoppage, lastTime, lastStoppage);
         }
         String rest = text.substring(tab + 1);
         if (rest.startsWith("(referee ")) {
@@ -154,6 +156,11 @@ public final class CommandLogReader implements CommandSource {
         }
         return new Entry(line, time, stoppage, sender.substring(0, underscore), Integer.parseInt(number),
                 rest.substring(colon + 2));
+    }
+
+    private GameLogException outOfOrder(long at, int time, int stoppage, int afterTime, int afterStoppage) {
+        return new GameLogException(file, at, "cycle " + time + "," + stoppage + " comes after " + afterTime + ","
+                + afterStoppage + ": the command log is out of order");
     }
 
     private GameLogException error(String problem) {

@@ -325,6 +325,10 @@ class GameLogTest {
                 "1500,0\tRecv A_6: (move -25 0)");
         assertTrue(twoAhead.get(twoAhead.size() - 1).endsWith(":3: cycle 1500,0 comes after 1502,0: the command log is"
                 + " out of order"), twoAhead.toString());
+        List<String> calls = entries("1500,0\tRecv A_6: (turn 60)", "1501,0\t(referee half_time)",
+                "1500,0\t(referee before_kick_off)");
+        assertTrue(calls.get(calls.size() - 1).endsWith(":3: cycle 1500,0 comes after 1501,0: the command log is out"
+                + " of order"), calls.toString());
         List<String> back = entries("1501,0\tRecv A_6: (turn 60)", "1500,0\tRecv A_6: (move -25 0)");
         assertTrue(back.get(back.size() - 1).endsWith(":2: cycle 1500,0 comes after 1501,0: the command log is out of"
                 + " order"), back.toString());
