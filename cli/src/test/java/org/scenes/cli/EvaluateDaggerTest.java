@@ -68,6 +68,12 @@ class EvaluateDaggerTest {
         assertEquals(ExitCodes.OK, validate.run("validate", "--train", files.get(0), "--test", files.get(1)),
                 validate.err());
 
+        // the labels never overwrite scenes learnt from
+        CommandRunner over = new CommandRunner();
+        assertEquals(ExitCodes.USAGE, over.run("evaluate", files.get(0), "--dagger", "1", "--dagger-out", labels));
+        assertTrue(over.err().contains("--dagger-out: " + labels + " holds "), over.err());
+        assertTrue(Files.exists(files.get(0)));
+
         CommandRunner alone = new CommandRunner();
         assertEquals(ExitCodes.USAGE, alone.run("evaluate", "--dagger-out", labels));
         assertTrue(alone.err().contains("--dagger-out: writes DAgger's labelled scenes"), alone.err());

@@ -300,6 +300,14 @@ public final class Evaluating {
                 + " give --dagger N too");
         require(request.daggerOut() == null || !Files.isRegularFile(request.daggerOut()), "--dagger-out: "
                 + request.daggerOut() + " is a file, not a directory");
+        if (request.daggerOut() != null) {
+            // its round directories are written over: a scene file learnt from must not lie there
+            Path out = request.daggerOut().toAbsolutePath().normalize();
+            for (Path file : request.sceneFiles()) {
+                require(!file.toAbsolutePath().normalize().startsWith(out), "--dagger-out: " + request.daggerOut()
+                        + " holds " + file + ", which the imitator learns from; write the labels elsewhere");
+            }
+        }
         require(request.knowledge() == null || !sceneFiles.isEmpty(),
                 "--knowledge: roles come from the uniform numbers of scene files; give SCENES");
         String teacherCommand = teams.teacherCommand();
