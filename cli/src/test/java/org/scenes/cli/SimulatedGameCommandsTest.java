@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -13,6 +15,8 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scenes.api.Grid;
+import org.scenes.internal.files.AtomicOutput;
+import org.scenes.internal.files.Inputs;
 import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.scene.SceneFileReader;
 
@@ -77,6 +81,25 @@ class SimulatedGameCommandsTest {
         assertTrue(Files.exists(dir.resolve("out/Carleton_1.json.gz")));
         assertEquals("University", SceneFileReader.read(dir.resolve("out/University_2.json.gz"))
                 .header().source().observer().team());
+    }
+
+    @Test
+    void aZstdCompressedLogConvertsUnderItsOwnNameToTheSameScenes() throws IOException {
+        Path zstd = dir.resolve("Carleton_1.lsf.zst");
+        try (InputStream plain = Inputs.open(carleton1); AtomicOutput output = AtomicOutput.create(zstd)) {
+            plain.transferTo(output.stream());
+            output.commit();
+        }
+        assertEquals(0x28, Files.readAllBytes(zstd)[0], "zstd's magic");
+        assertEquals(0, run("convert", zstd, "--out-dir", dir.resolve("from-zstd")), cli.err());
+        assertEquals(0, run("convert", carleton1, "--out-dir", dir.resolve("from-gzip")), cli.err());
+        try (InputStream a = Inputs.open(dir.resolve("from-zstd/Carleton_1.json.gz"));
+             InputStream b = Inputs.open(dir.resolve("from-gzip/Carleton_1.json.gz"))) {
+            String fromZstd = new String(a.readAllBytes(), StandardCharsets.UTF_8);
+            // the header names the log converted; every scene is the same
+            assertEquals(new String(b.readAllBytes(), StandardCharsets.UTF_8).replace("Carleton_1.lsf.gz", "Carleton_1.lsf.zst"),
+                    fromZstd);
+        }
     }
 
     @Test

@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Locale;
 import org.scenes.api.Grid;
 import org.scenes.app.convert.ConvertSettings;
+import org.scenes.app.convert.PlayerLogConversion;
 import org.scenes.internal.convert.ConversionReport;
 import org.scenes.internal.convert.DropReason;
 import org.scenes.internal.convert.GameLogConverter;
@@ -237,14 +238,9 @@ final class GameConversion {
             return names; // a file per player, named by the player
         }
         for (String log : game.logs()) {
-            String name = log.substring(log.lastIndexOf('/') + 1);
-            for (String suffix : new String[] {".gz", ".lsf", ".log", ".txt"}) {
-                if (name.endsWith(suffix) && name.length() > suffix.length()) {
-                    name = name.substring(0, name.length() - suffix.length());
-                }
-            }
+            String name = PlayerLogConversion.baseName(Path.of(log.substring(log.lastIndexOf('/') + 1)));
             if (names.contains(name)) {
-                throw new UsageException("game " + game.name() + ": two logs would both be written to " + name + ".json.gz");
+                throw new UsageException("game " + game.name() + ": two logs would both be written as scene file " + name);
             }
             names.add(name);
         }

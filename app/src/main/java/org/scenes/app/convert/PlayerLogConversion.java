@@ -167,9 +167,10 @@ public final class PlayerLogConversion {
         return names;
     }
 
-    static String baseName(Path log) {
+    /** The log's name without its extensions: {@code Carleton_1.lsf.gz} gives {@code Carleton_1}. */
+    public static String baseName(Path log) {
         String name = log.getFileName().toString();
-        for (String suffix : new String[] {".gz", ".lsf", ".log", ".txt"}) {
+        for (String suffix : new String[] {".gz", ".zst", ".lsf", ".log", ".txt"}) {
             if (name.endsWith(suffix) && name.length() > suffix.length()) {
                 name = name.substring(0, name.length() - suffix.length());
             }
@@ -205,8 +206,9 @@ public final class PlayerLogConversion {
                 progress.begin("Converting", 0);
                 return new TextProgress(progress, size);
             }
-            // about 10 bytes of text per gzip byte in recorded games; corrected as logs are read
-            boolean compressed = logs.stream().anyMatch(l -> l.getFileName().toString().endsWith(".gz"));
+            // about 10 bytes of text per compressed byte in recorded games; corrected as logs are read
+            boolean compressed = logs.stream().map(l -> l.getFileName().toString())
+                    .anyMatch(name -> name.endsWith(".gz") || name.endsWith(".zst"));
             progress.begin("Converting", compressed ? size * 10 : size);
             return new TextProgress(progress, size);
         }
