@@ -79,7 +79,7 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--think-steps", paramLabel = "N", defaultValue = "0",
             description = "Pace the imitator like the Krislet client's think loop: decide on the latest see every N"
                     + " steps (Krislet: 2); 0 answers every see, as 'scenes play' does. Default: ${DEFAULT-VALUE}.")
-    int thinkSteps;
+    double thinkSteps;
 
     @Option(names = "--knowledge", paramLabel = "counterpart|team", converter = ImitationTeamOptions.KnowledgeConverter.class,
             description = "With SCENES: an imitation team with roles, as 'scenes play' assembles it: each player on its"

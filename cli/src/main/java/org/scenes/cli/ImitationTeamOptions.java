@@ -23,15 +23,21 @@ final class ImitationTeamOptions {
     ImitationTeam.Knowledge knowledge;
 
     @Option(names = "--think-steps", paramLabel = "N", defaultValue = "0",
-            description = "Imitators decide on the latest see every N steps (Krislet's think loop: 2); 0: every see"
-                    + " (the scenes' own tempo). Default: ${DEFAULT-VALUE}.")
-    int thinkSteps;
+            description = "Imitators decide on the latest see every N steps (Krislet's think loop: 2; a fraction such"
+                    + " as 1.96 decides now and then a step early, as the client does on a real-time server); 0: every"
+                    + " see (the scenes' own tempo). Default: ${DEFAULT-VALUE}.")
+    double thinkSteps;
+
+    /** --think-steps is 0, or 1 or more. */
+    void checkThinkSteps() {
+        if (!PacedBrain.valid(thinkSteps)) {
+            throw new UsageException("--think-steps: must be 0, or 1 or more, not " + PacedBrain.text(thinkSteps));
+        }
+    }
 
     /** The team from the scene files, on the configuration's matching. */
     ImitationTeam load(List<Path> files, MatchConfig config, PluginRegistry registry) {
-        if (thinkSteps < 0) {
-            throw new UsageException("--think-steps: must be 0 or more, not " + thinkSteps);
-        }
+        checkThinkSteps();
         return ImitationTeam.load(files, config.transformFactory(registry),
                 knowledgeBase -> config.recognizer(knowledgeBase, registry, config.k()), knowledge);
     }

@@ -85,9 +85,7 @@ final class MatchCommand implements Callable<Integer> {
         if (cycles < 1) {
             throw new UsageException("--cycles: must be at least 1, not " + cycles);
         }
-        if (roles.thinkSteps < 0) {
-            throw new UsageException("--think-steps: must be 0 or more, not " + roles.thinkSteps);
-        }
+        roles.checkThinkSteps();
         BrainFactory shadowTeacher;
         try {
             shadowTeacher = Teachers.byName(shadow);

@@ -107,7 +107,7 @@ public final class Dagger {
     }
 
     private final Evaluation.Plan plan;
-    private final int thinkSteps;
+    private final double thinkSteps;
     private Learner.Imitator imitator;
     private int added;
     /** The last round's labelled scenes, one sequence per imitating player and game. */
@@ -121,7 +121,7 @@ public final class Dagger {
      * its counterpart's knowledge too); the imitator decides every {@code thinkSteps} steps
      * ({@link PacedBrain}).
      */
-    public Dagger(Evaluation.Plan plan, Learner.Imitator imitator, int thinkSteps) {
+    public Dagger(Evaluation.Plan plan, Learner.Imitator imitator, double thinkSteps) {
         if (plan.shadow() == null) {
             throw new IllegalArgumentException("DAgger labels with a shadow teacher: the teacher in process, or an"
                     + " external one beside each imitating player");
@@ -213,9 +213,9 @@ public final class Dagger {
         final List<ShadowLabels> players = new ArrayList<>();
         private final BrainFactory imitation;
         private final BrainFactory teacher;
-        private final int thinkSteps;
+        private final double thinkSteps;
 
-        Labelling(BrainFactory imitation, BrainFactory teacher, int thinkSteps) {
+        Labelling(BrainFactory imitation, BrainFactory teacher, double thinkSteps) {
             this.imitation = imitation;
             this.teacher = teacher;
             this.thinkSteps = thinkSteps;

@@ -113,7 +113,7 @@ public final class Evaluating {
      * @param report the directory of the HTML report, or null
      */
     public record Request(List<Path> sceneFiles, List<MatchConfig> configs, Lineup teams, int cycles, int seeds,
-                          long firstSeed, int trainGames, int thinkSteps, ImitationTeam.Knowledge knowledge,
+                          long firstSeed, int trainGames, double thinkSteps, ImitationTeam.Knowledge knowledge,
                           Server server, String shadowCommand, int dagger, Path daggerOut, Path disagreements,
                           GameLogs gameLogs, Path report) {
         public Request {
@@ -294,7 +294,8 @@ public final class Evaluating {
         for (int i = 0; i < request.seeds(); i++) {
             seeds.add(request.firstSeed() + i);
         }
-        require(request.thinkSteps() >= 0, "--think-steps: must be 0 or more, not " + request.thinkSteps());
+        require(PacedBrain.valid(request.thinkSteps()), "--think-steps: must be 0, or 1 or more, not "
+                + PacedBrain.text(request.thinkSteps()));
         require(request.dagger() >= 0, "--dagger: must be 0 or more rounds, not " + request.dagger());
         require(request.daggerOut() == null || request.dagger() > 0, "--dagger-out: writes DAgger's labelled scenes;"
                 + " give --dagger N too");
@@ -426,7 +427,7 @@ public final class Evaluating {
         }
         about.put("matching", setup.config().describe());
         about.put("imitator tempo", request.thinkSteps() == 0 ? "answers every see"
-                : "decides on the latest see every " + request.thinkSteps() + " steps (the Krislet client's think loop)");
+                : "decides on the latest see every " + PacedBrain.text(request.thinkSteps()) + " steps (the Krislet client's think loop)");
         about.put("games", setup.seeds().size() + " per side of " + cycles + " cycles, seeds " + setup.seeds());
         events.learnt(imitator.scenes(), setup.config());
         Evaluation.Plan plan = new Evaluation.Plan(setup.teacher(),
