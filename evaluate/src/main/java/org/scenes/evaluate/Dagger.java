@@ -126,8 +126,8 @@ public final class Dagger {
             throw new IllegalArgumentException("DAgger labels with a shadow teacher: the teacher in process, or an"
                     + " external one beside each imitating player");
         }
-        if (thinkSteps < 0) {
-            throw new IllegalArgumentException("think steps must be 0 or more, not " + thinkSteps);
+        if (!PacedBrain.valid(thinkSteps)) {
+            throw new IllegalArgumentException("think steps must be 0, or 1 or more, not " + PacedBrain.text(thinkSteps));
         }
         this.plan = plan;
         this.imitator = imitator;

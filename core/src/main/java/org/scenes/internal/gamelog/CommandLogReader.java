@@ -82,9 +82,9 @@ public final class CommandLogReader implements CommandSource {
             entry = read();
         }
         Entry last = calls.get(calls.size() - 1);
-        boolean ahead = entry != null && entry.before(last.time(), last.stoppage())
-                && entry.time() == last.time() - 1 && !entry.before(calls.get(0).time() - 1, 0);
-        if (entry != null && entry.before(last.time(), last.stoppage()) && !ahead) {
+        boolean behind = entry != null && entry.before(last.time(), last.stoppage());
+        boolean ahead = behind && entry.time() == last.time() - 1 && entry.time() >= calls.get(0).time() - 1;
+        if (behind && !ahead) {
             throw outOfOrder(entry.line(), entry.time(), entry.stoppage(), last.time(), last.stoppage());
         }
         for (Entry call : calls) {
