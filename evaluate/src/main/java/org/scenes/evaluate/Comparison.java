@@ -88,6 +88,8 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
                 LogFigures::nearBall));
         figures.add(figure("onPitch", "play on inside the field lines", true, teacherLog, imitatorLog,
                 LogFigures::onPitch));
+        figures.add(figure("goalieInArea", "goalie in its penalty area, play on", true, teacherLog, imitatorLog,
+                LogFigures::goalieInArea));
         figures.add(figure("stamina", "mean stamina in play on", false, teacherLog, imitatorLog, LogFigures::stamina));
         figures.add(figure("lowestEffort", "lowest effort", false, teacherLog, imitatorLog, LogFigures::lowestEffort));
         figures.add(figure("kickAngle", "kick direction off goal (deg)", false, teacherLog, imitatorLog,

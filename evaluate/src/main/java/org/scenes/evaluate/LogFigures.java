@@ -20,6 +20,7 @@ import org.scenes.internal.protocol.CommandType;
  * @param runLength mean length of a player's runs of executed body commands of one type
  * @param nearBall share of the players' play-on frames within {@link #NEAR} of the ball
  * @param onPitch share of the players' play-on frames inside the field lines
+ * @param goalieInArea share of the goalie's play-on frames inside its own penalty area; NaN without a goalie
  * @param stamina mean stamina over the players' play-on frames
  * @param lowestEffort the lowest effort any of the players had in the game
  * @param kicks kicks that reached the ball (rises of the kick counters), clock advancing
@@ -35,7 +36,7 @@ import org.scenes.internal.protocol.CommandType;
  * @param cycles the game's length in cycles (the last frame's time)
  */
 public record LogFigures(long[] executed, double bodyPerStep, double repeatShare, double runLength, double nearBall,
-                         double onPitch, double stamina, double lowestEffort, int kicks, double kickAngle,
+                         double onPitch, double goalieInArea, double stamina, double lowestEffort, int kicks, double kickAngle,
                          int kickOffs, int kickOffsTaken, double stuckShare, double[][] positions, int cycles) {
     /** Within this of the ball, metres, a player is near it. */
     public static final double NEAR = 1.0;
@@ -45,6 +46,9 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
     public static final double STILL_DEGREES = 0.5;
     static final double HALF_LENGTH = 52.5;
     static final double HALF_WIDTH = 34;
+    /** rcssserver's {@code penalty_area_length} and half its {@code penalty_area_width}, metres. */
+    static final double PENALTY_AREA_LENGTH = 16.5;
+    static final double PENALTY_AREA_HALF_WIDTH = 20.16;
 
     public static LogFigures of(PlayedGame game) {
         List<GameFrame> frames = game.frames();
@@ -59,6 +63,8 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
         long playOnFrames = 0;
         long near = 0;
         long inside = 0;
+        long goalieFrames = 0;
+        long goalieInside = 0;
         double staminaSum = 0;
         double lowestEffort = Double.NaN;
         int kicks = 0;
@@ -92,6 +98,10 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
                     double distance = Math.hypot(player.x() - frame.ball().x(), player.y() - frame.ball().y());
                     near += distance <= NEAR ? 1 : 0;
                     inside += Math.abs(player.x()) <= HALF_LENGTH && Math.abs(player.y()) <= HALF_WIDTH ? 1 : 0;
+                    if ((player.state() & PlayerState.GOALIE) != 0) {
+                        goalieFrames++;
+                        goalieInside += inOwnPenaltyArea(sign * player.x(), player.y()) ? 1 : 0;
+                    }
                     staminaSum += player.stamina();
                     positions[unum][0] += sign * player.x();
                     positions[unum][1] += sign * player.y();
@@ -168,9 +178,14 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
         }
         int cycles = frames.isEmpty() ? 0 : frames.get(frames.size() - 1).time();
         return new LogFigures(executed, share(total, playerSteps), share(repeats, total), share(total, runs),
-                share(near, playOnFrames), share(inside, playOnFrames), playOnFrames == 0 ? Double.NaN
+                share(near, playOnFrames), share(inside, playOnFrames), share(goalieInside, goalieFrames), playOnFrames == 0 ? Double.NaN
                         : staminaSum / playOnFrames, lowestEffort, kicks, aimed == 0 ? Double.NaN : angleSum / aimed,
                 kickOffs, kickOffsTaken, share(stuck, playOnSteps), means, cycles);
+    }
+
+    /** Whether a point in the team's own frame (attacking towards x+) lies in its penalty area, lines included. */
+    static boolean inOwnPenaltyArea(double x, double y) {
+        return x >= -HALF_LENGTH && x <= -HALF_LENGTH + PENALTY_AREA_LENGTH && Math.abs(y) <= PENALTY_AREA_HALF_WIDTH;
     }
 
     /** The steps of a still run that count as stuck: all of a long one in which the player kept acting. */

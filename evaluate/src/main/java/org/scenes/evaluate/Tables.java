@@ -18,7 +18,8 @@ public final class Tables {
             Map.entry("executedTurn", "turn"), Map.entry("executedKick", "kick"), Map.entry("executedCatch", "catch"),
             Map.entry("executedTackle", "tackle"), Map.entry("executedMove", "move"),
             Map.entry("bodyPerStep", "per step"), Map.entry("repeatShare", "repeats"), Map.entry("runLength", "run"),
-            Map.entry("nearBall", "within 1 m"), Map.entry("onPitch", "on pitch"), Map.entry("stamina", "stamina"),
+            Map.entry("nearBall", "within 1 m"), Map.entry("onPitch", "on pitch"),
+            Map.entry("goalieInArea", "goalie in area"), Map.entry("stamina", "stamina"),
             Map.entry("lowestEffort", "lowest effort"), Map.entry("kickAngle", "kick off goal"),
             Map.entry("catchesPer1000", "catches"), Map.entry("kickOffs", "kick-offs"),
             Map.entry("kickOffsTaken", "taken"), Map.entry("logStuckShare", "stuck (log)"));

@@ -107,6 +107,7 @@ class LogFiguresTest {
         }
         assertEquals(1.0 / 3, figures.nearBall(), 1e-12);
         assertEquals(1.0, figures.onPitch(), 1e-12);
+        assertTrue(Double.isNaN(figures.goalieInArea()), "no goalie: " + figures.goalieInArea());
         assertEquals((0.5 + 2 * Math.hypot(10, 20)) / 3, frameFigures.ballDistance(), 1e-9);
         // every play-on step of every player lies in a long run of commands that change nothing
         assertEquals(1.0, figures.stuckShare(), 1e-12);
@@ -153,6 +154,44 @@ class LogFiguresTest {
         LogFigures figures = LogFigures.of(game);
         assertEquals(1, figures.kicks());
         assertTrue(Double.isNaN(figures.kickAngle()), "no kick in play on: " + figures.kickAngle());
+    }
+
+    @Test
+    void theGoaliesShareInItsPenaltyAreaCountsItsPlayOnFramesInItsOwnArea() {
+        // left goalie: in, out in front, out beside, on the area's corner (lines count), out in a stoppage
+        double[][] left = {{-50, 0}, {-30, 0}, {-40, 25}, {-36, -20.16}, {-10, 0}};
+        String[] modes = {"play_on", "play_on", "play_on", "play_on", "goal_r"};
+        assertEquals(2.0 / 4, goalieInArea(Side.LEFT, left, modes), 1e-12);
+        // the right team's area lies at x+, so the same spots mirrored
+        double[][] right = new double[left.length][];
+        for (int i = 0; i < left.length; i++) {
+            right[i] = new double[] {-left[i][0], left[i][1]};
+        }
+        assertEquals(2.0 / 4, goalieInArea(Side.RIGHT, right, modes), 1e-12);
+        assertEquals(0.0, goalieInArea(Side.RIGHT, left, modes), 1e-12, "the left area is the right team's opponent's");
+    }
+
+    /** The goalie-in-area figure of a game whose goalie stands at each spot in turn, beside a field player in the area. */
+    private static double goalieInArea(Side side, double[][] spots, String[] modes) {
+        List<GameFrame> frames = new ArrayList<>();
+        double ownGoal = side == Side.LEFT ? -50 : 50;
+        for (int i = 0; i < spots.length; i++) {
+            org.scenes.internal.gamelog.PlayerState.Counts none =
+                    new org.scenes.internal.gamelog.PlayerState.Counts(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0);
+            var goalie = new org.scenes.internal.gamelog.PlayerState(side, 1, 0,
+                    org.scenes.internal.gamelog.PlayerState.STANDING | org.scenes.internal.gamelog.PlayerState.GOALIE,
+                    spots[i][0], spots[i][1], 0, 0, 0, 0, 'h', 90, 8000, 1, 1, Double.NaN, none);
+            var back = new org.scenes.internal.gamelog.PlayerState(side, 2, 0,
+                    org.scenes.internal.gamelog.PlayerState.STANDING, ownGoal, 5, 0, 0, 0, 0, 'h', 90, 8000, 1, 1,
+                    Double.NaN, none);
+            frames.add(new GameFrame(i + 1, modes[i], "Teal", "Amber", 0, 0, new GameFrame.BallState(0, 0, 0, 0),
+                    List.of(goalie, back)));
+        }
+        PlayedGame game = new PlayedGame(PlayedGame.Role.TEACHER, side, 1,
+                new GameResult(0, 0, 0, 0, spots.length, spots.length, List.of()), frames, List.of());
+        LogFigures figures = LogFigures.of(game);
+        assertEquals(1.0, figures.onPitch(), 1e-12);
+        return figures.goalieInArea();
     }
 
     /** The kick angle of one kick from (10, 5) that sends the ball along (vx, vy), by a player of {@code side}. */
