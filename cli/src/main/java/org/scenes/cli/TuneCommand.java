@@ -51,6 +51,11 @@ final class TuneCommand implements Callable<Integer> {
                     + " (brackets of 90 until it is spent).")
     String budget;
 
+    @Option(names = "--metrics", split = ",", paramLabel = "NAME",
+            description = {"For --search random: only these metrics' configurations (comma-separated, e.g. field or"
+                    + " field,ball-goal), each drawn as often; default: every family."})
+    List<String> metrics = new ArrayList<>();
+
     @Option(names = "--table", paramLabel = "FILE.csv|FILE.json",
             description = "Also write every configuration tried, with its rung, queries and figures, as CSV or JSON.")
     Path table;
@@ -64,6 +69,9 @@ final class TuneCommand implements Callable<Integer> {
         }
         if (budget != null && !search.equals("random")) {
             throw new UsageException("--budget applies to --search random");
+        }
+        if (!metrics.isEmpty() && !search.equals("random")) {
+            throw new UsageException("--metrics applies to --search random");
         }
         Budget limit = Budget.parse(budget == null ? "200" : budget);
         if (table != null) {
@@ -119,7 +127,7 @@ final class TuneCommand implements Callable<Integer> {
         Tuning.Outcome outcome;
         try (TerminalProgress bar = tuning.quiet() ? TerminalProgress.none()
                 : TerminalProgress.start("Tuning", 1, " configurations", 1)) {
-            outcome = Tuning.random(request, limit.configurations(), limit.nanos(), top.global.registry(),
+            outcome = Tuning.random(request, metrics, limit.configurations(), limit.nanos(), top.global.registry(),
                     !bar.shown() ? null : (done, planned, best) -> {
                         synchronized (bar) {
                             bar.maxHint(Math.max(planned, done));

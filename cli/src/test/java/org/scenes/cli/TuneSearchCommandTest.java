@@ -169,7 +169,26 @@ class TuneSearchCommandTest {
         assertEquals(2, cli.run(tune(files, "--search", "random", "--table", dir.resolve("t.txt"), "-o", out).toArray()));
         assertTrue(cli.err().contains("--table"), cli.err());
         assertEquals(2, cli.run(tune(files, "--search", "grid", "-o", out).toArray()));
+        assertEquals(2, cli.run(tune(files, "--metrics", "cell", "-o", out).toArray()));
+        assertTrue(cli.err().contains("--metrics applies to --search random"), cli.err());
+        assertEquals(2, cli.run(tune(files, "--search", "random", "--metrics", "cell,nearest", "-o", out).toArray()));
+        assertTrue(cli.err().contains("no metric named 'nearest'") && cli.err().contains("ball-goal"), cli.err());
         assertTrue(Files.notExists(out));
+    }
+
+    @Test
+    void aRandomSearchOfNamedMetricsTriesOnlyThem() throws Exception {
+        List<Path> files = players(2, 50);
+        Path table = dir.resolve("tried.csv");
+        Path out = dir.resolve("c.json");
+        assertEquals(0, cli.run(tune(files, "--search", "random", "--metrics", "cell", "--budget", "12", "--quiet",
+                "--table", table, "-o", out).toArray()), cli.err());
+        List<CSVRecord> rows = csv(table);
+        assertTrue(!rows.isEmpty());
+        for (CSVRecord row : rows) {
+            assertEquals("cell", row.get("metric"), row.toString());
+        }
+        assertEquals("cell", ConfigFiles.JSON.readTree(out.toFile()).get("metric").asText());
     }
 
     @Test

@@ -79,13 +79,14 @@ public final class Tuning {
      *
      * @param timeNanos the time after which no bracket starts, counted once the files are read, or
      *                  Long.MAX_VALUE for one bracket
+     * @param metrics the metrics to search, or empty for every family
      * @param progress told after each score; may be null
      */
-    public static Outcome random(Request request, int configurations, long timeNanos, PluginRegistry registry,
-                                 RandomSearch.Progress progress) {
+    public static Outcome random(Request request, List<String> metrics, int configurations, long timeNanos,
+                                 PluginRegistry registry, RandomSearch.Progress progress) {
         List<SceneFile> files = read(request.train());
         long start = System.nanoTime();
-        RandomSearch searcher = new RandomSearch(files, registry, request.protocol(), request.objective());
+        RandomSearch searcher = new RandomSearch(files, registry, request.protocol(), request.objective(), metrics);
         long deadline = timeNanos == Long.MAX_VALUE ? Long.MAX_VALUE : start + timeNanos;
         RandomSearch.Result result = searcher.run(MatchConfig.DEFAULT.withSeed(request.seed()), request.seed(), configurations,
                 deadline, progress);
@@ -96,6 +97,9 @@ public final class Tuning {
         score.put("protocol", request.protocol().key());
         score.put("objective", request.objective().key());
         score.put("search", "random search with successive halving");
+        if (!metrics.isEmpty()) {
+            score.put("metrics", metrics);
+        }
         score.put("figures", result.figures());
         score.put("configurationsTried", distinct);
         score.put("scores", result.table().size());

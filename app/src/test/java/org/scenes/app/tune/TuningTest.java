@@ -1,6 +1,7 @@
 package org.scenes.app.tune;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
@@ -9,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.scenes.api.PluginException;
 import org.scenes.api.PluginRegistry;
 import org.scenes.app.TestFiles;
 import org.scenes.internal.validate.Folds;
@@ -49,8 +51,8 @@ class TuningTest {
     @Test
     void theRandomSearchCountsDistinctConfigurationsAndIsSeeded() throws Exception {
         Tuning.Request request = request();
-        Tuning.Outcome first = Tuning.random(request, 8, Long.MAX_VALUE, REGISTRY, null);
-        Tuning.Outcome again = Tuning.random(request, 8, Long.MAX_VALUE, REGISTRY, null);
+        Tuning.Outcome first = Tuning.random(request, List.of(), 8, Long.MAX_VALUE, REGISTRY, null);
+        Tuning.Outcome again = Tuning.random(request, List.of(), 8, Long.MAX_VALUE, REGISTRY, null);
         assertEquals(first.config(), again.config());
         assertEquals(first.tried().stream().map(RandomSearch.Tried::config).distinct().count(),
                 first.crossValidation().get("configurationsTried"));
@@ -58,5 +60,20 @@ class TuningTest {
         assertTrue(first.configurations() <= 8 && first.configurations() > 0);
         assertEquals(List.of("a.json", "b.json", "c.json"), ((List<?>) first.crossValidation().get("trainFiles")).stream()
                 .map(name -> Path.of(name.toString()).getFileName().toString()).toList());
+    }
+
+    @Test
+    void theRandomSearchDrawsOnlyTheMetricsAskedFor() throws Exception {
+        Tuning.Outcome outcome = Tuning.random(request(), List.of("cell", "ball-goal"), 30, Long.MAX_VALUE, REGISTRY, null);
+        List<String> drawn = outcome.tried().stream().map(tried -> tried.config().metric()).distinct().sorted().toList();
+        assertEquals(List.of("ball-goal", "cell"), drawn);
+        assertEquals(List.of("cell", "ball-goal"), outcome.crossValidation().get("metrics"));
+        PluginException unknown = assertThrows(PluginException.class,
+                () -> Tuning.random(request(), List.of("nearest"), 4, Long.MAX_VALUE, REGISTRY, null));
+        assertTrue(unknown.getMessage().contains("Available metrics: "), unknown.getMessage());
+        PluginException nothing = assertThrows(PluginException.class,
+                () -> Tuning.random(request(), List.of("random"), 4, Long.MAX_VALUE, REGISTRY, null));
+        assertTrue(nothing.getMessage().contains("'random' declares nothing to search; searchable: ball-goal"),
+                nothing.getMessage());
     }
 }

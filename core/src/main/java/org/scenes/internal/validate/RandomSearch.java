@@ -20,6 +20,7 @@ import org.scenes.api.ActionType;
 import org.scenes.api.ActionWeights;
 import org.scenes.api.Neighbour;
 import org.scenes.api.ObjectWeights;
+import org.scenes.api.PluginException;
 import org.scenes.api.PluginKind;
 import org.scenes.api.PluginRegistry;
 import org.scenes.api.Scene;
@@ -72,10 +73,21 @@ public final class RandomSearch {
     private final PluginRegistry registry;
     private final Folds.Protocol protocol;
     private final Tuner.Objective objective;
+    private final List<String> families;
     private final Map<String, List<List<Scene>>> sequences = new ConcurrentHashMap<>();
     private final Map<String, KnowledgeBase> knowledge = new ConcurrentHashMap<>();
 
     public RandomSearch(List<SceneFile> files, PluginRegistry registry, Folds.Protocol protocol, Tuner.Objective objective) {
+        this(files, registry, protocol, objective, List.of());
+    }
+
+    /**
+     * @param metrics the metrics whose configurations are drawn, each with the same chance; empty:
+     *                every family, in the search's own mix
+     * @throws PluginException for a name no metric has, or a metric with nothing to search
+     */
+    public RandomSearch(List<SceneFile> files, PluginRegistry registry, Folds.Protocol protocol, Tuner.Objective objective,
+                        List<String> metrics) {
         if (files.size() < 2) {
             throw new IllegalArgumentException("tuning needs at least two training files for cross-validation");
         }
@@ -83,6 +95,16 @@ public final class RandomSearch {
         this.registry = registry;
         this.protocol = protocol;
         this.objective = objective;
+        for (String name : metrics) {
+            registry.find(PluginKind.METRIC, name);
+            if (!OBJECT_FAMILIES.contains(name) && registry.tuneDimensions(PluginKind.METRIC, name).isEmpty()) {
+                List<String> searchable = new ArrayList<>(OBJECT_FAMILIES);
+                searchable.addAll(otherFamilies());
+                throw new PluginException("the metric '" + name + "' declares nothing to search; searchable: "
+                        + String.join(", ", searchable));
+            }
+        }
+        this.families = List.copyOf(metrics);
     }
 
     /**
@@ -107,7 +129,8 @@ public final class RandomSearch {
             List<MatchConfig> candidates = new ArrayList<>();
             if (seen.isEmpty()) {
                 for (MatchConfig known : startingPoints(start)) {
-                    if (candidates.size() < bracket && seen.add(known)) {
+                    boolean drawn = families.isEmpty() || families.contains(known.metric());
+                    if (drawn && candidates.size() < bracket && seen.add(known)) {
                         candidates.add(known);
                     }
                 }
@@ -387,6 +410,19 @@ public final class RandomSearch {
                 .sorted().toList();
     }
 
+    /** The metric of the next setting: one of those asked for, or the search's own mix of every family. */
+    private String drawFamily(SplittableRandom random) {
+        if (!families.isEmpty()) {
+            return families.get(random.nextInt(families.size()));
+        }
+        List<String> others = otherFamilies();
+        int family = random.nextInt(20 + 3 * others.size());
+        if (family >= 20) {
+            return others.get((family - 20) / 3);
+        }
+        return family < 3 ? "ball-goal" : family < 14 ? "continuous" : family < 17 ? "projection" : "cell";
+    }
+
     /**
      * One random metric setting. What to search in a metric's own options, and over which values,
      * the metric's provider declares ({@link org.scenes.api.TuneDimension}); what spans plugins
@@ -399,18 +435,16 @@ public final class RandomSearch {
         // deeper memory of actions: 2 to 4 actions back, each further one weighing decay times the last
         int depth = memoryAction > 0 && random.nextInt(3) == 0 ? 2 + random.nextInt(3) : 1;
         double decay = pick(random, 0.3, 0.5, 1);
-        List<String> others = otherFamilies();
-        int family = random.nextInt(20 + 3 * others.size());
-        if (family >= 20) {
+        String name = drawFamily(random);
+        if (!OBJECT_FAMILIES.contains(name)) {
             // a family of its own (world-model metrics such as field): each dimension it declares, drawn
-            String name = others.get((family - 20) / 3);
             Map<String, String> options = new HashMap<>();
             for (TuneDimension dimension : registry.tuneDimensions(PluginKind.METRIC, name).values()) {
                 options.put(dimension.option(), format(pick(random, dimension.valueArray())));
             }
             return start.withMetric(name, options);
         }
-        if (family < 3) {
+        if (name.equals("ball-goal")) {
             Map<String, TuneDimension> ballGoal = registry.tuneDimensions(PluginKind.METRIC, "ball-goal");
             Map<String, String> options = new HashMap<>();
             for (TuneDimension dimension : ballGoal.values()) {
@@ -420,7 +454,6 @@ public final class RandomSearch {
                     .withObjectWeights(ObjectWeights.of(1, pick(random, 0.3, 1, 3), 0, 0, 0, 0, 0, 0));
             return Tuner.withMemory(config, memory, memoryAction);
         }
-        String name = family < 14 ? "continuous" : family < 17 ? "projection" : "cell";
         Map<String, TuneDimension> declared = registry.tuneDimensions(PluginKind.METRIC, name);
         Map<String, String> accepted = registry.find(PluginKind.METRIC, name).options();
         double goal = pick(random, GOALS);
