@@ -31,6 +31,7 @@ import org.scenes.internal.protocol.ServerNotice;
 import org.scenes.internal.target.Destinations;
 import org.scenes.internal.target.Replay;
 import org.scenes.internal.target.Steering;
+import org.scenes.internal.target.Targets;
 import org.scenes.internal.validate.Validator;
 import org.scenes.internal.world.ServerDefaults;
 import org.scenes.internal.world.WorldModel;
@@ -330,7 +331,9 @@ public final class ImitationBrain implements Brain {
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
-        List<Action> actions = Validator.prediction(action, nearest, seen, replay, destinations, steering);
+        double[] takerRun = setPlayKick == null ? setPlayTakerRun(seen) : null;
+        List<Action> actions = takerRun != null ? List.of(Targets.runTo(takerRun, seen.world(), ServerDefaults.MAX_POWER))
+                : Validator.prediction(action, nearest, seen, replay, destinations, steering);
         Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age, seen.world());
         actions.forEach(world::sent);
         history.addLast(made);
@@ -358,6 +361,23 @@ public final class ImitationBrain implements Brain {
         boolean atBall = own.ballDistance() <= kickable;
         return atBall && observer != null ? setPlayKicks.due(playMode, observer.side(), seen.cycle() - playModeSince)
                 : null;
+    }
+
+    /**
+     * Where to run as the taker of a set play of the player's own team, under target replay: the
+     * ball, when the player's world model makes it its team's nearest to it and it is not yet at
+     * it. The teacher took every one of its set plays (HELIOS base: all its kick-offs); a snapshot
+     * of the view does not say who should, and two imitators 6 m from the ball could each match
+     * teacher scenes of a player who waited there. Null otherwise.
+     */
+    private double[] setPlayTakerRun(Scene seen) {
+        World own = seen.world();
+        if (replay != Replay.TARGET || own == null || observer == null
+                || SetPlayKicks.ownKind(own.playMode(), observer.side()) == null
+                || !own.nearestOfItsTeamToBall() || own.ballDistance() <= kickable) {
+            return null;
+        }
+        return Targets.intercept(own);
     }
 
     private Action guard(Action chosen, List<SeenObject> seen, List<Neighbour> nearest) {
