@@ -45,6 +45,16 @@ public final class GameLogReader {
             "penalty_onfield_r", "penalty_foul_l", "penalty_foul_r", "goalie_catch_ball_l",
             "goalie_catch_ball_r");
 
+    /** 10^0 to 10^15, all exact doubles. */
+    private static final double[] POWERS_OF_TEN = new double[16];
+
+    static {
+        POWERS_OF_TEN[0] = 1;
+        for (int i = 1; i < POWERS_OF_TEN.length; i++) {
+            POWERS_OF_TEN[i] = POWERS_OF_TEN[i - 1] * 10;
+        }
+    }
+
     private final Path file;
     private final Consumer<GameFrame> frames;
     private final Consumer<String> parameters;
@@ -439,11 +449,45 @@ public final class GameLogReader {
 
     private static double number(List<Object> list, int index) {
         String text = atom(list, index);
+        double plain = plainDecimal(text);
+        if (!Double.isNaN(plain)) {
+            return plain;
+        }
         try {
             return Double.parseDouble(text);
         } catch (NumberFormatException e) {
             throw new IllegalArgumentException("'" + text + "' is not a number in " + Sexp.show(list));
         }
+    }
+
+    /**
+     * A number written as digits with at most one point and a sign, as the server writes them,
+     * parsed without {@link Double#parseDouble} (a game log holds millions): exact, as that method,
+     * for up to 15 digits (one correctly rounded division of two exact doubles); NaN for any other
+     * text, which that method then reads.
+     */
+    static double plainDecimal(String text) {
+        int i = text.isEmpty() || (text.charAt(0) != '-' && text.charAt(0) != '+') ? 0 : 1;
+        long mantissa = 0;
+        int digits = 0;
+        int fraction = -1;
+        for (; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (c >= '0' && c <= '9' && digits < 15) {
+                mantissa = mantissa * 10 + (c - '0');
+                digits++;
+                fraction += fraction >= 0 ? 1 : 0;
+            } else if (c == '.' && fraction < 0) {
+                fraction = 0;
+            } else {
+                return Double.NaN;
+            }
+        }
+        if (digits == 0) {
+            return Double.NaN;
+        }
+        double value = fraction <= 0 ? mantissa : mantissa / POWERS_OF_TEN[fraction];
+        return text.charAt(0) == '-' ? -value : value;
     }
 
     private static String shorten(String text) {
@@ -455,11 +499,12 @@ public final class GameLogReader {
 
     /** Balanced lists of words and quoted strings, as game log lines are written. */
     private static final class Sexp {
-        private final String text;
+        /** The line's characters: read from an array, not through {@code String.charAt} (millions a game). */
+        private final char[] text;
         private int pos;
 
         private Sexp(String text) {
-            this.text = text;
+            this.text = text.toCharArray();
         }
 
         /** A line that ends before a list closes: the log was cut there (typed, so no one matches the text). */
@@ -485,40 +530,48 @@ public final class GameLogReader {
 
         private List<Object> list() {
             pos++; // '('
-            List<Object> items = new ArrayList<>();
+            // a player's list has 13 to 17 items
+            List<Object> items = new ArrayList<>(16);
             while (true) {
                 skipSpace();
-                if (pos >= text.length()) {
+                if (pos >= text.length) {
                     throw new OpenList();
                 }
-                char c = text.charAt(pos);
+                char c = text[pos];
                 if (c == ')') {
                     pos++;
                     return items;
                 } else if (c == '(') {
                     items.add(list());
                 } else if (c == '"') {
-                    int close = text.indexOf('"', pos + 1);
-                    if (close < 0) {
+                    int close = pos + 1;
+                    while (close < text.length && text[close] != '"') {
+                        close++;
+                    }
+                    if (close >= text.length) {
                         throw new IllegalArgumentException("unterminated string at column " + (pos + 1));
                     }
-                    items.add(text.substring(pos, close + 1));
+                    items.add(new String(text, pos, close + 1 - pos));
                     pos = close + 1;
                 } else {
                     int start = pos;
-                    while (pos < text.length() && !Character.isWhitespace(text.charAt(pos))
-                            && text.charAt(pos) != '(' && text.charAt(pos) != ')') {
+                    while (pos < text.length && !isSpace(text[pos]) && text[pos] != '(' && text[pos] != ')') {
                         pos++;
                     }
-                    items.add(text.substring(start, pos));
+                    items.add(new String(text, start, pos - start));
                 }
             }
         }
 
         private void skipSpace() {
-            while (pos < text.length() && Character.isWhitespace(text.charAt(pos))) {
+            while (pos < text.length && isSpace(text[pos])) {
                 pos++;
             }
+        }
+
+        /** {@link Character#isWhitespace}, without its look-up for the printable ASCII between. */
+        private static boolean isSpace(char c) {
+            return c == ' ' || ((c < ' ' || c > '~') && Character.isWhitespace(c));
         }
 
         static String show(List<Object> list) {
