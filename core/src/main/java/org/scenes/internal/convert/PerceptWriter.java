@@ -24,7 +24,6 @@ final class PerceptWriter {
     private final StringBuilder text = new StringBuilder(4096);
     /** This writer's own: a parser serves one thread. */
     private final MessageParser parser = new MessageParser();
-    private byte[] bytes = new byte[4096];
 
     PerceptWriter(Path gameLog, GameParameters parameters, SceneConverter converter) {
         this.gameLog = gameLog;
@@ -138,21 +137,12 @@ final class PerceptWriter {
         line(player, "(hear " + frame.time() + " referee " + word + ")");
     }
 
-    /** One line to the player's feed, as bytes (ASCII copied without encoding). */
+    /**
+     * One line to the player's feed, as UTF-8 bytes: the text's own bytes for ASCII (a String
+     * of one-byte characters is copied whole, not char by char).
+     */
     private void line(RebuiltPlayer player, CharSequence message) throws IOException {
-        int length = message.length();
-        if (bytes.length < length) {
-            bytes = new byte[Math.max(length, bytes.length * 2)];
-        }
-        for (int i = 0; i < length; i++) {
-            char c = message.charAt(i);
-            if (c >= 0x80) {
-                byte[] encoded = message.toString().getBytes(StandardCharsets.UTF_8);
-                player.feed.line(encoded, 0, encoded.length);
-                return;
-            }
-            bytes[i] = (byte) c;
-        }
-        player.feed.line(bytes, 0, length);
+        byte[] encoded = message.toString().getBytes(StandardCharsets.UTF_8);
+        player.feed.line(encoded, 0, encoded.length);
     }
 }
