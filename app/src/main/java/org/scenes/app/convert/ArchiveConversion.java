@@ -23,7 +23,6 @@ import org.scenes.internal.convert.GameSceneFiles;
 import org.scenes.internal.files.AtomicOutput;
 import org.scenes.internal.files.CsvTables;
 import org.scenes.internal.gamelog.GameFrame;
-import org.scenes.internal.gamelog.GameLogReader;
 import org.scenes.internal.gamelog.GameLogs;
 
 /**
@@ -313,25 +312,11 @@ public final class ArchiveConversion {
             return ManifestRow.notConverted(game.name(), game.path(), ManifestRow.Status.failed,
                     result.players().isEmpty() ? "no player chosen" : "no scenes: no player sent a command after a see");
         }
-        GameFrame last = lastFrame(logs.gameLog());
+        GameFrame last = result.last(); // the converter read every show up to where the log ends or is cut
         return new ManifestRow(game.name(), game.path(), ManifestRow.Status.converted, last == null ? "" : last.leftTeam(),
                 last == null ? "" : last.rightTeam(), last == null ? -1 : last.scoreLeft(),
                 last == null ? -1 : last.scoreRight(), written.files().size(), written.scenes(),
                 result.warnings(), logs.inferred() ? "infer" : "rcl", "");
-    }
-
-    /** The game log's last show: the teams and the final score (a second read of the game log); null for none. */
-    private static GameFrame lastFrame(Path gameLog) throws IOException {
-        GameFrame[] last = {null};
-        try {
-            GameLogReader.forEach(gameLog, frame -> last[0] = frame);
-        } catch (IOException e) {
-            // a game log cut off: its converted part stands (a warning says so), the last show read counts
-            if (last[0] == null) {
-                throw e;
-            }
-        }
-        return last[0];
     }
 
     private static String reason(Exception e) {

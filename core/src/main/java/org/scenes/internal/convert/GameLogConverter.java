@@ -10,6 +10,7 @@ import org.scenes.api.Grid;
 import org.scenes.api.Observer;
 import org.scenes.internal.gamelog.CommandLogReader;
 import org.scenes.internal.gamelog.CommandSource;
+import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.GameLogException;
 import org.scenes.internal.gamelog.GameLogReader;
 import org.scenes.internal.vision.Fading;
@@ -68,8 +69,9 @@ public final class GameLogConverter {
     /**
      * @param frames shows read from the game log
      * @param warnings what was wrong but left the scenes sound, each naming the file and line
+     * @param last the last show read (teams and final score), null when none was
      */
-    public record Result(long frames, List<PlayerResult> players, List<String> warnings) {
+    public record Result(long frames, List<PlayerResult> players, List<String> warnings, GameFrame last) {
     }
 
     private final Grid grid;

@@ -48,6 +48,8 @@ final class GameRun {
     /** Players who asked for synchronous sees before their first show, by TEAM_UNUM. */
     private final Map<String, Boolean> synchSee = new HashMap<>();
     private boolean teamsKnown;
+    /** The latest show: its teams and score end the game's manifest row. */
+    private GameFrame lastFrame;
     private String leftTeam = "";
     private String rightTeam = "";
 
@@ -90,6 +92,7 @@ final class GameRun {
 
     private void step(GameFrame frame) throws IOException {
         clock.show(frame);
+        lastFrame = frame;
         leftTeam = frame.leftTeam();
         rightTeam = frame.rightTeam();
         teamsKnown = true;
@@ -254,7 +257,7 @@ final class GameRun {
                             + " the command log of another game?", 100.0 * disagreed / compared, compared,
                     gameLog.getFileName()), null);
         }
-        return new GameLogConverter.Result(clock.frames(), results, warnings);
+        return new GameLogConverter.Result(clock.frames(), results, warnings, lastFrame);
     }
 
     /** Ends the workers' threads (once), rethrowing the first failure. */

@@ -71,7 +71,7 @@ public final class GameSceneFiles {
             if (inferred != null && !inferred.warnings().isEmpty()) {
                 List<String> warnings = new ArrayList<>(inferred.warnings());
                 warnings.addAll(result.warnings());
-                result = new GameLogConverter.Result(result.frames(), result.players(), warnings);
+                result = new GameLogConverter.Result(result.frames(), result.players(), warnings, result.last());
             }
             Written written = new Written(result, List.of());
             if (written.scenes() == 0) {
