@@ -34,7 +34,8 @@ public final class ConversionReport {
     private final Map<Integer, Long> seeAges = new TreeMap<>();
     private final Map<DropReason, Long> dropped = new EnumMap<>(DropReason.class);
     private final Map<CommandType, Long> commands = new EnumMap<>(CommandType.class);
-    private final Map<ActionType, Long> actions = new EnumMap<>(ActionType.class);
+    /** Scenes by primary action type's ordinal: counted once a scene, without a boxed map entry. */
+    private final long[] actions = new long[ActionType.values().length];
     private final Map<String, Long> unknown = new TreeMap<>();
     private final List<MalformedLine> malformedLines = new ArrayList<>();
 
@@ -58,7 +59,7 @@ public final class ConversionReport {
 
     void scene(ActionType primary) {
         scenes++;
-        actions.merge(primary, 1L, Long::sum);
+        actions[primary.ordinal()]++;
     }
 
     void perCycle() {
@@ -122,7 +123,9 @@ public final class ConversionReport {
         other.seeAges.forEach((k, v) -> seeAges.merge(k, v, Long::sum));
         other.dropped.forEach((k, v) -> dropped.merge(k, v, Long::sum));
         other.commands.forEach((k, v) -> commands.merge(k, v, Long::sum));
-        other.actions.forEach((k, v) -> actions.merge(k, v, Long::sum));
+        for (int i = 0; i < actions.length; i++) {
+            actions[i] += other.actions[i];
+        }
         other.unknown.forEach((k, v) -> unknown.merge(k, v, Long::sum));
         for (MalformedLine line : other.malformedLines) {
             if (malformedLines.size() < MALFORMED_KEPT) {
@@ -202,7 +205,13 @@ public final class ConversionReport {
 
     /** Primary actions of the scenes written, by type. */
     public Map<ActionType, Long> actions() {
-        return Collections.unmodifiableMap(actions);
+        Map<ActionType, Long> counted = new EnumMap<>(ActionType.class);
+        for (ActionType type : ActionType.values()) {
+            if (actions[type.ordinal()] > 0) {
+                counted.put(type, actions[type.ordinal()]);
+            }
+        }
+        return Collections.unmodifiableMap(counted);
     }
 
     /** Scene actions sent after a scene already had its primary (and secondary) action. */

@@ -113,6 +113,16 @@ public final class CommandLogReader implements CommandSource {
         return null;
     }
 
+    /** Whether every char is a digit ({@link Character#isDigit}), without a stream (a line a command). */
+    private static boolean digits(String text) {
+        for (int i = 0; i < text.length(); i++) {
+            if (!Character.isDigit(text.charAt(i))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     private Entry parse(String text) throws GameLogException {
         int tab = text.indexOf('\t');
         int comma = tab < 0 ? -1 : text.lastIndexOf(',', tab);
@@ -151,7 +161,7 @@ public final class CommandLogReader implements CommandSource {
             return null; // not a player of a team
         }
         String number = sender.substring(underscore + 1);
-        if (number.isEmpty() || !number.chars().allMatch(Character::isDigit) || number.length() > 3) {
+        if (number.isEmpty() || number.length() > 3 || !digits(number)) {
             return null; // a coach (TEAM_Coach) or another client
         }
         return new Entry(line, time, stoppage, sender.substring(0, underscore), Integer.parseInt(number),
