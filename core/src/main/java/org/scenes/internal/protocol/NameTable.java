@@ -13,10 +13,25 @@ final class NameTable<V> {
 
     private final byte[][] keys = new byte[CAPACITY][];
     private final Object[] values = new Object[CAPACITY];
+    /** The bytes of each key of up to eight bytes, packed by {@link #pack}. */
+    private final long[] packedKeys = new long[CAPACITY];
     private int size;
 
     @SuppressWarnings("unchecked")
     V get(byte[] bytes, int start, int end) {
+        int length = end - start;
+        if (length <= Long.BYTES) {
+            // short keys (flag names, heads, most team names) compare as one long, no byte loop
+            long packed = pack(bytes, start, end);
+            int slot = hash(packed, length) & (CAPACITY - 1);
+            while (keys[slot] != null) {
+                if (packedKeys[slot] == packed && keys[slot].length == length) {
+                    return (V) values[slot];
+                }
+                slot = (slot + 1) & (CAPACITY - 1);
+            }
+            return null;
+        }
         int slot = hash(bytes, start, end) & (CAPACITY - 1);
         while (keys[slot] != null) {
             if (Arrays.equals(keys[slot], 0, keys[slot].length, bytes, start, end)) {
@@ -33,11 +48,14 @@ final class NameTable<V> {
             Arrays.fill(values, null);
             size = 0;
         }
-        int slot = hash(bytes, start, end) & (CAPACITY - 1);
+        int length = end - start;
+        long packed = length <= Long.BYTES ? pack(bytes, start, end) : 0;
+        int slot = (length <= Long.BYTES ? hash(packed, length) : hash(bytes, start, end)) & (CAPACITY - 1);
         while (keys[slot] != null) {
             slot = (slot + 1) & (CAPACITY - 1);
         }
         keys[slot] = Arrays.copyOfRange(bytes, start, end);
+        packedKeys[slot] = packed;
         values[slot] = value;
         size++;
     }
@@ -50,6 +68,20 @@ final class NameTable<V> {
             table.put(bytes, start, end, value);
         }
         return value;
+    }
+
+    /** Up to eight bytes in one long, the first in the lowest byte. */
+    private static long pack(byte[] bytes, int start, int end) {
+        long packed = 0;
+        for (int i = end - 1; i >= start; i--) {
+            packed = packed << 8 | (bytes[i] & 0xFF);
+        }
+        return packed;
+    }
+
+    private static int hash(long packed, int length) {
+        long mixed = (packed ^ length) * 0x9E3779B97F4A7C15L;
+        return (int) (mixed ^ (mixed >>> 32));
     }
 
     private static int hash(byte[] bytes, int start, int end) {
