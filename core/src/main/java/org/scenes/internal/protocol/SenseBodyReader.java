@@ -2,6 +2,7 @@ package org.scenes.internal.protocol;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -16,6 +17,9 @@ final class SenseBodyReader {
     private static final List<String> COUNTERS = List.of("kick", "dash", "turn", "say", "turn_neck", "catch",
             "move", "change_view", "change_focus");
 
+    /** Each counter's place in {@link #COUNTERS}: one look-up per part, not a scan comparing strings. */
+    private static final Map<String, Integer> COUNTER_INDEX = counterIndex();
+
     private final MessageCursor c;
     private final NameTable<String> dottedKeys = new NameTable<>();
     private final int[] senseCounts = new int[COUNTERS.size()];
@@ -23,6 +27,14 @@ final class SenseBodyReader {
     private final String[] detailValues = new String[16];
     private int detailCount;
     private byte[] keyScratch = new byte[64];
+
+    private static Map<String, Integer> counterIndex() {
+        Map<String, Integer> index = new HashMap<>();
+        for (int i = 0; i < COUNTERS.size(); i++) {
+            index.put(COUNTERS.get(i), i);
+        }
+        return index;
+    }
 
     SenseBodyReader(MessageCursor cursor) {
         this.c = cursor;
@@ -57,7 +69,7 @@ final class SenseBodyReader {
                 int keyEnd = c.atomEnd();
                 String key = NameTable.string(c.words, c.buf, keyStart, keyEnd);
                 c.pos = keyEnd;
-                int counter = COUNTERS.indexOf(key);
+                int counter = COUNTER_INDEX.getOrDefault(key, -1);
                 if (counter >= 0) {
                     understood = c.numbers() == 1 && c.numbers[0] == (int) c.numbers[0] && c.numbers[0] >= 0;
                     if (understood) {
