@@ -1,10 +1,7 @@
 package org.scenes.internal.convert;
 
-import java.util.HashMap;
-import java.util.Map;
 import org.scenes.internal.gamelog.PlayerState;
-import org.scenes.internal.protocol.Message;
-import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.AnnouncedParameters;
 import org.scenes.internal.protocol.Parameters;
 import org.scenes.internal.vision.VisionParams;
 
@@ -14,9 +11,7 @@ import org.scenes.internal.vision.VisionParams;
  * read by the workers after.
  */
 final class GameParameters {
-    private final MessageParser parser = new MessageParser();
-    private final Map<String, String> serverParam = new HashMap<>();
-    private final Map<Integer, Map<String, String>> playerTypes = new HashMap<>();
+    private final AnnouncedParameters announced = new AnnouncedParameters();
     double visibleAngle = 90;
     double sendStep = 150;
     double simulatorStep = 100;
@@ -24,18 +19,12 @@ final class GameParameters {
 
     /** Takes in a parameter line of the game log; other lines are ignored. */
     void read(String line) {
-        Message message = parser.parse(line);
-        if (!(message instanceof Parameters params)) {
-            return;
-        }
-        if (params.head().equals("server_param")) {
-            serverParam.putAll(params.named());
+        Parameters params = announced.read(line);
+        if (params != null && params.head().equals("server_param")) {
             visibleAngle = number(params, "visible_angle", visibleAngle);
             sendStep = number(params, "send_step", sendStep);
             simulatorStep = number(params, "simulator_step", simulatorStep);
             visibleDistance = number(params, "visible_distance", visibleDistance);
-        } else if (params.head().equals("player_type") && params.named().containsKey("id")) {
-            playerTypes.put((int) params.number("id"), params.named());
         }
     }
 
@@ -46,7 +35,7 @@ final class GameParameters {
 
     /** The vision of a player of this heterogeneous type; clients before version 18 see with the defaults. */
     VisionParams vision(int type, int version) {
-        return VisionParams.of(serverParam, version >= 18 ? playerTypes.get(type) : null);
+        return VisionParams.of(announced.server(), version >= 18 ? announced.playerType(type) : null);
     }
 
     /** The period of a player's asynchronous sees in its view mode, in ms. */

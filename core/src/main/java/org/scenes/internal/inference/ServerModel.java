@@ -2,8 +2,7 @@ package org.scenes.internal.inference;
 
 import java.util.HashMap;
 import java.util.Map;
-import org.scenes.internal.protocol.MessageParser;
-import org.scenes.internal.protocol.Message;
+import org.scenes.internal.protocol.AnnouncedParameters;
 import org.scenes.internal.protocol.Parameters;
 import org.scenes.internal.world.ServerDefaults;
 
@@ -18,25 +17,19 @@ final class ServerModel {
                       double extraStamina, double speedMax) {
     }
 
-    private final MessageParser parser = new MessageParser();
-    private final Map<String, String> server = new HashMap<>();
+    private final AnnouncedParameters announced = new AnnouncedParameters();
     private final Map<Integer, PlayerType> types = new HashMap<>();
 
     /** Takes a {@code server_param}, {@code player_param} or {@code player_type} line. */
     void parameters(String line) {
-        Message message = parser.parse(line);
-        if (!(message instanceof Parameters params)) {
-            return;
-        }
-        if (params.head().equals("server_param")) {
-            server.putAll(params.named());
-        } else if (params.head().equals("player_type") && params.named().containsKey("id")) {
+        Parameters params = announced.read(line);
+        if (params != null && params.head().equals("player_type") && params.named().containsKey("id")) {
             types.put((int) params.number("id"), type(params.named()));
         }
     }
 
     double get(String name, double fallback) {
-        return num(server, name, fallback);
+        return announced.server(name, fallback);
     }
 
     /** The player type's parameters; the default type's (server_param's) when the log has none. */
