@@ -73,7 +73,7 @@ final class ConvertCommand implements Callable<Integer> {
     @Option(names = "--compression", paramLabel = "gzip|zstd|none", defaultValue = "gzip",
             converter = KeyConverters.Compression.class,
             description = {"With --out-dir: how the scene files are compressed. zstd compresses in about a tenth of"
-                    + " gzip's CPU (a game converts with a third less), files within 13 % of gzip's size; every scenes"
+                    + " gzip's CPU (a game converts with a third less), files within 13 %% of gzip's size; every scenes"
                     + " command reads both (zstd -d and zcat too). Default: ${DEFAULT-VALUE}."})
     SceneCompression compression;
 

@@ -1,8 +1,14 @@
 package org.scenes.cli;
 
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+
 import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
 import org.scenes.options.OptionsTable;
 import org.scenes.testing.GeneratedDocs;
 
@@ -31,5 +37,23 @@ class OptionsTableTest {
         assertTrue(table.contains("| --game-seed, --seed | N | 1 |"), "simulate's seed and its older spelling");
         assertTrue(table.contains("| --protocol | next\\|leave-one-out | next |"), "validate's protocol");
         assertTrue(table.contains("| --protocol | leave-one-out\\|next | leave-one-out |"), "tune's protocol");
+    }
+
+    @Test
+    void everyHelpRendersWithoutAWarning() {
+        // picocli passes each description line through String.format (for %n): a lone '%' prints a
+        // warning and the raw line in the help; write '%%'
+        PrintStream saved = System.err;
+        ByteArrayOutputStream warnings = new ByteArrayOutputStream();
+        System.setErr(new PrintStream(warnings, true, StandardCharsets.UTF_8));
+        try {
+            for (CommandLine command : ScenesCommand.commandLine().getSubcommands().values()) {
+                command.getUsageMessage();
+            }
+        } finally {
+            System.setErr(saved);
+        }
+        String printed = warnings.toString(StandardCharsets.UTF_8);
+        assertFalse(printed.contains("WARN"), printed);
     }
 }
