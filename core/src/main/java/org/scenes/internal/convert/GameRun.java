@@ -47,11 +47,8 @@ final class GameRun {
     private final Map<String, Integer> versions = new HashMap<>();
     /** Players who asked for synchronous sees before their first show, by TEAM_UNUM. */
     private final Map<String, Boolean> synchSee = new HashMap<>();
-    private boolean teamsKnown;
-    /** The latest show: its teams and score end the game's manifest row. */
+    /** The latest show, null before the first: its teams check the senders, its score ends the manifest. */
     private GameFrame lastFrame;
-    private String leftTeam = "";
-    private String rightTeam = "";
 
     GameRun(RebuildSettings settings, Path gameLog, CommandSource source, GameLogConverter.Output output) {
         this.settings = settings;
@@ -93,9 +90,6 @@ final class GameRun {
     private void step(GameFrame frame) throws IOException {
         clock.show(frame);
         lastFrame = frame;
-        leftTeam = frame.leftTeam();
-        rightTeam = frame.rightTeam();
-        teamsKnown = true;
         int time = frame.time();
         int stoppage = clock.showStoppage();
         String mode = frame.playMode();
@@ -150,10 +144,10 @@ final class GameRun {
             return;
         }
         String team = entry.team();
-        if (teamsKnown && !team.equals(leftTeam) && !team.equals(rightTeam)) {
+        if (lastFrame != null && !team.equals(lastFrame.leftTeam()) && !team.equals(lastFrame.rightTeam())) {
             throw new LogException(commands.file(), entry.line(), team + "_" + entry.unum()
-                    + " plays in neither team of " + gameLog.getFileName() + " (" + leftTeam + ", " + rightTeam
-                    + "): the command log of another game?", null);
+                    + " plays in neither team of " + gameLog.getFileName() + " (" + lastFrame.leftTeam() + ", "
+                    + lastFrame.rightTeam() + "): the command log of another game?", null);
         }
         String key = team + "_" + entry.unum();
         String message = entry.text();
