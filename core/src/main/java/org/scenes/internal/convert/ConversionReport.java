@@ -17,8 +17,6 @@ import org.scenes.internal.protocol.CommandType;
 public final class ConversionReport {
     /** Malformed lines remembered with their place; further ones are only counted. */
     public static final int MALFORMED_KEPT = 100;
-    /** See ages counted in an array: a player sees every one to three cycles. */
-    private static final int COMMON_SEE_AGES = 16;
 
     private long logs;
     private long lines;
@@ -33,8 +31,6 @@ public final class ConversionReport {
     private long perCycleLogs;
     private long cycles;
     private long repeatedSenseBodies;
-    /** Scenes by see age: the usual ages (a few cycles) in an array, counted without a boxed map entry. */
-    private final long[] commonSeeAges = new long[COMMON_SEE_AGES];
     private final Map<Integer, Long> seeAges = new TreeMap<>();
     private final Map<DropReason, Long> dropped = new EnumMap<>(DropReason.class);
     private final Map<CommandType, Long> commands = new EnumMap<>(CommandType.class);
@@ -79,11 +75,7 @@ public final class ConversionReport {
     }
 
     void seeAge(int age) {
-        if (age >= 0 && age < COMMON_SEE_AGES) {
-            commonSeeAges[age]++;
-        } else {
-            seeAges.merge(age, 1L, Long::sum);
-        }
+        seeAges.merge(age, 1L, Long::sum);
     }
 
     void drop(DropReason reason) {
@@ -128,9 +120,6 @@ public final class ConversionReport {
         perCycleLogs += other.perCycleLogs;
         cycles += other.cycles;
         repeatedSenseBodies += other.repeatedSenseBodies;
-        for (int age = 0; age < COMMON_SEE_AGES; age++) {
-            commonSeeAges[age] += other.commonSeeAges[age];
-        }
         other.seeAges.forEach((k, v) -> seeAges.merge(k, v, Long::sum));
         other.dropped.forEach((k, v) -> dropped.merge(k, v, Long::sum));
         other.commands.forEach((k, v) -> commands.merge(k, v, Long::sum));
@@ -190,13 +179,7 @@ public final class ConversionReport {
 
     /** Scenes written by the age of the {@code see} they show (0: seen in the cycle they acted). */
     public Map<Integer, Long> seeAges() {
-        Map<Integer, Long> all = new TreeMap<>(seeAges);
-        for (int age = 0; age < COMMON_SEE_AGES; age++) {
-            if (commonSeeAges[age] > 0) {
-                all.put(age, commonSeeAges[age]);
-            }
-        }
-        return Collections.unmodifiableMap(all);
+        return Collections.unmodifiableMap(seeAges);
     }
 
     public long scenes() {
