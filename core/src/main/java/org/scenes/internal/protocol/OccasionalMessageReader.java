@@ -27,15 +27,15 @@ final class OccasionalMessageReader {
         c.pos = wordEnd;
         switch (sender) {
             case "referee":
-                return new Hear(time, Hear.Speaker.REFEREE, Double.NaN, 0, restMessage());
+                return new Hear(time, Hear.Speaker.REFEREE, Double.NaN, 0, restOfList());
             case "self":
-                return new Hear(time, Hear.Speaker.SELF, Double.NaN, 0, restMessage());
+                return new Hear(time, Hear.Speaker.SELF, Double.NaN, 0, restOfList());
             case "coach", "online_coach_left", "online_coach_right":
-                return new Hear(time, Hear.Speaker.COACH, Double.NaN, 0, restMessage());
+                return new Hear(time, Hear.Speaker.COACH, Double.NaN, 0, restOfList());
             case "our":
-                return new Hear(time, Hear.Speaker.TEAMMATE, Double.NaN, c.integer("a uniform number"), restMessage());
+                return new Hear(time, Hear.Speaker.TEAMMATE, Double.NaN, c.integer("a uniform number"), restOfList());
             case "opp":
-                return new Hear(time, Hear.Speaker.OPPONENT, Double.NaN, 0, restMessage());
+                return new Hear(time, Hear.Speaker.OPPONENT, Double.NaN, 0, restOfList());
             default:
                 break;
         }
@@ -49,17 +49,20 @@ final class OccasionalMessageReader {
         if (c.equals(nextStart, nextEnd, "our")) {
             c.pos = nextEnd;
             int unum = c.integer("a uniform number");
-            return new Hear(time, Hear.Speaker.TEAMMATE, direction, unum, restMessage());
+            return new Hear(time, Hear.Speaker.TEAMMATE, direction, unum, restOfList());
         }
         if (c.equals(nextStart, nextEnd, "opp")) {
             c.pos = nextEnd;
-            return new Hear(time, Hear.Speaker.OPPONENT, direction, 0, restMessage());
+            return new Hear(time, Hear.Speaker.OPPONENT, direction, 0, restOfList());
         }
-        return new Hear(time, Hear.Speaker.PLAYER, direction, 0, restMessage());
+        return new Hear(time, Hear.Speaker.PLAYER, direction, 0, restOfList());
     }
 
-    /** The rest of the message as said: a quoted string without its quotes, or the raw words. */
-    private String restMessage() {
+    /**
+     * The rest of the list up to its close, as written: a quoted string without its quotes, or the
+     * raw words, trailing spaces left out (what a hear says, a parameter's value).
+     */
+    private String restOfList() {
         c.skipSpace();
         int textStart = c.pos;
         c.skipToClose();
@@ -171,18 +174,7 @@ final class OccasionalMessageReader {
                 int keyStart = c.pos;
                 int keyEnd = c.atomEnd();
                 c.pos = keyEnd;
-                c.skipSpace();
-                int valueStart = c.pos;
-                c.skipToClose();
-                int valueEnd = c.pos;
-                while (valueEnd > valueStart && MessageCursor.isSpace(c.buf[valueEnd - 1])) {
-                    valueEnd--;
-                }
-                if (valueEnd - valueStart >= 2 && c.buf[valueStart] == '"' && c.buf[valueEnd - 1] == '"') {
-                    valueStart++;
-                    valueEnd--;
-                }
-                named.put(c.text(keyStart, keyEnd), c.text(valueStart, valueEnd));
+                named.put(c.text(keyStart, keyEnd), restOfList());
                 c.pos++;
             } else {
                 int valueEnd = c.atomEnd();
