@@ -28,7 +28,7 @@ import java.util.List;
  * @param ballY the ball's position across
  * @param ballVx the ball's velocity along x, metres per cycle
  * @param ballVy the ball's velocity across, metres per cycle
- * @param ballAge cycles since the ball was last seen, -1 when never
+ * @param ballAge cycles since the ball was last seen (or placed by the referee at a kick-off), -1 when unknown
  * @param players the players seen in the latest see and those remembered from earlier ones
  * @param playMode the referee's latest play mode, as the server words it ({@code play_on},
  *                 {@code kick_off_l}, {@code goal_r} ...), empty when none was heard
@@ -67,7 +67,7 @@ public record World(double x, double y, double body, double neck, double vx, dou
      * @param ballY the ball's position across
      * @param ballVx the ball's velocity along x
      * @param ballVy the ball's velocity across
-     * @param ballAge cycles since the ball was last seen
+     * @param ballAge cycles since the ball was last seen (or placed at a kick-off), -1 when unknown
      * @param players the players seen and remembered
      * @param playMode the referee's latest play mode
      * @param ownScore goals of the player's team

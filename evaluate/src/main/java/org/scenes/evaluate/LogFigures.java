@@ -26,7 +26,8 @@ import org.scenes.internal.protocol.CommandType;
  * @param kicks kicks that reached the ball (rises of the kick counters), clock advancing
  * @param kickAngle mean angle, degrees, between the ball's velocity after each of those kicks in play on and
  *                  the direction from the ball to the opponent goal's centre (0 = straight at it)
- * @param kickOffs the team's own kick-offs ({@code kick_off_l} for the left team)
+ * @param kickOffs the team's own kick-offs ({@code kick_off_l} for the left team), but for those the end of
+ *                 a half cut within {@link #CUT_SHORT} cycles: no chance to take them
  * @param kickOffsTaken those that turned to play on by a kick of the team
  * @param stuckShare share of the players' play-on steps lying in runs of {@link GameFigures#STUCK_RUN}
  *                   or more steps in which the player neither moved ({@link #STILL_METRES}) nor turned
@@ -44,6 +45,8 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
     public static final double STILL_METRES = 0.05;
     /** Turned less than this, degrees, in a step: the player did not turn. */
     public static final double STILL_DEGREES = 0.5;
+    /** Cycles under which a kick-off the half's end cuts was no chance: HELIOS base waits 16 to 34 before its kick. */
+    static final int CUT_SHORT = 50;
     static final double HALF_LENGTH = 52.5;
     static final double HALF_WIDTH = 34;
     /** rcssserver's {@code penalty_area_length} and half its {@code penalty_area_width}, metres. */
@@ -79,6 +82,7 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
         int[] stillRun = new int[players + 1];
         int[] stillActing = new int[players + 1];
         String ownKickOff = side == Side.LEFT ? "kick_off_l" : "kick_off_r";
+        int kickOffSince = 0;
         for (int k = 0; k < frames.size(); k++) {
             GameFrame frame = frames.get(k);
             GameFrame next = k + 1 < frames.size() ? frames.get(k + 1) : null;
@@ -156,7 +160,12 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
                 stillRun[unum] = 0;
                 stillActing[unum] = 0;
             }
-            if (frame.playMode().equals(ownKickOff) && (next == null || !next.playMode().equals(ownKickOff))) {
+            boolean ownKickOffNow = frame.playMode().equals(ownKickOff);
+            if (ownKickOffNow && (k == 0 || !frames.get(k - 1).playMode().equals(ownKickOff))) {
+                kickOffSince = frame.time();
+            }
+            if (ownKickOffNow && (next == null || !next.playMode().equals(ownKickOff))
+                    && !(next != null && endsHalf(next.playMode()) && next.time() - kickOffSince < CUT_SHORT)) {
                 kickOffs++;
                 if (next != null && next.playMode().equals("play_on") && teamKicked) {
                     kickOffsTaken++;
@@ -181,6 +190,11 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
                 share(near, playOnFrames), share(inside, playOnFrames), share(goalieInside, goalieFrames), playOnFrames == 0 ? Double.NaN
                         : staminaSum / playOnFrames, lowestEffort, kicks, aimed == 0 ? Double.NaN : angleSum / aimed,
                 kickOffs, kickOffsTaken, share(stuck, playOnSteps), means, cycles);
+    }
+
+    /** Whether a play mode follows only the end of a half: the pause, the game's end or the next half's kick-off. */
+    private static boolean endsHalf(String playMode) {
+        return playMode.equals("half_time") || playMode.equals("time_over") || playMode.startsWith("kick_off_");
     }
 
     /** Whether a point in the team's own frame (attacking towards x+) lies in its penalty area, lines included. */

@@ -91,6 +91,36 @@ class LogFiguresTest {
     }
 
     @Test
+    void aKickOffTheHalfsEndCutsShortIsNoChanceMissed() throws IOException {
+        GameSetup setup = new GameSetup(new GameSetup.Team("Teal", 3, STATUES), new GameSetup.Team("Amber", 3, MUTE),
+                400, 3, null);
+        Simulator simulator = new Simulator(setup).recordTo(dir);
+        simulator.run(time -> { });
+        PlayedGame game = ServerLogGames.played(PlayedGame.Role.TEACHER,
+                List.of(ServerLogGames.read(simulator.recorded().get(0))), "Teal").get(0);
+        LogFigures played = LogFigures.of(game);
+        // the left team's own kick-off called 10 and then 60 steps before time over, never taken
+        LogFigures cut = LogFigures.of(withLateKickOff(game, 10));
+        LogFigures missed = LogFigures.of(withLateKickOff(game, 60));
+        assertEquals(played.kickOffs(), cut.kickOffs(), "cut after 10 steps: not counted");
+        assertEquals(played.kickOffs() + 1, missed.kickOffs(), "60 steps without a kick: a chance missed");
+        assertEquals(played.kickOffsTaken(), cut.kickOffsTaken());
+        assertEquals(played.kickOffsTaken(), missed.kickOffsTaken());
+    }
+
+    /** The game with its last {@code steps} frames in the left team's kick-off and a final frame of time over. */
+    private static PlayedGame withLateKickOff(PlayedGame game, int steps) {
+        List<GameFrame> frames = new ArrayList<>(game.frames());
+        int last = frames.size() - 1;
+        for (int k = last - steps; k <= last; k++) {
+            GameFrame f = frames.get(k);
+            frames.set(k, new GameFrame(f.time(), k == last ? "time_over" : "kick_off_l", f.leftTeam(), f.rightTeam(),
+                    f.scoreLeft(), f.scoreRight(), f.ball(), f.players()));
+        }
+        return new PlayedGame(game.role(), game.side(), game.seed(), game.result(), frames, List.of());
+    }
+
+    @Test
     void aTeamThatStandsStillHasFiguresOneCanWorkOut() throws IOException {
         // the right team never kicks off: the second half is one long kick_off_r, no play on
         GameSetup setup = new GameSetup(new GameSetup.Team("Teal", 3, STATUES), new GameSetup.Team("Amber", 3, MUTE),

@@ -27,6 +27,10 @@ public final class ServerDefaults {
     public static final double STAMINA_MAX = 8000;
     /** Below this share of {@link #STAMINA_MAX} the server lowers the player's effort, for good. */
     public static final double EFFORT_DEC_THR = 0.3;
+    /** A ball or player this near is in every see, whichever way the player faces. */
+    public static final double VISIBLE_DISTANCE = 3;
+    /** Half the narrowest view cone (narrow view, asynchronous vision: 45 degrees in all). */
+    public static final double NARROWEST_HALF_VIEW = 22.5;
 
     private ServerDefaults() {
     }

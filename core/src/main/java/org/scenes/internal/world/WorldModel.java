@@ -32,8 +32,11 @@ import org.scenes.internal.protocol.VisualObject;
  *   <li>a {@code sense_body} of a later cycle moves what is not seen: the player by the velocity it
  *   reports (its neck and stamina too), its body by an executed {@code turn}, the ball by its
  *   velocity with the ball's decay; players stay where last seen, growing older;</li>
+ *   <li>a {@code see} without the ball where the model holds it (within the distance every see
+ *   covers, or straight ahead) forgets the ball: it is not there, and a player acting on a ball
+ *   it would kick forever is worse off than one that knows it has lost it;</li>
  *   <li>the referee's calls give the play mode and the score ({@code goal_l_2}: the left team has
- *   2).</li>
+ *   2); a kick-off places the ball on the centre spot, as the rules do.</li>
  * </ul>
  *
  * Motion uses the default server's constants (player decay 0.4, ball decay 0.94, inertia moment 5):
@@ -45,6 +48,12 @@ public final class WorldModel {
     static final double MAX_Y = 39;
     /** Cycles a player seen with its team and number is remembered. */
     static final int PLAYER_MEMORY = 30;
+    /**
+     * How much nearer than the visible distance, and within how many degrees of the head, a ball
+     * the model holds must lie for a see without it to forget it: room for the model's error.
+     */
+    static final double BALL_MISSING_MARGIN = 0.5;
+    static final double BALL_MISSING_CONE = ServerDefaults.NARROWEST_HALF_VIEW - 2.5;
 
     private String team = "";
     private Side side;
@@ -103,7 +112,7 @@ public final class WorldModel {
             senseBody(body);
         } else if (message instanceof Hear hear) {
             if (hear.speaker() == Hear.Speaker.REFEREE) {
-                referee(hear.text());
+                referee(hear.text(), hear.time());
             }
         } else if (message instanceof PlayerCommand command) {
             if (command.type() == CommandType.TURN && command.wellFormed()) {
@@ -114,7 +123,7 @@ public final class WorldModel {
         } else if (message instanceof InitReply reply) {
             side = reply.side() != null ? reply.side() : side;
             if (reply.playMode() != null) {
-                referee(reply.playMode());
+                referee(reply.playMode(), Math.max(0, time));
             }
         } else if (message instanceof Score score && side != null) {
             scoreLeft = side == Side.LEFT ? score.our() : score.their();
@@ -183,7 +192,9 @@ public final class WorldModel {
             return;
         }
         unnamed.clear();
+        boolean ballSeen = false;
         for (VisualObject object : see.objects()) {
+            ballSeen |= object.kind() == ObjectKind.BALL;
             if (Double.isNaN(object.distance()) || Double.isNaN(object.direction())) {
                 continue;
             }
@@ -204,6 +215,23 @@ public final class WorldModel {
             }
         }
         named.values().removeIf(seen -> see.time() - seen.time() > PLAYER_MEMORY);
+        if (!ballSeen && !Double.isNaN(ballX) && ballWouldBeSeen()) {
+            ballX = Double.NaN;
+            ballY = Double.NaN;
+            ballVx = Double.NaN;
+            ballVy = Double.NaN;
+            ballSeenAt = -1;
+        }
+    }
+
+    /** Whether the ball, where the model holds it, lies where every see would show it. */
+    private boolean ballWouldBeSeen() {
+        double dx = ballX - x;
+        double dy = ballY - y;
+        if (Math.hypot(dx, dy) < ServerDefaults.VISIBLE_DISTANCE - BALL_MISSING_MARGIN) {
+            return true;
+        }
+        return Math.abs(Localisation.normalize(Math.toDegrees(Math.atan2(dy, dx)) - head)) < BALL_MISSING_CONE;
     }
 
     private void ball(VisualObject object, double bx, double by, double direction, int seenAt) {
@@ -228,9 +256,12 @@ public final class WorldModel {
         ballSeenAt = seenAt;
     }
 
-    private void referee(String word) {
+    private void referee(String word, int heardAt) {
         if (word.startsWith("yellow_card") || word.startsWith("red_card")) {
             return; // a card, not a play mode
+        }
+        if (word.equals("before_kick_off") || word.equals("kick_off_l") || word.equals("kick_off_r")) {
+            placeBall(0, 0, heardAt);
         }
         if (word.startsWith("goal_l_") || word.startsWith("goal_r_")) {
             try {
@@ -247,6 +278,17 @@ public final class WorldModel {
             return;
         }
         playMode = word;
+    }
+
+    /** The ball where the referee put it, at rest: known as if seen there. */
+    private void placeBall(double bx, double by, int at) {
+        ballX = bx;
+        ballY = by;
+        ballVx = 0;
+        ballVy = 0;
+        seenBallX = bx;
+        seenBallY = by;
+        ballSeenAt = at;
     }
 
     /** A seen player's key in {@link #named}: its relation and number (no text made per player seen). */

@@ -49,9 +49,23 @@ class WorldModelTest {
         return text.toString();
     }
 
+    /** The same see with the ball left out, as the server sends it when the ball is not in view. */
+    private String seeWithoutBall(int time, double x, double y, double head) {
+        StringBuilder text = new StringBuilder();
+        writer.begin(text, time, x, y, 0, 0, head, 90, true);
+        writer.landmarks();
+        writer.lines();
+        writer.end();
+        return text.toString();
+    }
+
     private WorldModel model(char side) {
+        return model(side, "before_kick_off");
+    }
+
+    private WorldModel model(char side, String playMode) {
         WorldModel model = new WorldModel("Us");
-        model.accept(parser.parse("(init " + side + " 3 before_kick_off)"));
+        model.accept(parser.parse("(init " + side + " 3 " + playMode + ")"));
         return model;
     }
 
@@ -118,6 +132,52 @@ class WorldModelTest {
         // 0.4 m/cycle after decay 0.4: moved a metre
         assertEquals(seen.x() + 1, carried.x(), 0.01);
         assertEquals(1, carried.age());
+    }
+
+    @Test
+    void aBallNotSeenWhereEverySeeWouldShowItIsForgotten() {
+        WorldModel model = model('l', "play_on");
+        model.accept(parser.parse("(sense_body 1 (speed 0 0) (head_angle 0))"));
+        model.accept(parser.parse(see(1, 0, 0, 0, 1, 0)));
+        assertTrue(model.snapshot(1).ballKnown());
+        // facing away from the ball it holds a metre ahead: a ball within the visible distance is in every see
+        model.accept(parser.parse("(sense_body 2 (speed 0 0) (head_angle 0))"));
+        model.accept(parser.parse(seeWithoutBall(2, 0, 0, 180)));
+        World lost = model.snapshot(2);
+        assertFalse(lost.ballKnown());
+        assertEquals(-1, lost.ballAge());
+        // seen again far ahead; then a view straight at where it was, without it
+        model.accept(parser.parse(see(3, 0, 0, 0, 20, 0)));
+        assertEquals(20, model.snapshot(3).ballX(), 1);
+        model.accept(parser.parse(seeWithoutBall(4, 0, 0, 5)));
+        assertFalse(model.snapshot(4).ballKnown());
+    }
+
+    @Test
+    void aBallOutOfViewAndFartherThanTheVisibleDistanceIsKept() {
+        WorldModel model = model('l', "play_on");
+        model.accept(parser.parse("(sense_body 1 (speed 0 0) (head_angle 0))"));
+        model.accept(parser.parse(see(1, 0, 0, 0, 10, 0)));
+        model.accept(parser.parse("(sense_body 2 (speed 0 0) (head_angle 0))"));
+        model.accept(parser.parse(seeWithoutBall(2, 0, 0, 90)));
+        World kept = model.snapshot(2);
+        assertTrue(kept.ballKnown());
+        assertEquals(1, kept.ballAge());
+        assertEquals(10, kept.ballX(), 1);
+    }
+
+    @Test
+    void aKickOffPutsTheBallOnTheCentreSpotThoughThePlayerFacesAway() {
+        WorldModel model = model('r', "play_on");
+        model.accept(parser.parse("(sense_body 1 (speed 0 0) (head_angle 0))"));
+        model.accept(parser.parse(see(1, 40, 5, 0, 52, 3)));
+        model.accept(parser.parse("(hear 2 referee goal_r_1)"));
+        model.accept(parser.parse("(hear 50 referee kick_off_l)"));
+        World placed = model.snapshot(52);
+        assertEquals(0, placed.ballX());
+        assertEquals(0, placed.ballY());
+        assertEquals(0, placed.ballVx());
+        assertEquals(2, placed.ballAge());
     }
 
     @Test
