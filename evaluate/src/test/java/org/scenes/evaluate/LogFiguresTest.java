@@ -92,12 +92,7 @@ class LogFiguresTest {
 
     @Test
     void aKickOffTheHalfsEndCutsShortIsNoChanceMissed() throws IOException {
-        GameSetup setup = new GameSetup(new GameSetup.Team("Teal", 3, STATUES), new GameSetup.Team("Amber", 3, MUTE),
-                400, 3, null);
-        Simulator simulator = new Simulator(setup).recordTo(dir);
-        simulator.run(time -> { });
-        PlayedGame game = ServerLogGames.played(PlayedGame.Role.TEACHER,
-                List.of(ServerLogGames.read(simulator.recorded().get(0))), "Teal").get(0);
+        PlayedGame game = played(statuesAgainstMute(), "Teal");
         LogFigures played = LogFigures.of(game);
         // the left team's own kick-off called 10 and then 60 steps before time over, never taken
         LogFigures cut = LogFigures.of(withLateKickOff(game, 10));
@@ -106,6 +101,19 @@ class LogFiguresTest {
         assertEquals(played.kickOffs() + 1, missed.kickOffs(), "60 steps without a kick: a chance missed");
         assertEquals(played.kickOffsTaken(), cut.kickOffsTaken());
         assertEquals(played.kickOffsTaken(), missed.kickOffsTaken());
+    }
+
+    /** The game log of a 400-cycle 3 v 3 game of Teal's statues against Amber's mute players. */
+    private Path statuesAgainstMute() throws IOException {
+        GameSetup setup = new GameSetup(new GameSetup.Team("Teal", 3, STATUES), new GameSetup.Team("Amber", 3, MUTE),
+                400, 3, null);
+        Simulator simulator = new Simulator(setup).recordTo(dir);
+        simulator.run(time -> { });
+        return simulator.recorded().get(0);
+    }
+
+    private static PlayedGame played(Path gameLog, String team) throws IOException {
+        return ServerLogGames.played(PlayedGame.Role.TEACHER, List.of(ServerLogGames.read(gameLog)), team).get(0);
     }
 
     /** The game with its last {@code steps} frames in the left team's kick-off and a final frame of time over. */
@@ -123,12 +131,8 @@ class LogFiguresTest {
     @Test
     void aTeamThatStandsStillHasFiguresOneCanWorkOut() throws IOException {
         // the right team never kicks off: the second half is one long kick_off_r, no play on
-        GameSetup setup = new GameSetup(new GameSetup.Team("Teal", 3, STATUES), new GameSetup.Team("Amber", 3, MUTE),
-                400, 3, null);
-        Simulator simulator = new Simulator(setup).recordTo(dir);
-        simulator.run(time -> { });
-        PlayedGame game = ServerLogGames.played(PlayedGame.Role.TEACHER,
-                List.of(ServerLogGames.read(simulator.recorded().get(0))), "Teal").get(0);
+        Path gameLog = statuesAgainstMute();
+        PlayedGame game = played(gameLog, "Teal");
         LogFigures figures = LogFigures.of(game);
         GameFigures frameFigures = GameFigures.of(game);
         // the ball never leaves the centre spot: player 1 half a metre from it, 2 and 3 at (-10, -+20)
@@ -144,8 +148,7 @@ class LogFiguresTest {
         // the left team kicked off once and took it; the right team never took its one
         assertEquals(1, figures.kickOffs());
         assertEquals(1, figures.kickOffsTaken());
-        PlayedGame right = ServerLogGames.played(PlayedGame.Role.TEACHER,
-                List.of(ServerLogGames.read(simulator.recorded().get(0))), "Amber").get(0);
+        PlayedGame right = played(gameLog, "Amber");
         assertEquals(Side.RIGHT, right.side());
         LogFigures rightFigures = LogFigures.of(right);
         assertEquals(1, rightFigures.kickOffs());
