@@ -66,7 +66,8 @@ final class ValidateCommand implements Callable<Integer> {
 
     @Option(names = "--predictions", paramLabel = "FILE.csv",
             description = "With --train/--test: write one row per test scene and configuration: file, cycle, recorded and"
-                    + " predicted commands, whether the type and the turn's sign were right.")
+                    + " predicted commands, whether the type and the turn's sign were right, and the stored scene the"
+                    + " prediction came from (training file, cycle, distance).")
     Path predictions;
 
     @Option(names = "--sequential", description = "Run queries on one thread (same results, for timing comparisons).")

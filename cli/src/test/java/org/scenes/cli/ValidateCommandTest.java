@@ -131,8 +131,8 @@ class ValidateCommandTest {
         try (java.io.Reader in = Files.newBufferedReader(csv);
              org.apache.commons.csv.CSVParser parser = org.apache.commons.csv.CSVParser.parse(in,
                      org.apache.commons.csv.CSVFormat.DEFAULT.builder().setHeader().setSkipHeaderRecord(true).build())) {
-            assertEquals(List.of("configuration", "file", "cycle", "recorded", "predicted", "type_right", "direction_right"),
-                    parser.getHeaderNames());
+            assertEquals(List.of("configuration", "file", "cycle", "recorded", "predicted", "type_right", "direction_right",
+                    "neighbour_file", "neighbour_cycle", "neighbour_distance"), parser.getHeaderNames());
             rows = parser.getRecords();
         }
         assertEquals(400, rows.size(), "200 test scenes for each of 2 configurations");
@@ -145,6 +145,9 @@ class ValidateCommandTest {
             assertEquals(runs.get(run).get("directionAccuracy").asDouble(), withDirection / 200.0, 1e-12);
             for (int i = 0; i < own.size(); i++) {
                 assertEquals("b.json", own.get(i).get("file"));
+                assertEquals("a.json", own.get(i).get("neighbour_file"), "the one training file");
+                assertTrue(Integer.parseInt(own.get(i).get("neighbour_cycle")) < 300, own.get(i).toString());
+                assertTrue(Double.parseDouble(own.get(i).get("neighbour_distance")) >= 0, own.get(i).toString());
                 assertEquals(Integer.toString(i), own.get(i).get("cycle"));
                 String recorded = own.get(i).get("recorded");
                 String predicted = own.get(i).get("predicted");

@@ -3,6 +3,7 @@ package org.scenes.app.validate;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import org.scenes.api.Action;
 import org.scenes.api.ActionType;
@@ -64,6 +65,10 @@ public final class Validation {
     public record Query(String file, int cycle) {
     }
 
+    /** The stored scene a prediction came from: its training file (its name), its cycle and its distance from the query. */
+    public record Source(String file, int cycle, double distance) {
+    }
+
     /**
      * One configuration's result: a single run with its queries in order, or folds.
      *
@@ -72,8 +77,11 @@ public final class Validation {
      * @param report a single run's report, or null for folds
      * @param folds the folds, or null for a single run
      * @param queries a single run's queries, in the report's order; empty for folds
+     * @param sources where each query's prediction came from, in the same order (null for a query
+     *                without one); empty for folds
      */
-    public record Outcome(String label, MatchConfig config, ValidationReport report, Folds folds, List<Query> queries) {
+    public record Outcome(String label, MatchConfig config, ValidationReport report, Folds folds, List<Query> queries,
+                          List<Source> sources) {
         public double accuracy() {
             return report != null ? report.accuracy() : folds.mean(ValidationReport::accuracy);
         }
@@ -122,10 +130,12 @@ public final class Validation {
                 String label = request.labels().isEmpty() ? config.describe() : request.labels().get(i);
                 if (request.crossValidate()) {
                     outcomes.add(new Outcome(label, config, null,
-                            Folds.run(trainFiles, config, registry, request.parallel(), tick, request.protocol()), List.of()));
+                            Folds.run(trainFiles, config, registry, request.parallel(), tick, request.protocol()), List.of(),
+                            List.of()));
                     continue;
                 }
-                KnowledgeBase knowledge = KnowledgeBase.fromFiles(trainFiles, config.transformFactory(registry));
+                int[] fileEnds = new int[trainFiles.size()];
+                KnowledgeBase knowledge = KnowledgeBase.fromFiles(trainFiles, config.transformFactory(registry), fileEnds);
                 List<Scene> queriesOf = new ArrayList<>();
                 List<Query> asked = new ArrayList<>();
                 for (int f = 0; f < testFiles.size(); f++) {
@@ -136,8 +146,11 @@ public final class Validation {
                         asked.add(new Query(String.valueOf(testNames.get(f).getFileName()), scene.cycle()));
                     }
                 }
-                ValidationReport report = Validator.run(knowledge, queriesOf, config, registry, request.parallel(), tick);
-                outcomes.add(new Outcome(label, config, report, null, List.copyOf(asked)));
+                Validator.Donors donors = Validator.Donors.of(queriesOf.size());
+                ValidationReport report = Validator.run(knowledge, queriesOf, config, registry, request.parallel(), tick,
+                        donors);
+                outcomes.add(new Outcome(label, config, report, null, List.copyOf(asked),
+                        sources(donors, knowledge, fileEnds, request.train())));
             }
         } finally {
             progress.end();
@@ -157,10 +170,32 @@ public final class Validation {
         return files;
     }
 
+    /** Each query's donor as its training file, cycle and distance. */
+    private static List<Source> sources(Validator.Donors donors, KnowledgeBase knowledge, int[] fileEnds,
+                                        List<Path> trainFiles) {
+        List<Source> sources = new ArrayList<>(donors.index().length);
+        for (int i = 0; i < donors.index().length; i++) {
+            int stored = donors.index()[i];
+            if (stored < 0) {
+                sources.add(null);
+                continue;
+            }
+            // the first file whose stored scenes end after the donor holds it
+            int file = Arrays.binarySearch(fileEnds, stored + 1);
+            file = file >= 0 ? file : -file - 1;
+            while (file > 0 && fileEnds[file - 1] > stored) {
+                file--;
+            }
+            sources.add(new Source(String.valueOf(trainFiles.get(file).getFileName()), knowledge.cycle(stored),
+                    donors.distance()[i]));
+        }
+        return sources;
+    }
+
     /**
      * One row per test scene and single-run outcome, for error analysis (pandas, a spreadsheet):
      * configuration, file, cycle, recorded and predicted commands, whether the type and the turn's
-     * sign were right.
+     * sign were right, and the stored scene the prediction came from (training file, cycle, distance).
      */
     public static void writePredictions(Path file, List<Outcome> outcomes) throws IOException {
         List<List<Object>> rows = new ArrayList<>();
@@ -168,12 +203,15 @@ public final class Validation {
             ValidationReport report = outcome.report();
             for (int i = 0; i < report.testScenes(); i++) {
                 Query query = outcome.queries().get(i);
-                rows.add(List.of(outcome.label(), query.file(), query.cycle(), commands(report.recorded().get(i)),
-                        commands(report.predictions().get(i)), report.right(i), report.rightWithDirection(i)));
+                Source source = outcome.sources().get(i);
+                rows.add(Arrays.asList(outcome.label(), query.file(), query.cycle(), commands(report.recorded().get(i)),
+                        commands(report.predictions().get(i)), report.right(i), report.rightWithDirection(i),
+                        source == null ? "" : source.file(), source == null ? "" : source.cycle(),
+                        source == null ? "" : source.distance()));
             }
         }
         CsvTables.write(file, List.of("configuration", "file", "cycle", "recorded", "predicted", "type_right",
-                "direction_right"), rows);
+                "direction_right", "neighbour_file", "neighbour_cycle", "neighbour_distance"), rows);
     }
 
     private static String commands(List<Action> actions) {

@@ -81,9 +81,42 @@ class ValidationTest {
         Path predictions = dir.resolve("predictions.csv");
         Validation.writePredictions(predictions, outcomes);
         List<String> lines = Files.readAllLines(predictions);
-        assertEquals("configuration,file,cycle,recorded,predicted,type_right,direction_right", lines.get(0));
+        assertEquals("configuration,file,cycle,recorded,predicted,type_right,direction_right,neighbour_file,"
+                + "neighbour_cycle,neighbour_distance", lines.get(0));
         assertEquals(1 + 240, lines.size());
         assertTrue(lines.get(8).startsWith("one,test.json,7,"), lines.get(8));
+    }
+
+    @Test
+    void eachPredictionNamesTheStoredSceneItCameFrom() throws Exception {
+        // tested on two of its own training files with continuous distances and directions: each
+        // query's nearest stored scene sees what it sees, at distance 0
+        Path first = file("first.json", 6, 150);
+        Path second = file("second.json", 7, 150);
+        MatchConfig continuous = MatchConfig.DEFAULT.withMetric("continuous", java.util.Map.of());
+        List<Validation.Outcome> outcomes = Validation.run(new Validation.Request(List.of(first, second), List.of(), true,
+                false, Folds.Protocol.NEXT, List.of(continuous), List.of(), true), REGISTRY, new Counted());
+        Validation.Outcome outcome = outcomes.get(0);
+        List<SceneFile> files = Validation.readSameGrid(List.of(first, second));
+        java.util.Map<String, SceneFile> byName = java.util.Map.of("first.json", files.get(0), "second.json", files.get(1));
+        assertEquals(300, outcome.sources().size());
+        int own = 0;
+        for (int i = 0; i < outcome.queries().size(); i++) {
+            Validation.Query query = outcome.queries().get(i);
+            Validation.Source source = outcome.sources().get(i);
+            assertEquals(0, source.distance(), "query " + query);
+            if (source.file().equals(query.file()) && source.cycle() == query.cycle()) {
+                own++;
+            }
+            // the named scene is there and sees what the query sees (an earlier equal scene wins a tie)
+            org.scenes.api.Scene named = byName.get(source.file()).scenes().stream()
+                    .filter(scene -> scene.cycle() == source.cycle()).findFirst().orElseThrow();
+            org.scenes.api.Scene asked = byName.get(query.file()).scenes().stream()
+                    .filter(scene -> scene.cycle() == query.cycle()).findFirst().orElseThrow();
+            assertEquals(asked.objects(), named.objects(), "query " + query + " against " + source);
+        }
+        assertTrue(own > 200, own + " of 300 found themselves");
+        assertTrue(outcome.sources().stream().anyMatch(source -> source.file().equals("second.json")));
     }
 
     @Test

@@ -128,6 +128,15 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
         return new Reader(chunks.get(start >>> CHUNK_BITS), start & CHUNK - 1).scene();
     }
 
+    /** The cycle of a scene, read without decoding the rest of it. */
+    int cycle(int index) {
+        if (index < 0 || index >= size) {
+            throw new IndexOutOfBoundsException("scene " + index + " of " + size);
+        }
+        int start = starts[index];
+        return new Reader(chunks.get(start >>> CHUNK_BITS), start & CHUNK - 1).cycle();
+    }
+
     /** The see age of a scene, read without decoding the rest of it. */
     int seeAge(int index) {
         if (index < 0 || index >= size) {
@@ -303,6 +312,11 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
         Reader(byte[] chunk, int position) {
             this.bytes = chunk;
             this.position = position;
+        }
+
+        /** The cycle, a scene's first field. */
+        int cycle() {
+            return (int) unzigzag(varint());
         }
 
         /** The see age at the start of a scene, from its first two fields. */

@@ -142,12 +142,24 @@ public final class KnowledgeBase {
      * {@code transforms}) in order, since transforms such as memory follow one player's sequence.
      */
     public static KnowledgeBase fromFiles(List<SceneFile> files, Supplier<List<SceneTransform>> transforms) {
+        return fromFiles(files, transforms, null);
+    }
+
+    /**
+     * The same, also saying where each file's stored scenes end.
+     *
+     * @param ends null, or one slot per file: filled with the index after its last stored scene
+     */
+    public static KnowledgeBase fromFiles(List<SceneFile> files, Supplier<List<SceneTransform>> transforms, int[] ends) {
         if (files.isEmpty()) {
             throw new IllegalArgumentException("a knowledge base needs at least one scene file");
         }
         Builder builder = builder(SceneFile.commonGrid(files));
-        for (SceneFile file : files) {
-            builder.addSequence(file.scenes(), transforms.get());
+        for (int f = 0; f < files.size(); f++) {
+            builder.addSequence(files.get(f).scenes(), transforms.get());
+            if (ends != null) {
+                ends[f] = builder.scenes.size();
+            }
         }
         return builder.build();
     }
@@ -284,6 +296,11 @@ public final class KnowledgeBase {
 
     public Scene scene(int index) {
         return held != null ? held.get(index) : scenes.get(index);
+    }
+
+    /** The cycle of a stored scene, without decoding it. */
+    public int cycle(int index) {
+        return held != null ? held.get(index).cycle() : scenes.cycle(index);
     }
 
     /** Bytes of heap the stored scenes take (not counting what metrics pack from them). */

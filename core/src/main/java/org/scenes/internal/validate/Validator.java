@@ -46,6 +46,30 @@ public final class Validator {
      */
     public static ValidationReport run(Recognizer recognizer, Supplier<ActionSelector> selectors, List<Scene> test,
                                        long seed, Replay replay, boolean parallel, Runnable progress) {
+        return run(recognizer, selectors, test, seed, replay, parallel, progress, null);
+    }
+
+    /**
+     * Which stored scene each query's prediction came from: the nearest neighbour holding the
+     * selected action (else the nearest), by knowledge-base index, and its distance; -1 and NaN
+     * for a query without neighbours.
+     *
+     * @param index per query, filled by the run
+     * @param distance per query, filled by the run
+     */
+    public record Donors(int[] index, double[] distance) {
+        public static Donors of(int queries) {
+            int[] index = new int[queries];
+            double[] distance = new double[queries];
+            Arrays.fill(index, -1);
+            Arrays.fill(distance, Double.NaN);
+            return new Donors(index, distance);
+        }
+    }
+
+    /** The same, also filling {@code donors} (null: not wanted) with each query's donor. */
+    public static ValidationReport run(Recognizer recognizer, Supplier<ActionSelector> selectors, List<Scene> test,
+                                       long seed, Replay replay, boolean parallel, Runnable progress, Donors donors) {
         int n = test.size();
         @SuppressWarnings("unchecked")
         List<Action>[] predicted = new List[n];
@@ -57,8 +81,13 @@ public final class Validator {
             long start = System.nanoTime();
             try {
                 List<Neighbour> nearest = recognizer.nearest(test.get(i));
-                predicted[i] = prediction(selector.get().select(nearest, queryRandom(seed, i)), nearest, test.get(i),
-                        replay, destinations);
+                Action selected = selector.get().select(nearest, queryRandom(seed, i));
+                predicted[i] = prediction(selected, nearest, test.get(i), replay, destinations);
+                Neighbour donor = donors == null ? null : donor(selected, nearest);
+                if (donor != null) {
+                    donors.index()[i] = donor.index();
+                    donors.distance()[i] = donor.distance();
+                }
             } catch (RuntimeException e) {
                 // a plugin's or script's error, located by the query it failed on
                 throw new QueryFailure(i, test.get(i).cycle(), e);
@@ -104,7 +133,8 @@ public final class Validator {
         double[] destination = destinations == null ? null
                 : destinations.target(nearest, query.world(), Targets.intercept(query.world()), steering);
         double power = staminaSafe(meanDashPower(nearest), query.world());
-        List<Action> reached = Targets.reach(actions, donor(actions.get(0), nearest), query, destination, power);
+        Neighbour donor = donor(actions.get(0), nearest);
+        List<Action> reached = Targets.reach(actions, donor == null ? null : donor.scene(), query, destination, power);
         List<Action> chosen = steered(reached, nearest, query, destination, power, steering);
         steering.sent(chosen.isEmpty() ? null : chosen.get(0));
         return chosen;
@@ -187,29 +217,36 @@ public final class Validator {
         if (selected == null) {
             return List.of(); // no usable action: none for the body and the neck alike
         }
-        Scene donor = donor(selected, nearest);
-        Action neck = donor == null ? null : ActionLabel.neckAction(donor.actions());
+        Neighbour donor = donor(selected, nearest);
+        Action neck = donor == null ? null : ActionLabel.neckAction(donor.scene().actions());
         if (neck == null || neck.equals(selected) || selected.type() == ActionType.TURN_NECK) {
             return List.of(selected);
         }
         return List.of(selected, neck);
     }
 
-    /** The nearest neighbour's scene holding {@code selected}, else the nearest's, else null. */
-    private static Scene donor(Action selected, List<Neighbour> nearest) {
+    /** The nearest neighbour holding {@code selected}, else the nearest, else null. */
+    private static Neighbour donor(Action selected, List<Neighbour> nearest) {
         for (Neighbour neighbour : nearest) {
             if (neighbour.scene().actions().contains(selected)) {
-                return neighbour.scene();
+                return neighbour;
             }
         }
-        return nearest.isEmpty() ? null : nearest.get(0).scene();
+        return nearest.isEmpty() ? null : nearest.get(0);
     }
 
     /** A whole run from a configuration: knowledge base from {@code train}, queries from {@code test}. */
     public static ValidationReport run(KnowledgeBase train, List<Scene> test, MatchConfig config,
                                        PluginRegistry registry, boolean parallel, Runnable progress) {
+        return run(train, test, config, registry, parallel, progress, null);
+    }
+
+    /** The same, also filling {@code donors} (null: not wanted) with each query's donor. */
+    public static ValidationReport run(KnowledgeBase train, List<Scene> test, MatchConfig config,
+                                       PluginRegistry registry, boolean parallel, Runnable progress, Donors donors) {
         Recognizer recognizer = config.recognizer(train, registry, config.k());
-        return run(recognizer, config.selectorFactory(registry), test, config.seed(), config.replay(), parallel, progress);
+        return run(recognizer, config.selectorFactory(registry), test, config.seed(), config.replay(), parallel, progress,
+                donors);
     }
 
     /** The generator of query {@code index}: independent of thread and order. */
