@@ -145,7 +145,7 @@ class ValidateCommandTest {
             assertEquals(runs.get(run).get("directionAccuracy").asDouble(), withDirection / 200.0, 1e-12);
             for (int i = 0; i < own.size(); i++) {
                 assertEquals("b.json", own.get(i).get("file"));
-                assertEquals("a.json", own.get(i).get("neighbour_file"), "the one training file");
+                assertEquals(a.toString(), own.get(i).get("neighbour_file"), "the one training file, as given");
                 assertTrue(Integer.parseInt(own.get(i).get("neighbour_cycle")) < 300, own.get(i).toString());
                 assertTrue(Double.parseDouble(own.get(i).get("neighbour_distance")) >= 0, own.get(i).toString());
                 assertEquals(Integer.toString(i), own.get(i).get("cycle"));

@@ -65,7 +65,10 @@ public final class Validation {
     public record Query(String file, int cycle) {
     }
 
-    /** The stored scene a prediction came from: its training file (its name), its cycle and its distance from the query. */
+    /**
+     * The stored scene a prediction came from: its training file as given (the files of several
+     * games share names), its cycle and its distance from the query.
+     */
     public record Source(String file, int cycle, double distance) {
     }
 
@@ -186,7 +189,7 @@ public final class Validation {
             while (file > 0 && fileEnds[file - 1] > stored) {
                 file--;
             }
-            sources.add(new Source(String.valueOf(trainFiles.get(file).getFileName()), knowledge.cycle(stored),
+            sources.add(new Source(String.valueOf(trainFiles.get(file)), knowledge.cycle(stored),
                     donors.distance()[i]));
         }
         return sources;
