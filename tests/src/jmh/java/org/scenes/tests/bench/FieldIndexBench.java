@@ -36,12 +36,17 @@ import org.scenes.api.World;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.scene.SceneFileReader;
+import org.scenes.internal.target.Destinations;
+import org.scenes.internal.target.Replay;
+import org.scenes.internal.target.Steering;
+import org.scenes.internal.validate.Validator;
 import org.scenes.simulator.SyntheticScenes;
 
 /**
  * Latency of one decision of the HELIOS imitators' configuration (examples/configs/helios.json:
  * {@code field} with its defaults, k = 10) over 10^6 stored scenes, sampled per call so JMH
- * reports percentiles (p0.99); the decision is {@link Recognizer#nearest}, neighbours decoded.
+ * reports percentiles (p0.99); the decision is {@link Recognizer#nearest}, neighbours decoded, then
+ * first-valid's choice ({@link #decideAsAgent}: and the target replay the live agent adds).
  *
  * <p>{@code knowledge=helios}: each stored scene is a random real scene of HELIOS base games 1, 3
  * and 4 (directories {@code sc1}, {@code sc3}, {@code sc4} under the {@code scenes.helios}
@@ -79,6 +84,9 @@ public class FieldIndexBench {
 
     private Recognizer recognizer;
     private ActionSelector selector;
+    private Destinations destinations;
+    /** one player's memory of its previous turns, as the live agent keeps it from decision to decision */
+    private final Steering steering = new Steering();
     private List<Scene> queries;
     private final SplittableRandom random = new SplittableRandom(1);
     private int next;
@@ -108,6 +116,7 @@ public class FieldIndexBench {
                 search.equals("scan") ? Map.of("index", "false") : Map.of());
         recognizer = new Recognizer(stored, () -> registry.metric("field", config), k);
         selector = registry.selector("first-valid", PluginConfig.DEFAULT);
+        destinations = Destinations.of(stored);
         System.out.printf("%n%,d %s scenes stored, index built, in %.1f s%n", stored.size(), knowledge,
                 (System.nanoTime() - start) / 1e9);
     }
@@ -174,6 +183,24 @@ public class FieldIndexBench {
     public Action decide() {
         next = (next + 1) % QUERIES;
         return selector.select(recognizer.nearest(queries.get(next)), random);
+    }
+
+    /**
+     * A decision as the live agent takes it with examples/configs/helios.json (ImitationBrain's
+     * decide): the search, first-valid's choice, then the target replay of {@link
+     * Validator#prediction}, which reads every neighbour's actions and one donor's world; its CPU
+     * time is taken as {@link #decideCpuTime}'s. The jittered knowledge base stores scenes in
+     * random order, so few have a known destination; the replay's other work is the agent's.
+     */
+    @Benchmark
+    public List<Action> decideAsAgent() {
+        return cpuTimes.time(() -> {
+            next = (next + 1) % QUERIES;
+            Scene query = queries.get(next);
+            List<Neighbour> nearest = recognizer.nearest(query);
+            Action selected = nearest.isEmpty() ? null : selector.select(nearest, random);
+            return Validator.prediction(selected, nearest, query, Replay.TARGET, destinations, steering);
+        });
     }
 
     @Setup(Level.Iteration)
