@@ -82,12 +82,21 @@ public class FieldIndexBench {
     @Param({"index"})
     public String search;
 
+    /**
+     * {@code spread}: 1,024 queries spread evenly over game 5, each far from the one before.
+     * {@code played}: every scene of game 5's {@code HELIOS_A_*} files in order, one player's game
+     * after another, as a live player asks them cycle after cycle (consecutive queries share
+     * neighbours); HELIOS knowledge only.
+     */
+    @Param({"spread"})
+    public String queries;
+
     private Recognizer recognizer;
     private ActionSelector selector;
     private Destinations destinations;
     /** one player's memory of its previous turns, as the live agent keeps it from decision to decision */
     private final Steering steering = new Steering();
-    private List<Scene> queries;
+    private List<Scene> asked;
     private final SplittableRandom random = new SplittableRandom(1);
     private int next;
     private final CpuTimes cpuTimes = new CpuTimes();
@@ -99,17 +108,14 @@ public class FieldIndexBench {
         if (knowledge.equals("helios")) {
             Path root = Path.of(System.getProperty("scenes.helios", "/work/tmp/hel"));
             List<Scene> test = read(root.resolve(QUERY_GAME), "HELIOS_A_");
-            queries = new ArrayList<>(QUERIES);
-            for (int i = 0; i < QUERIES; i++) {
-                queries.add(test.get((int) ((long) i * test.size() / QUERIES)));
-            }
+            asked = queries.equals("played") ? test : spread(test);
             stored = jitteredKnowledge(root);
         } else {
             KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
             SyntheticScenes.generate(BenchSets.KNOWLEDGE_SEED, scenes, Grid.DEFAULT, builder::add);
             stored = builder.build();
-            queries = new ArrayList<>(QUERIES);
-            SyntheticScenes.generate(BenchSets.QUERY_SEED, QUERIES, Grid.DEFAULT, queries::add);
+            asked = new ArrayList<>(QUERIES);
+            SyntheticScenes.generate(BenchSets.QUERY_SEED, QUERIES, Grid.DEFAULT, asked::add);
         }
         PluginRegistry registry = PluginRegistry.load();
         PluginConfig config = PluginConfig.DEFAULT.withOptions(
@@ -119,6 +125,15 @@ public class FieldIndexBench {
         destinations = Destinations.of(stored);
         System.out.printf("%n%,d %s scenes stored, index built, in %.1f s%n", stored.size(), knowledge,
                 (System.nanoTime() - start) / 1e9);
+    }
+
+    /** {@link #QUERIES} of the scenes, evenly spaced. */
+    private static List<Scene> spread(List<Scene> scenes) {
+        List<Scene> spread = new ArrayList<>(QUERIES);
+        for (int i = 0; i < QUERIES; i++) {
+            spread.add(scenes.get((int) ((long) i * scenes.size() / QUERIES)));
+        }
+        return spread;
     }
 
     /** The stored scenes; the real ones they are drawn from are garbage once this returns. */
@@ -174,15 +189,15 @@ public class FieldIndexBench {
     /** The neighbour search alone. */
     @Benchmark
     public List<Neighbour> nearest() {
-        next = (next + 1) % QUERIES;
-        return recognizer.nearest(queries.get(next));
+        next = (next + 1) % asked.size();
+        return recognizer.nearest(asked.get(next));
     }
 
     /** A decision as the configuration takes it: the search, then first-valid's choice. */
     @Benchmark
     public Action decide() {
-        next = (next + 1) % QUERIES;
-        return selector.select(recognizer.nearest(queries.get(next)), random);
+        next = (next + 1) % asked.size();
+        return selector.select(recognizer.nearest(asked.get(next)), random);
     }
 
     /**
@@ -195,8 +210,8 @@ public class FieldIndexBench {
     @Benchmark
     public List<Action> decideAsAgent() {
         return cpuTimes.time(() -> {
-            next = (next + 1) % QUERIES;
-            Scene query = queries.get(next);
+            next = (next + 1) % asked.size();
+            Scene query = asked.get(next);
             List<Neighbour> nearest = recognizer.nearest(query);
             Action selected = nearest.isEmpty() ? null : selector.select(nearest, random);
             return Validator.prediction(selected, nearest, query, Replay.TARGET, destinations, steering);
