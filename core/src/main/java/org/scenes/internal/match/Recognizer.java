@@ -44,6 +44,19 @@ public final class Recognizer {
 
     /** decoded scenes for metrics with neither fast path, which compare whole scenes, and for small knowledge bases */
     private final List<Scene> decoded;
+    /**
+     * Slots of a direct-mapped cache of recently decoded neighbours (a power of two), for knowledge
+     * bases too large to keep decoded: a player's consecutive decisions share many neighbours (its
+     * view changes little from one cycle to the next), and decoding a HELIOS scene from the compact
+     * store costs some 3 us, most of a k = 10 decision's. A few megabytes at most, whatever the size.
+     */
+    static final int RECENT_SLOTS = 2048;
+    /**
+     * The cache, null when {@link #decoded} holds every scene. Shared by the threads without locks:
+     * an entry is immutable with final fields, so it is safely published; two threads writing a slot
+     * at once only cost a later decode again.
+     */
+    private final DecodedScene[] recent;
     /** The knowledge base split by see age, or null when all its scenes have one age. */
     private final NavigableMap<Integer, AgePartition> byAge;
     /** The second orientation queries are matched in (see {@link SceneTransform#queryImage}), or null. */
@@ -80,6 +93,7 @@ public final class Recognizer {
             packed = null;
             encoded = null;
             decoded = null;
+            recent = null;
             return;
         }
         SceneMetric first = metricFactory.get();
@@ -94,6 +108,26 @@ public final class Recognizer {
         }
         decoded = packed == null && encoded == null || knowledge.size() <= KEEP_DECODED
                 ? List.copyOf(knowledge.scenes()) : null;
+        recent = decoded == null ? new DecodedScene[RECENT_SLOTS] : null;
+    }
+
+    /** A stored scene decoded, with its index in the knowledge base. */
+    private record DecodedScene(int index, Scene scene) {
+    }
+
+    /** The stored scene {@code index}: kept decoded, recently decoded, or decoded now and remembered. */
+    private Scene scene(int index) {
+        if (decoded != null) {
+            return decoded.get(index);
+        }
+        int slot = index & (RECENT_SLOTS - 1);
+        DecodedScene entry = recent[slot];
+        if (entry != null && entry.index() == index) {
+            return entry.scene();
+        }
+        Scene scene = knowledge.scene(index);
+        recent[slot] = new DecodedScene(index, scene);
+        return scene;
     }
 
     /** The scenes of one see age, searched on their own, and where they are in the whole knowledge base. */
@@ -193,8 +227,7 @@ public final class Recognizer {
             }
         }
         // placeholders hold the bound's slots until scenes below it arrive: they are no neighbours
-        List<Neighbour> result = top.neighbours(i -> i == PLACEHOLDER ? null
-                : decoded != null ? decoded.get(i) : knowledge.scene(i));
+        List<Neighbour> result = top.neighbours(i -> i == PLACEHOLDER ? null : scene(i));
         result.removeIf(found -> found.index() == PLACEHOLDER);
         return result;
     }

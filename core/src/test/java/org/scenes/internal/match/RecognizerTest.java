@@ -1,6 +1,7 @@
 package org.scenes.internal.match;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.util.ArrayList;
@@ -53,6 +54,24 @@ class RecognizerTest {
                         .thenComparing(i -> i));
                 List<Integer> got = recognizer.nearest(query).stream().map(Neighbour::index).toList();
                 assertEquals(expected.subList(0, Math.min(k, knowledge.size())), got, "k=" + k);
+            }
+        }
+    }
+
+    @Test
+    void aKnowledgeBaseTooLargeToKeepDecodedGivesTheStoredScenesAndReusesRecentDecodes() {
+        List<Scene> scenes = TestScenes.random(12, Recognizer.KEEP_DECODED + 1 + 40);
+        KnowledgeBase knowledge = KnowledgeBase.of(Grid.DEFAULT, scenes.subList(0, Recognizer.KEEP_DECODED + 1));
+        ObjectSetMetric metric = new ObjectSetMetric(ObjectSetMetric.settings(PluginConfig.DEFAULT,
+                ObjectSetMetric.Space.CARTESIAN, 0));
+        Recognizer recognizer = new Recognizer(knowledge, () -> metric, 5);
+        for (Scene query : scenes.subList(Recognizer.KEEP_DECODED + 1, scenes.size())) {
+            List<Neighbour> first = recognizer.nearest(query);
+            List<Neighbour> again = recognizer.nearest(query);
+            assertEquals(first.stream().map(Neighbour::index).toList(), again.stream().map(Neighbour::index).toList());
+            for (int i = 0; i < first.size(); i++) {
+                assertEquals(knowledge.scene(first.get(i).index()), first.get(i).scene());
+                assertSame(first.get(i).scene(), again.get(i).scene(), "decoded once, then found in the cache");
             }
         }
     }

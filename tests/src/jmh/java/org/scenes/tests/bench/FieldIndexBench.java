@@ -36,12 +36,17 @@ import org.scenes.api.World;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.scene.SceneFileReader;
+import org.scenes.internal.target.Destinations;
+import org.scenes.internal.target.Replay;
+import org.scenes.internal.target.Steering;
+import org.scenes.internal.validate.Validator;
 import org.scenes.simulator.SyntheticScenes;
 
 /**
  * Latency of one decision of the HELIOS imitators' configuration (examples/configs/helios.json:
  * {@code field} with its defaults, k = 10) over 10^6 stored scenes, sampled per call so JMH
- * reports percentiles (p0.99); the decision is {@link Recognizer#nearest}, neighbours decoded.
+ * reports percentiles (p0.99); the decision is {@link Recognizer#nearest}, neighbours decoded, then
+ * first-valid's choice ({@link #decideAsAgent}: and the target replay the live agent adds).
  *
  * <p>{@code knowledge=helios}: each stored scene is a random real scene of HELIOS base games 1, 3
  * and 4 (directories {@code sc1}, {@code sc3}, {@code sc4} under the {@code scenes.helios}
@@ -77,9 +82,21 @@ public class FieldIndexBench {
     @Param({"index"})
     public String search;
 
+    /**
+     * {@code spread}: 1,024 queries spread evenly over game 5, each far from the one before.
+     * {@code played}: every scene of game 5's {@code HELIOS_A_*} files in order, one player's game
+     * after another, as a live player asks them cycle after cycle (consecutive queries share
+     * neighbours); HELIOS knowledge only.
+     */
+    @Param({"spread"})
+    public String queries;
+
     private Recognizer recognizer;
     private ActionSelector selector;
-    private List<Scene> queries;
+    private Destinations destinations;
+    /** one player's memory of its previous turns, as the live agent keeps it from decision to decision */
+    private final Steering steering = new Steering();
+    private List<Scene> asked;
     private final SplittableRandom random = new SplittableRandom(1);
     private int next;
     private final CpuTimes cpuTimes = new CpuTimes();
@@ -91,25 +108,32 @@ public class FieldIndexBench {
         if (knowledge.equals("helios")) {
             Path root = Path.of(System.getProperty("scenes.helios", "/work/tmp/hel"));
             List<Scene> test = read(root.resolve(QUERY_GAME), "HELIOS_A_");
-            queries = new ArrayList<>(QUERIES);
-            for (int i = 0; i < QUERIES; i++) {
-                queries.add(test.get((int) ((long) i * test.size() / QUERIES)));
-            }
+            asked = queries.equals("played") ? test : spread(test);
             stored = jitteredKnowledge(root);
         } else {
             KnowledgeBase.Builder builder = KnowledgeBase.builder(Grid.DEFAULT);
             SyntheticScenes.generate(BenchSets.KNOWLEDGE_SEED, scenes, Grid.DEFAULT, builder::add);
             stored = builder.build();
-            queries = new ArrayList<>(QUERIES);
-            SyntheticScenes.generate(BenchSets.QUERY_SEED, QUERIES, Grid.DEFAULT, queries::add);
+            asked = new ArrayList<>(QUERIES);
+            SyntheticScenes.generate(BenchSets.QUERY_SEED, QUERIES, Grid.DEFAULT, asked::add);
         }
         PluginRegistry registry = PluginRegistry.load();
         PluginConfig config = PluginConfig.DEFAULT.withOptions(
                 search.equals("scan") ? Map.of("index", "false") : Map.of());
         recognizer = new Recognizer(stored, () -> registry.metric("field", config), k);
         selector = registry.selector("first-valid", PluginConfig.DEFAULT);
+        destinations = Destinations.of(stored);
         System.out.printf("%n%,d %s scenes stored, index built, in %.1f s%n", stored.size(), knowledge,
                 (System.nanoTime() - start) / 1e9);
+    }
+
+    /** {@link #QUERIES} of the scenes, evenly spaced. */
+    private static List<Scene> spread(List<Scene> scenes) {
+        List<Scene> spread = new ArrayList<>(QUERIES);
+        for (int i = 0; i < QUERIES; i++) {
+            spread.add(scenes.get((int) ((long) i * scenes.size() / QUERIES)));
+        }
+        return spread;
     }
 
     /** The stored scenes; the real ones they are drawn from are garbage once this returns. */
@@ -165,15 +189,33 @@ public class FieldIndexBench {
     /** The neighbour search alone. */
     @Benchmark
     public List<Neighbour> nearest() {
-        next = (next + 1) % QUERIES;
-        return recognizer.nearest(queries.get(next));
+        next = (next + 1) % asked.size();
+        return recognizer.nearest(asked.get(next));
     }
 
     /** A decision as the configuration takes it: the search, then first-valid's choice. */
     @Benchmark
     public Action decide() {
-        next = (next + 1) % QUERIES;
-        return selector.select(recognizer.nearest(queries.get(next)), random);
+        next = (next + 1) % asked.size();
+        return selector.select(recognizer.nearest(asked.get(next)), random);
+    }
+
+    /**
+     * A decision as the live agent takes it with examples/configs/helios.json (ImitationBrain's
+     * decide): the search, first-valid's choice, then the target replay of {@link
+     * Validator#prediction}, which reads every neighbour's actions and one donor's world; its CPU
+     * time is taken as {@link #decideCpuTime}'s. The jittered knowledge base stores scenes in
+     * random order, so few have a known destination; the replay's other work is the agent's.
+     */
+    @Benchmark
+    public List<Action> decideAsAgent() {
+        return cpuTimes.time(() -> {
+            next = (next + 1) % asked.size();
+            Scene query = asked.get(next);
+            List<Neighbour> nearest = recognizer.nearest(query);
+            Action selected = nearest.isEmpty() ? null : selector.select(nearest, random);
+            return Validator.prediction(selected, nearest, query, Replay.TARGET, destinations, steering);
+        });
     }
 
     @Setup(Level.Iteration)
