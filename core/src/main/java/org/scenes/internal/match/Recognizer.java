@@ -48,9 +48,12 @@ public final class Recognizer {
      * Slots of a direct-mapped cache of recently decoded neighbours (a power of two), for knowledge
      * bases too large to keep decoded: a player's consecutive decisions share many neighbours (its
      * view changes little from one cycle to the next), and decoding a HELIOS scene from the compact
-     * store costs some 3 us, most of a k = 10 decision's. A few megabytes at most, whatever the size.
+     * store costs some 3 us, most of a k = 10 decision's. A decoded HELIOS base scene takes about
+     * 6 kB, so 3 MB per recognizer at most, whatever the knowledge base's size: 512 slots took the
+     * p50 of a k = 10 decision in play order from 30.5 to 27.2 us (FieldIndexBench.decideAsAgent,
+     * queries=played), as 2,048 did (26.4 us) at a quarter of the memory.
      */
-    static final int RECENT_SLOTS = 2048;
+    static final int RECENT_SLOTS = 512;
     /**
      * The cache, null when {@link #decoded} holds every scene. Shared by the threads without locks:
      * an entry is immutable with final fields, so it is safely published; two threads writing a slot

@@ -71,7 +71,11 @@ class RecognizerTest {
             assertEquals(first.stream().map(Neighbour::index).toList(), again.stream().map(Neighbour::index).toList());
             for (int i = 0; i < first.size(); i++) {
                 assertEquals(knowledge.scene(first.get(i).index()), first.get(i).scene());
-                assertSame(first.get(i).scene(), again.get(i).scene(), "decoded once, then found in the cache");
+                int slot = first.get(i).index() & (Recognizer.RECENT_SLOTS - 1);
+                boolean shared = first.stream().filter(n -> (n.index() & (Recognizer.RECENT_SLOTS - 1)) == slot).count() > 1;
+                if (!shared) { // two neighbours of one slot evict each other
+                    assertSame(first.get(i).scene(), again.get(i).scene(), "decoded once, then found in the cache");
+                }
             }
         }
     }
