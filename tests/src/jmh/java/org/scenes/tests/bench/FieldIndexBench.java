@@ -44,7 +44,7 @@ import org.scenes.simulator.SyntheticScenes;
 
 /**
  * Latency of one decision of the HELIOS imitators' configuration (examples/configs/helios.json:
- * {@code field} with its defaults, k = 10) over 10^6 stored scenes, sampled per call so JMH
+ * {@code field} with its defaults, k = 1 since 2026-12-07, k = 10 before) over 10^6 stored scenes, sampled per call so JMH
  * reports percentiles (p0.99); the decision is {@link Recognizer#nearest}, neighbours decoded, then
  * first-valid's choice ({@link #decideAsAgent}: and the target replay the live agent adds).
  *
