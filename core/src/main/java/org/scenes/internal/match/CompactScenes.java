@@ -121,29 +121,26 @@ final class CompactScenes extends AbstractList<Scene> implements RandomAccess {
 
     @Override
     public Scene get(int index) {
-        if (index < 0 || index >= size) {
-            throw new IndexOutOfBoundsException("scene " + index + " of " + size);
-        }
-        int start = starts[index];
-        return new Reader(chunks.get(start >>> CHUNK_BITS), start & CHUNK - 1).scene();
+        return reader(index).scene();
     }
 
     /** The cycle of a scene, read without decoding the rest of it. */
     int cycle(int index) {
-        if (index < 0 || index >= size) {
-            throw new IndexOutOfBoundsException("scene " + index + " of " + size);
-        }
-        int start = starts[index];
-        return new Reader(chunks.get(start >>> CHUNK_BITS), start & CHUNK - 1).cycle();
+        return reader(index).cycle();
     }
 
     /** The see age of a scene, read without decoding the rest of it. */
     int seeAge(int index) {
+        return reader(index).seeAge();
+    }
+
+    /** A reader at the start of scene {@code index}. */
+    private Reader reader(int index) {
         if (index < 0 || index >= size) {
             throw new IndexOutOfBoundsException("scene " + index + " of " + size);
         }
         int start = starts[index];
-        return new Reader(chunks.get(start >>> CHUNK_BITS), start & CHUNK - 1).seeAge();
+        return new Reader(chunks.get(start >>> CHUNK_BITS), start & CHUNK - 1);
     }
 
     @Override
