@@ -184,10 +184,9 @@ public final class Validation {
                 continue;
             }
             // the first file whose stored scenes end after the donor holds it
-            int file = Arrays.binarySearch(fileEnds, stored + 1);
-            file = file >= 0 ? file : -file - 1;
-            while (file > 0 && fileEnds[file - 1] > stored) {
-                file--;
+            int file = 0;
+            while (fileEnds[file] <= stored) {
+                file++;
             }
             sources.add(new Source(String.valueOf(trainFiles.get(file)), knowledge.cycle(stored),
                     donors.distance()[i]));
