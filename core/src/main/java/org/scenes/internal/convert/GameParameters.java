@@ -21,16 +21,12 @@ final class GameParameters {
     void read(String line) {
         Parameters params = announced.read(line);
         if (params != null && params.head().equals("server_param")) {
-            visibleAngle = number(params, "visible_angle", visibleAngle);
-            sendStep = number(params, "send_step", sendStep);
-            simulatorStep = number(params, "simulator_step", simulatorStep);
-            visibleDistance = number(params, "visible_distance", visibleDistance);
+            // kept as fields: period() is asked at every see of every player
+            visibleAngle = announced.server("visible_angle", visibleAngle);
+            sendStep = announced.server("send_step", sendStep);
+            simulatorStep = announced.server("simulator_step", simulatorStep);
+            visibleDistance = announced.server("visible_distance", visibleDistance);
         }
-    }
-
-    private static double number(Parameters params, String name, double fallback) {
-        double value = params.number(name);
-        return Double.isNaN(value) ? fallback : value;
     }
 
     /** The vision of a player of this heterogeneous type; clients before version 18 see with the defaults. */
