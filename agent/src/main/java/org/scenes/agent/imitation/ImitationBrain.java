@@ -9,6 +9,7 @@ import java.util.Random;
 import java.util.function.Consumer;
 import java.util.function.Predicate;
 import java.util.function.Supplier;
+import java.util.random.RandomGenerator;
 import org.scenes.api.Action;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.ActionType;
@@ -64,6 +65,11 @@ import org.scenes.simulator.BrainFactory;
  * {@link Guards#stuckSees()} sees in a row, the nearest neighbour with another action is taken.
  * Each firing is counted ({@link #counters()}).
  *
+ * <p>Under target replay a choice that sends no body command (a stored scene where the teacher
+ * only turned its neck, or a kick-off placement matched in play) gives way to the nearest of the
+ * {@link #LOOK_FURTHER} neighbours that sends one ({@link #lookFurther}): at k 1, a player that
+ * stood still saw the same again and stood there for the rest of the game.
+ *
  * <p>A knowledge base of a player that acted every cycle (scenes of several see ages, e.g. a
  * librcsc team on synchronous vision) is played per cycle in synchronous mode: at each
  * {@code (think)} the latest view, with its age, is matched, and the chosen scene's body action
@@ -72,6 +78,13 @@ import org.scenes.simulator.BrainFactory;
 public final class ImitationBrain implements Brain {
     /** Scenes replayed through the transforms before each query; enough for one-step memory and more. */
     static final int HISTORY = 8;
+    /**
+     * How many neighbours a player under target replay looks through when its k nearest hold no
+     * body command (k 1 and a stored scene where the teacher only turned its neck, or a kick-off
+     * placement matched in play): standing still is no target to reach, and a player that stands
+     * still sees the same again, so it would stand there for good.
+     */
+    static final int LOOK_FURTHER = 10;
 
     private final String team;
     private final ImitationTeam roles;
@@ -119,6 +132,8 @@ public final class ImitationBrain implements Brain {
     private int stepsSinceSee;
     private long decisions;
     private long silent;
+    /** decisions whose k nearest held no body command, taken from the {@link #LOOK_FURTHER} nearest instead */
+    private long lookedFurther;
     private long kickGuarded;
     private long stuckGuarded;
     private Action lastAction;
@@ -328,6 +343,14 @@ public final class ImitationBrain implements Brain {
                 movedInMode = playModes;
             }
         }
+        if (replay == Replay.TARGET) {
+            Choice choice = lookFurther(new Choice(nearest, action), recognizer, query, selector, random);
+            if (choice.action() != action) {
+                lookedFurther++;
+            }
+            nearest = choice.nearest();
+            action = choice.action();
+        }
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
@@ -416,6 +439,32 @@ public final class ImitationBrain implements Brain {
         return null;
     }
 
+    /** The neighbours a decision works from and the action chosen among them (null: none). */
+    public record Choice(List<Neighbour> nearest, Action action) {
+    }
+
+    /**
+     * Under target replay, {@code choice} unless it sends no body command a player in play carries
+     * out (none, only the neck, or a move: a move belongs to the counterpart's placements, which
+     * the brain handles apart, and the server ignores one in play), while the recognizer's k is
+     * below {@link #LOOK_FURTHER}: then the selector's choice among the {@link #LOOK_FURTHER}
+     * nearest neighbours that send such a command, if any.
+     */
+    public static Choice lookFurther(Choice choice, Recognizer recognizer, Scene query, ActionSelector selector,
+                                     RandomGenerator random) {
+        if (moves(choice.action()) || recognizer.k() >= LOOK_FURTHER) {
+            return choice;
+        }
+        List<Neighbour> further = recognizer.nearest(query, LOOK_FURTHER).stream()
+                .filter(neighbour -> moves(neighbour.scene().primaryAction())).toList();
+        Action instead = further.isEmpty() ? null : selector.select(further, random);
+        return instead == null ? choice : new Choice(further, instead);
+    }
+
+    private static boolean moves(Action action) {
+        return action != null && action.type().worldChanging() && action.type() != ActionType.MOVE;
+    }
+
     private static boolean ballWithin(List<SeenObject> seen, double reach) {
         for (SeenObject object : seen) {
             if (object.kind() == ObjectKind.BALL && object.distance() <= reach) {
@@ -454,6 +503,7 @@ public final class ImitationBrain implements Brain {
         Map<String, Long> counters = new LinkedHashMap<>();
         counters.put("decisions", decisions);
         counters.put("silent", silent);
+        counters.put("looked_further", lookedFurther);
         if (guards.enabled()) {
             counters.put("guard.kick_out_of_reach", kickGuarded);
             counters.put("guard.stuck", stuckGuarded);

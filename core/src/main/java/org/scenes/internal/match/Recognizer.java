@@ -180,14 +180,25 @@ public final class Recognizer {
      * returned as images, with their stored index); on equal distance the query's own come first.
      */
     public List<Neighbour> nearest(Scene query) {
-        List<Neighbour> direct = nearestAsIs(query, Double.POSITIVE_INFINITY);
+        return nearest(query, k);
+    }
+
+    /**
+     * The same for {@code count} neighbours instead of k: a player whose k nearest hold nothing it
+     * can carry out looks further.
+     */
+    public List<Neighbour> nearest(Scene query, int count) {
+        if (count < 1) {
+            throw new IllegalArgumentException("count must be at least 1, not " + count);
+        }
+        List<Neighbour> direct = nearestAsIs(query, Double.POSITIVE_INFINITY, count);
         if (queryImage == null) {
             return direct;
         }
         // only image neighbours nearer than the query's own k-th can enter, so the second search starts bounded by it
-        double bound = direct.size() == Math.min(k, knowledge.size()) ? direct.get(direct.size() - 1).distance()
+        double bound = direct.size() == Math.min(count, knowledge.size()) ? direct.get(direct.size() - 1).distance()
                 : Double.POSITIVE_INFINITY;
-        List<Neighbour> mirrored = nearestAsIs(queryImage.apply(query), bound);
+        List<Neighbour> mirrored = nearestAsIs(queryImage.apply(query), bound, count);
         List<Neighbour> merged = new ArrayList<>(direct.size());
         int d = 0;
         int m = 0;
@@ -203,12 +214,12 @@ public final class Recognizer {
         return merged;
     }
 
-    /** The k nearest of the query as it is; with a finite {@code bound}, only those below or at it. */
-    private List<Neighbour> nearestAsIs(Scene query, double bound) {
+    /** The {@code count} nearest of the query as it is; with a finite {@code bound}, only those below or at it. */
+    private List<Neighbour> nearestAsIs(Scene query, double bound, int count) {
         if (byAge != null) {
-            return nearestOfAge(query, bound);
+            return nearestOfAge(query, bound, count);
         }
-        TopK top = new TopK(Math.min(k, knowledge.size()));
+        TopK top = new TopK(Math.min(count, knowledge.size()));
         if (bound < Double.POSITIVE_INFINITY) { // false for NaN
             for (int i = 0; i < top.capacity(); i++) {
                 top.offer(bound, PLACEHOLDER); // any scene at the bound has a lower index and still enters
@@ -250,13 +261,13 @@ public final class Recognizer {
     }
 
     /** Searches the partition of the query's see age, or of the nearest age stored (the lower on a tie). */
-    private List<Neighbour> nearestOfAge(Scene query, double bound) {
+    private List<Neighbour> nearestOfAge(Scene query, double bound, int count) {
         int age = query.seeAge();
         Integer below = byAge.floorKey(age);
         Integer above = byAge.ceilingKey(age);
         int chosen = below == null ? above : above == null || age - below <= above - age ? below : above;
         AgePartition partition = byAge.get(chosen);
-        List<Neighbour> found = partition.recognizer().nearestAsIs(query, bound);
+        List<Neighbour> found = partition.recognizer().nearestAsIs(query, bound, count);
         List<Neighbour> result = new ArrayList<>(found.size());
         for (Neighbour neighbour : found) {
             result.add(new Neighbour(neighbour.scene(), partition.indices()[neighbour.index()], neighbour.distance()));

@@ -38,6 +38,17 @@ class RecognizerTest {
     }
 
     @Test
+    void looksFurtherThanKWhenAskedWithoutChangingK() {
+        KnowledgeBase knowledge = knowledge(9, 5, 7, 3, 5, 3, 20);
+        Recognizer recognizer = new Recognizer(knowledge, () -> BALL_DISTANCE, 1);
+        Scene query = TestScenes.scene(0, null, TestScenes.ball(4, 0));
+        assertEquals(List.of(1, 3, 4, 5, 2), recognizer.nearest(query, 5).stream().map(Neighbour::index).toList());
+        assertEquals(List.of(1), recognizer.nearest(query).stream().map(Neighbour::index).toList());
+        assertEquals(7, recognizer.nearest(query, 50).size(), "no more than it holds");
+        assertThrows(IllegalArgumentException.class, () -> recognizer.nearest(query, 0));
+    }
+
+    @Test
     void agreesWithASortOfAllDistancesForEveryK() {
         List<Scene> scenes = TestScenes.random(11, 300);
         KnowledgeBase knowledge = KnowledgeBase.of(Grid.DEFAULT, scenes.subList(0, 250));

@@ -6,6 +6,7 @@ import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -25,6 +26,7 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
+import org.scenes.agent.imitation.ImitationBrain;
 import org.scenes.api.Action;
 import org.scenes.api.ActionSelector;
 import org.scenes.api.Grid;
@@ -91,6 +93,10 @@ public class FieldIndexBench {
     @Param({"spread"})
     public String queries;
 
+    /** {@code field}'s options, as KEY=VALUE pairs separated by commas; empty for its defaults. */
+    @Param({""})
+    public String options;
+
     private Recognizer recognizer;
     private ActionSelector selector;
     private Destinations destinations;
@@ -118,8 +124,17 @@ public class FieldIndexBench {
             SyntheticScenes.generate(BenchSets.QUERY_SEED, QUERIES, Grid.DEFAULT, asked::add);
         }
         PluginRegistry registry = PluginRegistry.load();
-        PluginConfig config = PluginConfig.DEFAULT.withOptions(
-                search.equals("scan") ? Map.of("index", "false") : Map.of());
+        Map<String, String> fieldOptions = new HashMap<>();
+        for (String pair : options.split(",")) {
+            if (!pair.isBlank()) {
+                String[] keyValue = pair.split("=", 2);
+                fieldOptions.put(keyValue[0].trim(), keyValue[1].trim());
+            }
+        }
+        if (search.equals("scan")) {
+            fieldOptions.put("index", "false");
+        }
+        PluginConfig config = PluginConfig.DEFAULT.withOptions(fieldOptions);
         recognizer = new Recognizer(stored, () -> registry.metric("field", config), k);
         selector = registry.selector("first-valid", PluginConfig.DEFAULT);
         destinations = Destinations.of(stored);
@@ -213,8 +228,10 @@ public class FieldIndexBench {
             next = (next + 1) % asked.size();
             Scene query = asked.get(next);
             List<Neighbour> nearest = recognizer.nearest(query);
-            Action selected = nearest.isEmpty() ? null : selector.select(nearest, random);
-            return Validator.prediction(selected, nearest, query, Replay.TARGET, destinations, steering);
+            ImitationBrain.Choice choice = ImitationBrain.lookFurther(new ImitationBrain.Choice(nearest,
+                    nearest.isEmpty() ? null : selector.select(nearest, random)), recognizer, query, selector, random);
+            return Validator.prediction(choice.action(), choice.nearest(), query, Replay.TARGET, destinations,
+                    steering);
         });
     }
 
