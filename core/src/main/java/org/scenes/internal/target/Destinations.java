@@ -54,9 +54,7 @@ public final class Destinations {
     /** How far inside the field lines a run ends at the latest, metres (a run stops within a metre of its end). */
     static final double LINE_INSET = 1;
 
-    /** Width of the distance bins of {@link #chaseRate}, metres. */
-    static final double CHASE_BIN = 1;
-    /** Bins of {@link #chaseRate}; the last holds every farther distance. */
+    /** Bins of {@link #chaseRate}, one per cycle the player needs to reach its ball; the last holds every later one. */
     static final int CHASE_BINS = 40;
     /** Scenes a bin needs before its rate is trusted over the neighbours' share. */
     static final int CHASE_SAMPLES = 30;
@@ -73,8 +71,8 @@ public final class Destinations {
     private final boolean[] toBall;
     /**
      * How often the recorded players reached the ball within {@link #CHASE} cycles, by their
-     * distance to it ({@link #CHASE_BIN} bins) and whether they were their team's nearest to it
-     * (index 1): NaN for a bin of fewer than {@link #CHASE_SAMPLES} scenes.
+     * standing in the race to it ({@link BallRace.Standing}'s ordinal) and the cycles they needed
+     * to reach it: NaN for a bin of fewer than {@link #CHASE_SAMPLES} scenes.
      */
     private final double[][] chaseRate;
 
@@ -118,7 +116,7 @@ public final class Destinations {
         double[] atY = new double[n];
         double[] ballX = new double[n];
         double[] ballY = new double[n];
-        boolean[] nearest = new boolean[n];
+        BallRace[] race = new BallRace[n];
         int i = 0;
         for (Scene scene : scenes) {
             World world = scene.world();
@@ -130,7 +128,7 @@ public final class Destinations {
             atY[i] = world == null ? Double.NaN : world.y();
             ballX[i] = world == null ? Double.NaN : world.ballX();
             ballY[i] = world == null ? Double.NaN : world.ballY();
-            nearest[i] = world != null && world.nearestOfItsTeamToBall();
+            race[i] = BallRace.of(world);
             i++;
         }
         double[] x = new double[n];
@@ -162,30 +160,24 @@ public final class Destinations {
             }
             toBall[i] = placed && reachedBall;
         }
-        return new Destinations(atX, atY, x, y, ballX, ballY, toBall, chaseRates(x, atX, atY, ballX, ballY, nearest,
-                toBall));
+        return new Destinations(atX, atY, x, y, ballX, ballY, toBall, chaseRates(x, race, toBall));
     }
 
-    private static int chaseBin(double distance) {
-        return (int) Math.min(CHASE_BINS - 1, Math.floor(distance / CHASE_BIN));
-    }
-
-    private static double[][] chaseRates(double[] x, double[] atX, double[] atY, double[] ballX, double[] ballY,
-                                         boolean[] nearest, boolean[] toBall) {
-        int[][] runs = new int[2][CHASE_BINS];
-        int[][] all = new int[2][CHASE_BINS];
+    private static double[][] chaseRates(double[] x, BallRace[] race, boolean[] toBall) {
+        int standings = BallRace.Standing.values().length;
+        int[][] runs = new int[standings][CHASE_BINS];
+        int[][] all = new int[standings][CHASE_BINS];
         for (int i = 0; i < x.length; i++) {
-            double distance = Math.hypot(ballX[i] - atX[i], ballY[i] - atY[i]);
-            if (Double.isNaN(x[i]) || Double.isNaN(distance)) {
+            if (Double.isNaN(x[i]) || race[i] == null) {
                 continue;
             }
-            int flag = nearest[i] ? 1 : 0;
-            int bin = chaseBin(distance);
-            all[flag][bin]++;
-            runs[flag][bin] += toBall[i] ? 1 : 0;
+            int standing = race[i].standing().ordinal();
+            int bin = Math.min(CHASE_BINS - 1, race[i].cycles());
+            all[standing][bin]++;
+            runs[standing][bin] += toBall[i] ? 1 : 0;
         }
-        double[][] rates = new double[2][CHASE_BINS];
-        for (int flag = 0; flag < 2; flag++) {
+        double[][] rates = new double[standings][CHASE_BINS];
+        for (int flag = 0; flag < standings; flag++) {
             for (int bin = 0; bin < CHASE_BINS; bin++) {
                 rates[flag][bin] = all[flag][bin] < CHASE_SAMPLES ? Double.NaN : runs[flag][bin] / (double) all[flag][bin];
             }
@@ -194,18 +186,19 @@ public final class Destinations {
     }
 
     /**
-     * How often the recorded players at this distance from their ball, their team's nearest to it
-     * or not, reached it within {@link #CHASE} cycles; NaN when too few stood so.
+     * How often the recorded players who stood so in the race to their ball reached it within
+     * {@link #CHASE} cycles; NaN when too few stood so, or {@code race} is null.
      */
-    double chaseRate(double ballDistance, boolean nearestOfItsTeam) {
-        return Double.isNaN(ballDistance) ? Double.NaN : chaseRate[nearestOfItsTeam ? 1 : 0][chaseBin(ballDistance)];
+    double chaseRate(BallRace race) {
+        return race == null ? Double.NaN
+                : chaseRate[race.standing().ordinal()][Math.min(CHASE_BINS - 1, race.cycles())];
     }
 
     /**
      * Where to run for these neighbours, from {@code own}'s position: when most of those with a
      * destination ran to the ball (reached it within {@link #CHASE} cycles), or, where enough
-     * recorded scenes stood at the player's distance from its ball with the same answer to "my
-     * team's nearest to it?", most of those ({@link #chaseRate}), {@code ball} (where
+     * recorded scenes stood as the player stands in the race to its ball ({@link BallRace}), most of
+     * those ({@link #chaseRate}), {@code ball} (where
      * the deciding player can reach its own ball, null when it does not know one); else the mean
      * of their end points relative to their ball placed at the player's own (those within
      * {@link #BALL_NEAR} metres of their ball, when the player knows its ball), their end points
@@ -254,7 +247,7 @@ public final class Destinations {
             return null;
         }
         // the teacher's own rate where enough of its scenes stood so: k neighbours are too few to tell
-        double rate = chaseRate(own.ballDistance(), own.nearestOfItsTeamToBall());
+        double rate = chaseRate(BallRace.of(own));
         if (steering.chase(Double.isNaN(rate) ? ballRuns / (double) count : rate) && ball != null) {
             return onPitch(ball);
         }

@@ -217,21 +217,41 @@ public final class Targets {
         if (world == null || !world.located() || !world.ballKnown()) {
             return null;
         }
+        int cycles = reachCycles(world.x(), world.y(), world, INTERCEPT_HORIZON);
         double vx = velocity(world.ballVx());
         double vy = velocity(world.ballVy());
         double bx = world.ballX();
         double by = world.ballY();
-        for (int t = 0; t < INTERCEPT_HORIZON; t++) {
-            double reach = Math.max(0, t - 1) * RUN_SPEED + KICKABLE_AREA;
-            if (Math.hypot(bx - world.x(), by - world.y()) <= reach) {
-                return new double[] {bx, by};
-            }
+        for (int t = 0; t < cycles; t++) {
             bx += vx;
             by += vy;
             vx *= BALL_DECAY;
             vy *= BALL_DECAY;
         }
         return new double[] {bx, by};
+    }
+
+    /**
+     * The cycles a player at ({@code x}, {@code y}) needs to reach the course of the ball of
+     * {@code world} (the server's ball decay; a run at the default player's top speed after one
+     * turn), {@code limit} when it cannot within fewer.
+     */
+    static int reachCycles(double x, double y, World world, int limit) {
+        double vx = velocity(world.ballVx());
+        double vy = velocity(world.ballVy());
+        double bx = world.ballX();
+        double by = world.ballY();
+        for (int t = 0; t < limit; t++) {
+            double reach = Math.max(0, t - 1) * RUN_SPEED + KICKABLE_AREA;
+            if (Math.hypot(bx - x, by - y) <= reach) {
+                return t;
+            }
+            bx += vx;
+            by += vy;
+            vx *= BALL_DECAY;
+            vy *= BALL_DECAY;
+        }
+        return limit;
     }
 
     private static double runPower(Action action, double power) {

@@ -91,7 +91,7 @@ class DestinationsTest {
     }
 
     @Test
-    void theTeachersOwnChaseRateAtThatDistanceDecidesWhereEnoughOfItsScenesStoodSo() {
+    void theTeachersOwnChaseRateInThatRaceDecidesWhereEnoughOfItsScenesStoodSo() {
         // forty recorded players, each 2.5 m behind a still ball, ran through it; one ran on far from its ball
         List<Scene> scenes = new ArrayList<>();
         for (int p = 0; p < 40; p++) {
@@ -102,9 +102,12 @@ class DestinationsTest {
         }
         scenes.addAll(run(EIGHT, 20, 0, 10));
         Destinations destinations = Destinations.of(scenes);
-        assertEquals(1.0, destinations.chaseRate(2.2, true), 1e-9, "all forty at 2-3 m reached their ball");
-        assertEquals(Double.NaN, destinations.chaseRate(2.2, false), "no scene of a player with a teammate nearer");
-        assertEquals(Double.NaN, destinations.chaseRate(45, true), "one run is too few to tell");
+        assertEquals(1.0, destinations.chaseRate(new BallRace(3, BallRace.Standing.FIRST)), 1e-9,
+                "all forty, 3 cycles from their still ball, reached it");
+        assertEquals(Double.NaN, destinations.chaseRate(new BallRace(3, BallRace.Standing.TEAMMATE_FIRST)),
+                "no scene of a player with a faster teammate");
+        assertEquals(Double.NaN, destinations.chaseRate(new BallRace(45, BallRace.Standing.FIRST)),
+                "one run is too few to tell");
         // a neighbour that ran on without the ball: the rate, not the neighbour, sends the player to its ball
         World here = at(SEVEN, 0, 0, 10, 2, 11, "play_on", Action.dash(100)).world();
         double[] ball = {2, 11};
