@@ -7,6 +7,7 @@ import org.scenes.api.EncodedMetric;
 import org.scenes.api.MetricProvider;
 import org.scenes.api.PackedMetric;
 import org.scenes.api.PluginConfig;
+import org.scenes.api.Relation;
 import org.scenes.api.Scene;
 import org.scenes.api.SceneMetric;
 import org.scenes.api.Side;
@@ -17,7 +18,8 @@ import org.scenes.api.World;
  * {@code field}: scenes compared by their world models ({@link World}, scenes converted with
  * {@code --world}), in field coordinates of the player's own frame rather than by what the view
  * showed: a weighted Euclidean distance over the player's position, the ball's offset from the
- * player, the ball's velocity, the body's direction (as a unit vector), stamina, plus a penalty
+ * player, the ball's velocity, the body's direction (as a unit vector), stamina, the distance from
+ * the ball to the nearest opponent the player knows of (weight 0 unless asked), plus a penalty
  * when the play modes differ (modes compared from the player's side: {@code kick_off_l} of a left
  * player equals {@code kick_off_r} of a right one) and another when the ball is within kicking reach
  * in one scene only (what decides most of a player's actions), and another when the player is its
@@ -37,7 +39,13 @@ public final class FieldMetricProvider implements MetricProvider {
     static final int BODY_COS = 6;
     static final int BODY_SIN = 7;
     static final int STAMINA = 8;
-    static final int FEATURES = 9;
+    static final int OPPONENT = 9;
+    static final int FEATURES = 10;
+    /**
+     * An opponent this far from the ball or farther (or none known) puts no pressure on it:
+     * {@link #OPPONENT}'s distance is cut here, so an empty half and a crowded one differ by it at most.
+     */
+    static final double OPPONENT_FAR = 10;
     /** The default server's full stamina: stamina is compared as a share of it. */
     static final double STAMINA_MAX = 8000;
     /** The default player's kicking reach: player_size 0.3 + ball_size 0.085 + kickable_margin 0.7. */
@@ -62,6 +70,8 @@ public final class FieldMetricProvider implements MetricProvider {
         options.put("ball-velocity-weight", "weight of the ball's velocity, per metre per cycle (default 2)");
         options.put("body-weight", "weight of the body direction's unit vector (default 3)");
         options.put("stamina-weight", "weight of stamina as a share of 8000 (default 2)");
+        options.put("opponent-weight", "weight of the distance from the ball to the nearest opponent the player knows"
+                + " of, per metre, cut at " + (int) OPPONENT_FAR + " m (default 0)");
         options.put("play-mode-penalty", "added when the play modes differ (default 10)");
         options.put("kickable-penalty", "added when the ball is within kicking reach (1.085 m, the default player's)"
                 + " in one scene and not in the other (default 10)");
@@ -81,6 +91,7 @@ public final class FieldMetricProvider implements MetricProvider {
                 TuneDimension.log("ball-velocity-weight", 0.5, 2, 8),
                 TuneDimension.log("body-weight", 1, 3, 10),
                 TuneDimension.log("stamina-weight", 0.5, 2, 8),
+                TuneDimension.log("opponent-weight", 0.3, 1, 3, 10),
                 TuneDimension.log("play-mode-penalty", 3, 10, 30),
                 TuneDimension.log("kickable-penalty", 1, 3, 10, 30),
                 TuneDimension.log("chaser-penalty", 1, 3, 10, 30));
@@ -103,6 +114,7 @@ public final class FieldMetricProvider implements MetricProvider {
         weights[BODY_COS] = body;
         weights[BODY_SIN] = body;
         weights[STAMINA] = stamina;
+        weights[OPPONENT] = weight(config, "opponent-weight", 0);
         String frame = config.option("ball-frame", "field");
         if (!frame.equals("field") && !frame.equals("body")) {
             throw new IllegalArgumentException("field: ball-frame must be field or body, not " + frame);
@@ -181,12 +193,24 @@ public final class FieldMetricProvider implements MetricProvider {
             f[BODY_COS] = Math.cos(body);
             f[BODY_SIN] = Math.sin(body);
             f[STAMINA] = Double.isNaN(w.stamina()) ? 1 : w.stamina() / STAMINA_MAX;
+            f[OPPONENT] = ballKnown ? nearestOpponent(w) : OPPONENT_FAR;
             for (int i = 0; i < FEATURES; i++) {
                 f[i] *= weights[i];
             }
             double ballDistance = w.ballDistance();
             return new Features(f, ballKnown, ownMode(w.playMode(), scene.observer().side()), ballDistance <= KICKABLE,
                     ballKnown && w.nearestOfItsTeamToBall());
+        }
+
+        /** The distance from the ball to the nearest opponent in the world model, at most {@link #OPPONENT_FAR}. */
+        static double nearestOpponent(World w) {
+            double nearest = OPPONENT_FAR;
+            for (World.Player player : w.players()) {
+                if (player.relation() == Relation.OPPONENT) {
+                    nearest = Math.min(nearest, Math.hypot(player.x() - w.ballX(), player.y() - w.ballY()));
+                }
+            }
+            return nearest;
         }
 
         /** The play mode with its side letter as seen from the player: {@code kick_off_own}, {@code goal_opp}. */

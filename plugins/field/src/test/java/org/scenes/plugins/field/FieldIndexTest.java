@@ -41,7 +41,7 @@ class FieldIndexTest {
             World world = new World(x, y, random.nextInt(8) * 45, 0, random.nextGaussian() * 0.2, 0,
                     random.nextInt(3) * 4000, 1, 0, ballKnown ? x + random.nextGaussian() * 10 : Double.NaN,
                     ballKnown ? y + random.nextGaussian() * 10 : Double.NaN, random.nextGaussian(), random.nextGaussian(),
-                    0, teammate(random), MODES.get(random.nextInt(MODES.size())), 0, 0);
+                    0, players(random), MODES.get(random.nextInt(MODES.size())), 0, 0);
             Side side = random.nextBoolean() ? Side.LEFT : Side.RIGHT;
             scenes.add(new Scene(i, new Observer("T", side, 1 + random.nextInt(11)), List.of(), List.of(Action.dash(50)),
                     null, 0, world));
@@ -49,11 +49,21 @@ class FieldIndexTest {
         return scenes;
     }
 
-    /** Half the scenes know a teammate somewhere on the pitch: it is nearer the ball than the player in some. */
-    private static List<World.Player> teammate(Random random) {
-        return random.nextBoolean() ? List.of()
-                : List.of(new World.Player(Relation.TEAMMATE, 5, random.nextDouble() * 105 - 52.5,
-                        random.nextDouble() * 68 - 34, 0));
+    /**
+     * Half the scenes know a teammate somewhere on the pitch (it is nearer the ball than the player
+     * in some), half an opponent (within 10 m of the ball in some).
+     */
+    private static List<World.Player> players(Random random) {
+        List<World.Player> players = new ArrayList<>();
+        if (random.nextBoolean()) {
+            players.add(new World.Player(Relation.TEAMMATE, 5, random.nextDouble() * 105 - 52.5,
+                    random.nextDouble() * 68 - 34, 0));
+        }
+        if (random.nextBoolean()) {
+            players.add(new World.Player(Relation.OPPONENT, 7, random.nextDouble() * 105 - 52.5,
+                    random.nextDouble() * 68 - 34, 0));
+        }
+        return players;
     }
 
     @Test
@@ -63,7 +73,7 @@ class FieldIndexTest {
         List<Scene> queries = new ArrayList<>(scenes(random, 150));
         queries.addAll(stored.subList(0, 50));
         for (Map<String, String> options : List.of(Map.<String, String>of(), Map.of("ball-frame", "body"),
-                Map.of("position-weight", "0", "play-mode-penalty", "0.5"))) {
+                Map.of("position-weight", "0", "play-mode-penalty", "0.5"), Map.of("opponent-weight", "3"))) {
             assertSameAsScan(stored, queries, options, 1, 5, 15);
         }
     }

@@ -85,4 +85,25 @@ class FieldMetricTest {
                 Map.of("chaser-penalty", "2")));
         assertEquals(2, cheap.distance(alone, followed), 1e-9);
     }
+
+    @Test
+    void theNearestOpponentToTheBallCountsWhenWeightedUpToTenMetres() {
+        Scene alone = scene(Side.LEFT, 0, 0, 0, 5, 0, "play_on");
+        SceneMetric pressed = new FieldMetricProvider().create(PluginConfig.DEFAULT.withOptions(
+                Map.of("opponent-weight", "0.5")));
+        // opponents 2 m and 7 m from the ball (the nearer counts), one of unknown team ignored
+        Scene marked = withPlayers(alone, new World.Player(Relation.OPPONENT, 7, 12, 0, 0),
+                new World.Player(Relation.OPPONENT, 9, 5, 2, 0), new World.Player(Relation.UNKNOWN, 0, 5, 0.5, 0));
+        assertEquals(0.5 * (10 - 2), pressed.distance(alone, marked), 1e-9, "none known counts as 10 m");
+        Scene far = withPlayers(alone, new World.Player(Relation.OPPONENT, 9, 5, 25, 0));
+        assertEquals(0, pressed.distance(alone, far), 1e-9, "25 m is as free as none");
+        assertEquals(0, metric.distance(alone, marked), 1e-9, "weight 0 by default");
+    }
+
+    private static Scene withPlayers(Scene scene, World.Player... players) {
+        World w = scene.world();
+        World with = new World(w.x(), w.y(), w.body(), 0, 0, 0, 8000, 1, 0, w.ballX(), w.ballY(), 0, 0, 0,
+                List.of(players), w.playMode(), 0, 0);
+        return new Scene(scene.cycle(), scene.observer(), List.of(), scene.actions(), null, 0, with);
+    }
 }
