@@ -93,7 +93,7 @@ public class FieldIndexBench {
     @Param({"spread"})
     public String queries;
 
-    /** {@code field}'s options, as KEY=VALUE pairs separated by commas; empty for its defaults. */
+    /** {@code field}'s options, as KEY=VALUE pairs separated by semicolons (JMH splits values at commas); empty: its defaults. */
     @Param({""})
     public String options;
 
@@ -125,7 +125,7 @@ public class FieldIndexBench {
         }
         PluginRegistry registry = PluginRegistry.load();
         Map<String, String> fieldOptions = new HashMap<>();
-        for (String pair : options.split(",")) {
+        for (String pair : options.split(";")) {
             if (!pair.isBlank()) {
                 String[] keyValue = pair.split("=", 2);
                 fieldOptions.put(keyValue[0].trim(), keyValue[1].trim());
