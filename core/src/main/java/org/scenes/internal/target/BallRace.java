@@ -8,7 +8,7 @@ import org.scenes.api.World;
  * needs to reach the ball's course ({@link Targets#reachCycles}) and whether a teammate or an
  * opponent it knows of needs fewer. In HELIOS base's games against itself its players (goalie
  * aside) who would reach the ball first of everyone within nine cycles did so within 30 cycles in
- * 77 % to 100 % of the frames; those an opponent would beat, in 3 % to 19 %, however near
+ * 64 % to 100 % of the frames; those an opponent would beat, in 3 % to 16 %, however near
  * (the game log's true positions, game 2). Distance alone does not tell the two apart.
  *
  * @param cycles cycles the player needs, {@link Targets#INTERCEPT_HORIZON} when it cannot within them

@@ -177,9 +177,9 @@ public final class Destinations {
             runs[standing][bin] += toBall[i] ? 1 : 0;
         }
         double[][] rates = new double[standings][CHASE_BINS];
-        for (int flag = 0; flag < standings; flag++) {
+        for (int s = 0; s < standings; s++) {
             for (int bin = 0; bin < CHASE_BINS; bin++) {
-                rates[flag][bin] = all[flag][bin] < CHASE_SAMPLES ? Double.NaN : runs[flag][bin] / (double) all[flag][bin];
+                rates[s][bin] = all[s][bin] < CHASE_SAMPLES ? Double.NaN : runs[s][bin] / (double) all[s][bin];
             }
         }
         return rates;
