@@ -46,9 +46,11 @@ import org.scenes.simulator.SyntheticScenes;
 
 /**
  * Latency of one decision of the HELIOS imitators' configuration (examples/configs/helios.json:
- * {@code field} with its defaults, k = 1 since 2026-12-07, k = 10 before) over 10^6 stored scenes, sampled per call so JMH
- * reports percentiles (p0.99); the decision is {@link Recognizer#nearest}, neighbours decoded, then
- * first-valid's choice ({@link #decideAsAgent}: and the target replay the live agent adds).
+ * {@code field}, k = 1 since 2026-12-07, k = 10 before; its {@code opponent-weight=3} since the same
+ * day, given as {@code -p options=opponent-weight=3}) over 10^6 stored scenes, sampled per call so
+ * JMH reports percentiles (p0.99); the decision is {@link Recognizer#nearest}, neighbours decoded,
+ * then first-valid's choice ({@link #decideAsAgent}: and what the live agent adds, a look further
+ * when the choice sends no body command and target replay).
  *
  * <p>{@code knowledge=helios}: each stored scene is a random real scene of HELIOS base games 1, 3
  * and 4 (directories {@code sc1}, {@code sc3}, {@code sc4} under the {@code scenes.helios}
