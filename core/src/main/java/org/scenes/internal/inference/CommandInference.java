@@ -302,9 +302,13 @@ final class CommandInference {
         }
         double direction = normalize(Math.toDegrees(Math.atan2(accelY, accelX)) - a.body());
         double power = rate <= 0 ? maxPower : clamp(accel / rate, minPower, maxPower);
-        // the kick's noise (kick_rand of the power) and the ball's (ball_rand of its speed), each axis
-        double noise = Math.sqrt(2) * (type.kickRand() * Math.abs(power) / maxPower
-                + ballRand * Math.hypot(ball.vx() + accelX, ball.vy() + accelY));
+        // rcssserver's two noises, each a vector of random direction: the kick's, up to kick_rand of the
+        // power share times a rate of 0.5 to 1 for where the ball lay plus one for how fast it ran, and
+        // the ball's, up to ball_rand of its new speed
+        double positionRate = 0.5 + 0.25 * (dirDiff / 180 + Math.max(0, distance) / type.kickableMargin());
+        double speedRate = 0.5 + 0.5 * Math.hypot(ball.vx(), ball.vy()) / (ballSpeedMax * ballDecay);
+        double noise = type.kickRand() * Math.abs(power) / maxPower * (positionRate + speedRate)
+                + ballRand * Math.hypot(ball.vx() + accelX, ball.vy() + accelY);
         double directionBound = accel <= noise ? 180 : Math.toDegrees(Math.asin(Math.min(1, noise / accel)));
         return new Command(CommandType.KICK, power, direction, rate <= 0 ? maxPower : noise / rate, directionBound);
     }

@@ -84,6 +84,11 @@ class CommandInferenceTest {
         assertEquals(CommandType.KICK, kick.type());
         assertEquals(50, kick.first(), 1e-6);
         assertEquals(30, kick.second(), 1e-6);
+        // rcssserver's noises: kick_rand 0.1 of the power share 0.5 times (0.5 + 0.25 distance / kickable_margin
+        // for where the ball lay, plus 0.5 for a still ball), then ball_rand 0.05 of the new speed
+        double noise = 0.1 * 0.5 * (0.5 + 0.25 * distance / 0.7 + 0.5) + 0.05 * accel;
+        assertEquals(Math.toDegrees(Math.asin(noise / accel)), kick.secondBound(), 1e-9);
+        assertEquals(noise / rate, kick.firstBound(), 1e-9);
     }
 
     @Test
