@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -33,6 +34,18 @@ final class BenchSets {
         "University_1", "University_2", "University_3", "University_4", "University_5"};
 
     private BenchSets() {
+    }
+
+    /** Metric options given to a benchmark as {@code KEY=VALUE} pairs, blank ones skipped; a later key wins. */
+    static Map<String, String> options(String... pairs) {
+        Map<String, String> options = new LinkedHashMap<>();
+        for (String pair : pairs) {
+            if (!pair.isBlank()) {
+                String[] keyValue = pair.split("=", 2);
+                options.put(keyValue[0].trim(), keyValue[1].trim());
+            }
+        }
+        return options;
     }
 
     /** {@code size} synthetic scenes streamed into a knowledge base, never all held as objects. */

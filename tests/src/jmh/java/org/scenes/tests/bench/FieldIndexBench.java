@@ -6,7 +6,6 @@ import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -126,13 +125,7 @@ public class FieldIndexBench {
             SyntheticScenes.generate(BenchSets.QUERY_SEED, QUERIES, Grid.DEFAULT, asked::add);
         }
         PluginRegistry registry = PluginRegistry.load();
-        Map<String, String> fieldOptions = new HashMap<>();
-        for (String pair : options.split(";")) {
-            if (!pair.isBlank()) {
-                String[] keyValue = pair.split("=", 2);
-                fieldOptions.put(keyValue[0].trim(), keyValue[1].trim());
-            }
-        }
+        Map<String, String> fieldOptions = BenchSets.options(options.split(";"));
         if (search.equals("scan")) {
             fieldOptions.put("index", "false");
         }

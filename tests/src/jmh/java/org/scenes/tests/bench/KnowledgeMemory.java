@@ -6,9 +6,9 @@ import java.lang.management.MemoryMXBean;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import java.util.Random;
 import java.util.stream.Stream;
 import org.scenes.api.Grid;
@@ -73,12 +73,8 @@ public final class KnowledgeMemory {
         long previous = afterBase;
         for (String spec : metrics) {
             String[] parts = spec.split(",");
-            PluginConfig config = PluginConfig.DEFAULT;
-            for (int p = 1; p < parts.length; p++) {
-                String[] option = parts[p].split("=", 2);
-                config = config.withOptions(Map.of(option[0], option[1]));
-            }
-            PluginConfig chosen = config;
+            PluginConfig chosen = PluginConfig.DEFAULT.withOptions(
+                    BenchSets.options(Arrays.copyOfRange(parts, 1, parts.length)));
             long built = System.nanoTime();
             Recognizer recognizer = new Recognizer(knowledge, () -> registry.metric(parts[0], chosen), 1);
             double seconds = (System.nanoTime() - built) / 1e9;
