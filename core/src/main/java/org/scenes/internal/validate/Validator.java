@@ -83,7 +83,8 @@ public final class Validator {
                 List<Neighbour> nearest = recognizer.nearest(test.get(i));
                 Action selected = selector.get().select(nearest, queryRandom(seed, i));
                 predicted[i] = prediction(selected, nearest, test.get(i), replay, destinations);
-                Neighbour donor = donors == null ? null : donor(selected, nearest);
+                // no usable action among the neighbours: no prediction, so no donor either
+                Neighbour donor = donors == null || selected == null ? null : donor(selected, nearest);
                 if (donor != null) {
                     donors.index()[i] = donor.index();
                     donors.distance()[i] = donor.distance();

@@ -21,6 +21,7 @@ import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.ObjectSetMetric;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.match.TestScenes;
+import org.scenes.internal.target.Replay;
 
 class ValidatorTest {
     private static final Supplier<SceneMetric> POLAR = () -> new ObjectSetMetric(ObjectSetMetric.settings(
@@ -71,6 +72,25 @@ class ValidatorTest {
                 scenes, 1, true, null);
         assertEquals(0, answering.truePositives(ActionType.NONE));
         assertEquals(0.0, answering.recall(ActionType.NONE));
+    }
+
+    @Test
+    void aQueryWithoutUsableActionHasNoDonor() {
+        // the selector finds no usable action when the nearest scene's cycle is even, as body-vote among neck-only neighbours
+        List<Scene> scenes = krislet(5, 200);
+        Recognizer recognizer = new Recognizer(KnowledgeBase.of(Grid.DEFAULT, scenes), POLAR, 1);
+        Validator.Donors donors = Validator.Donors.of(scenes.size());
+        ValidationReport report = Validator.run(recognizer, () -> (nearest, random) -> nearest.get(0).scene().cycle() % 2 == 0
+                ? null : nearest.get(0).scene().primaryAction(), scenes, 1, Replay.RAW, true, null, donors);
+        assertEquals(scenes.size(), report.testScenes());
+        int without = 0;
+        for (int i = 0; i < scenes.size(); i++) {
+            int donor = donors.index()[i];
+            // scene i is cycle i: a donor is the nearest scene, always of an odd cycle
+            assertTrue(donor == -1 || donor % 2 == 1, "query " + i + ": donor " + donor);
+            without += donor == -1 ? 1 : 0;
+        }
+        assertTrue(without > 50 && without < 150, without + " queries without a donor");
     }
 
     @Test
