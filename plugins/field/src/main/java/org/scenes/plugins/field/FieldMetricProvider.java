@@ -3,6 +3,7 @@ package org.scenes.plugins.field;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import org.scenes.api.EncodedMetric;
 import org.scenes.api.MetricProvider;
 import org.scenes.api.PackedMetric;
@@ -21,7 +22,8 @@ import org.scenes.api.World;
  * player, the ball's velocity, the body's direction (as a unit vector), stamina, the distance from
  * the ball to the nearest opponent the player knows of (weight 0 unless asked), plus a penalty
  * when the play modes differ (modes compared from the player's side: {@code kick_off_l} of a left
- * player equals {@code kick_off_r} of a right one) and another when the ball is within kicking reach
+ * player equals {@code kick_off_r} of a right one), more when only one of them lets the players place
+ * themselves (before a kick-off, after a goal), another when the ball is within kicking reach
  * in one scene only (what decides most of a player's actions), and another when the player is its
  * team's nearest to the ball (among the teammates its world model knows) in one scene only (who
  * runs for the ball and who keeps its place). With {@code ball-frame=body} the ball's offset
@@ -73,6 +75,8 @@ public final class FieldMetricProvider implements MetricProvider {
         options.put("opponent-weight", "weight of the distance from the ball to the nearest opponent the player knows"
                 + " of, per metre, cut at " + (int) OPPONENT_FAR + " m (default 0)");
         options.put("play-mode-penalty", "added when the play modes differ (default 10)");
+        options.put("placement-penalty", "added when one play mode lets the players place themselves with move"
+                + " (before_kick_off, after a goal) and the other does not (default 0)");
         options.put("kickable-penalty", "added when the ball is within kicking reach (1.085 m, the default player's)"
                 + " in one scene and not in the other (default 10)");
         options.put("chaser-penalty", "added when the player is its team's nearest to the ball (of the teammates it"
@@ -93,6 +97,7 @@ public final class FieldMetricProvider implements MetricProvider {
                 TuneDimension.log("stamina-weight", 0.5, 2, 8),
                 TuneDimension.log("opponent-weight", 0.3, 1, 3, 10),
                 TuneDimension.log("play-mode-penalty", 3, 10, 30),
+                TuneDimension.linear("placement-penalty", 0, 30, 100),
                 TuneDimension.log("kickable-penalty", 1, 3, 10, 30),
                 TuneDimension.log("chaser-penalty", 1, 3, 10, 30));
     }
@@ -123,9 +128,10 @@ public final class FieldMetricProvider implements MetricProvider {
         if (!index.equals("true") && !index.equals("false")) {
             throw new IllegalArgumentException("field: index must be true or false, not " + index);
         }
-        return new FieldMetric(weights, weight(config, "play-mode-penalty", 10), weight(config, "missing", 1000),
-                frame.equals("body"), index.equals("true"), weight(config, "kickable-penalty", 10),
-                weight(config, "chaser-penalty", 10));
+        return new FieldMetric(weights, new Penalties(weight(config, "play-mode-penalty", 10),
+                weight(config, "placement-penalty", 0), weight(config, "kickable-penalty", 10),
+                weight(config, "chaser-penalty", 10)), weight(config, "missing", 1000), frame.equals("body"),
+                index.equals("true"));
     }
 
     private static double weight(PluginConfig config, String name, double fallback) {
@@ -146,21 +152,32 @@ public final class FieldMetricProvider implements MetricProvider {
         }
     }
 
+    /**
+     * What two scenes add when they differ in play mode, in whether the mode is one where the players
+     * place themselves, in the ball within reach, and in the team's nearest to the ball.
+     */
+    record Penalties(double playMode, double placement, double kickable, double chaser) {
+    }
+
+    /**
+     * The play modes (from the player's side) in which the server lets every player {@code move}
+     * itself: before a kick-off and after a goal. The clock stands, the ball is dead and the
+     * teacher holds its kick-off place, turning to look around: a scene of play matched there runs
+     * a player away from its place before the kick-off.
+     */
+    private static final Set<String> PLACEMENT_MODES = Set.of("before_kick_off", "goal_own", "goal_opp", "goal_l",
+            "goal_r");
+
     static final class FieldMetric implements EncodedMetric<Features>, PackedMetric {
         private final double[] weights;
-        private final double playModePenalty;
+        private final Penalties penalties;
         private final double missing;
         private final boolean bodyFrame;
         private final boolean indexed;
-        private final double kickablePenalty;
-        private final double chaserPenalty;
 
-        FieldMetric(double[] weights, double playModePenalty, double missing, boolean bodyFrame, boolean indexed,
-                    double kickablePenalty, double chaserPenalty) {
-            this.kickablePenalty = kickablePenalty;
-            this.chaserPenalty = chaserPenalty;
+        FieldMetric(double[] weights, Penalties penalties, double missing, boolean bodyFrame, boolean indexed) {
             this.weights = weights;
-            this.playModePenalty = playModePenalty;
+            this.penalties = penalties;
             this.missing = missing;
             this.bodyFrame = bodyFrame;
             this.indexed = indexed;
@@ -239,16 +256,19 @@ public final class FieldMetricProvider implements MetricProvider {
         double fixedCost(Features query, Features stored) {
             double sum = 0;
             if (!query.mode().equals(stored.mode())) {
-                sum = playModePenalty * playModePenalty;
+                sum = penalties.playMode() * penalties.playMode();
+                if (PLACEMENT_MODES.contains(query.mode()) != PLACEMENT_MODES.contains(stored.mode())) {
+                    sum += penalties.placement() * penalties.placement();
+                }
             }
             if (query.ballKnown() != stored.ballKnown()) {
                 sum += missing * missing / 100;
             }
             if (query.kickable() != stored.kickable()) {
-                sum += kickablePenalty * kickablePenalty;
+                sum += penalties.kickable() * penalties.kickable();
             }
             if (query.chaser() != stored.chaser()) {
-                sum += chaserPenalty * chaserPenalty;
+                sum += penalties.chaser() * penalties.chaser();
             }
             return sum;
         }

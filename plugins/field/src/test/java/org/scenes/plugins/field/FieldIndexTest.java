@@ -23,7 +23,8 @@ import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 
 class FieldIndexTest {
-    private static final List<String> MODES = List.of("play_on", "kick_off_l", "kick_off_r", "goal_kick_l");
+    private static final List<String> MODES = List.of("play_on", "kick_off_l", "kick_off_r", "goal_kick_l", "goal_l",
+            "before_kick_off");
 
     /** Random scenes: several play modes and sides, unknown balls, unlocated worlds, and exact duplicates (ties). */
     private static List<Scene> scenes(Random random, int n) {
@@ -73,7 +74,8 @@ class FieldIndexTest {
         List<Scene> queries = new ArrayList<>(scenes(random, 150));
         queries.addAll(stored.subList(0, 50));
         for (Map<String, String> options : List.of(Map.<String, String>of(), Map.of("ball-frame", "body"),
-                Map.of("position-weight", "0", "play-mode-penalty", "0.5"), Map.of("opponent-weight", "3"))) {
+                Map.of("position-weight", "0", "play-mode-penalty", "0.5"), Map.of("opponent-weight", "3"),
+                Map.of("placement-penalty", "100"))) {
             assertSameAsScan(stored, queries, options, 1, 5, 15);
         }
     }

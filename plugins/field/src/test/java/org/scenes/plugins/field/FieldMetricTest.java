@@ -59,6 +59,26 @@ class FieldMetricTest {
     }
 
     @Test
+    void aModeWhereThePlayersPlaceThemselvesAddsThePlacementPenaltyAgainstPlay() {
+        SceneMetric placing = new FieldMetricProvider().create(PluginConfig.DEFAULT.withOptions(
+                Map.of("placement-penalty", "100")));
+        Scene afterOurGoal = scene(Side.LEFT, -25, 0, 0, 0, 0, "goal_l");
+        Scene afterTheirGoal = scene(Side.RIGHT, -25, 0, 0, 0, 0, "goal_l");
+        Scene beforeKickOff = scene(Side.LEFT, -25, 0, 0, 0, 0, "before_kick_off");
+        Scene play = scene(Side.LEFT, -25, 0, 0, 0, 0, "play_on");
+        Scene goalKick = scene(Side.LEFT, -25, 0, 0, 0, 0, "goal_kick_l");
+        // placement against play: both penalties
+        assertEquals(Math.hypot(10, 100), placing.distance(afterOurGoal, play), 1e-9);
+        assertEquals(Math.hypot(10, 100), placing.distance(beforeKickOff, goalKick), 1e-9);
+        // two placement modes, or two modes of play, differ by the play mode's penalty alone
+        assertEquals(10, placing.distance(afterOurGoal, afterTheirGoal), 1e-9);
+        assertEquals(10, placing.distance(afterOurGoal, beforeKickOff), 1e-9);
+        assertEquals(10, placing.distance(play, goalKick), 1e-9);
+        // off by default
+        assertEquals(10, metric.distance(afterOurGoal, play), 1e-9);
+    }
+
+    @Test
     void aSceneWithoutWorldIsMissingAwayAndOptionsAreChecked() {
         Scene without = new Scene(1, Observer.UNKNOWN, List.of(), List.of(Action.dash(100)));
         assertEquals(1000, metric.distance(scene(Side.LEFT, 0, 0, 0, 5, 0, "play_on"), without));
