@@ -323,7 +323,7 @@ public final class ImitationBrain implements Brain {
         if (guards.enabled() && action != null) {
             action = guard(action, seen.objects(), nearest);
         }
-        Scene setPlayKick = setPlayKickDue(seen);
+        Scene setPlayKick = setPlayKick(seen, action);
         if (setPlayKick != null) {
             // the counterpart's own set-play kick, carried out from here like a neighbour's
             nearest = List.of(new Neighbour(setPlayKick, -1, 0));
@@ -369,9 +369,11 @@ public final class ImitationBrain implements Brain {
 
     /**
      * The counterpart's recorded kick when the player stands at the ball in a set play of its own
-     * team that has lasted as long as its counterpart waited at such set plays ({@link SetPlayKicks}).
+     * team that has lasted as long as its counterpart waited at such set plays, or when
+     * {@code chosen} kicks there sooner ({@link SetPlayKicks}): the recorded kick of that kind taken
+     * nearest to where the ball lies. Null otherwise.
      */
-    private Scene setPlayKickDue(Scene seen) {
+    private Scene setPlayKick(Scene seen, Action chosen) {
         World own = seen.world();
         if (own == null) {
             return null;
@@ -381,9 +383,12 @@ public final class ImitationBrain implements Brain {
             playModeSince = seen.cycle();
             playModes++;
         }
-        boolean atBall = own.ballDistance() <= kickable;
-        return atBall && observer != null ? setPlayKicks.due(playMode, observer.side(), seen.cycle() - playModeSince)
-                : null;
+        if (!(own.ballDistance() <= kickable) || observer == null) { // NaN: the ball unknown
+            return null;
+        }
+        Scene due = setPlayKicks.due(playMode, observer.side(), seen.cycle() - playModeSince, own.ballX(), own.ballY());
+        return due != null || chosen == null || chosen.type() != ActionType.KICK ? due
+                : setPlayKicks.taken(playMode, observer.side(), own.ballX(), own.ballY());
     }
 
     /**

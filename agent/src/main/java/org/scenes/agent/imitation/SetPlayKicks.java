@@ -15,7 +15,10 @@ import org.scenes.api.World;
  * each came. A team such as HELIOS base waits at a set play (for its players to take their
  * places) and then kicks; the wait depends on time, which no scene feature holds, so an
  * imitator that stands at the ball matches the waiting scenes for ever. The imitator takes the
- * recorded kick once it has waited as long as its counterpart did (the median wait).
+ * recorded kick once it has waited as long as its counterpart did (the median wait), and kicks
+ * as recorded when its matching chooses to kick sooner: the teacher's restarts (HELIOS base's
+ * kick-offs: a pass back towards its defenders) are in too few scenes for a nearest neighbour to
+ * aim them.
  */
 final class SetPlayKicks {
     /** Play modes, without their side letter, that the side named in them restarts with a kick. */
@@ -92,17 +95,43 @@ final class SetPlayKicks {
 
     /**
      * The kick to take now: in a set play of the player's own team that has lasted {@code waited}
-     * cycles, at least the median of the recorded waits of that kind, the first recorded kick of
-     * that kind; null before, in other play modes, or when the player never took one of that kind.
+     * cycles, at least the median of the recorded waits of that kind, the recorded kick of that kind
+     * {@link #taken nearest to where the ball lies}; null before, in other play modes, or when the
+     * player never took one of that kind.
      */
-    Scene due(String mode, Side side, int waited) {
+    Scene due(String mode, Side side, int waited, double ballX, double ballY) {
         String kind = ownKind(mode, side);
         List<Kick> kicks = kind == null ? null : byKind.get(kind);
         if (kicks == null) {
             return null;
         }
         int[] waits = kicks.stream().mapToInt(Kick::waited).sorted().toArray();
-        return waited >= waits[waits.length / 2] ? kicks.get(0).scene() : null;
+        return waited >= waits[waits.length / 2] ? taken(mode, side, ballX, ballY) : null;
+    }
+
+    /**
+     * The recorded kick of this set play's kind (own side) taken with the ball nearest to
+     * ({@code ballX}, {@code ballY}) in the player's own frame (the first recorded when the ball's
+     * place is unknown): a kick-in from the other touchline or a corner from the other flag would
+     * send the ball out of the field. Null in other play modes or for a kind never taken.
+     */
+    Scene taken(String mode, Side side, double ballX, double ballY) {
+        String kind = ownKind(mode, side);
+        List<Kick> kicks = kind == null ? null : byKind.get(kind);
+        if (kicks == null) {
+            return null;
+        }
+        Scene nearest = kicks.get(0).scene();
+        double least = Double.POSITIVE_INFINITY;
+        for (Kick kick : kicks) {
+            World world = kick.scene().world();
+            double distance = Math.hypot(world.ballX() - ballX, world.ballY() - ballY);
+            if (distance < least) {
+                least = distance;
+                nearest = kick.scene();
+            }
+        }
+        return nearest;
     }
 
     /** Total recorded set-play kicks, for tests and reports. */

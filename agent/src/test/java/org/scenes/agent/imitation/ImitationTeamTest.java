@@ -212,10 +212,10 @@ class ImitationTeamTest {
         ImitationTeam team = ImitationTeam.load(files, List::of,
                 knowledge -> new Recognizer(knowledge, () -> ImitationBrainTest.BALL, 1),
                 ImitationTeam.Knowledge.COUNTERPART);
-        assertEquals(Action.kick(40, 90), team.setPlayKicks(4).due("kick_off_l", Side.LEFT, 25).primaryAction());
-        assertNull(team.setPlayKicks(4).due("kick_off_l", Side.LEFT, 24));
-        assertEquals(Action.kick(40, 90), team.setPlayKicks(3).due("kick_off_l", Side.LEFT, 25).primaryAction());
-        assertEquals(Action.kick(40, 90), team.setPlayKicks(9).due("kick_off_l", Side.LEFT, 30).primaryAction(),
+        assertEquals(Action.kick(40, 90), team.setPlayKicks(4).due("kick_off_l", Side.LEFT, 25, 0, 0).primaryAction());
+        assertNull(team.setPlayKicks(4).due("kick_off_l", Side.LEFT, 24, 0, 0));
+        assertEquals(Action.kick(40, 90), team.setPlayKicks(3).due("kick_off_l", Side.LEFT, 25, 0, 0).primaryAction());
+        assertEquals(Action.kick(40, 90), team.setPlayKicks(9).due("kick_off_l", Side.LEFT, 30, 0, 0).primaryAction(),
                 "no counterpart: the team's");
     }
 
@@ -229,5 +229,42 @@ class ImitationTeamTest {
         }
         assertEquals(List.of(Action.move(-1, 1), Action.move(-3, 3), Action.move(-1, 1)),
                 ImitationTeam.kickOffMoves(scenes));
+    }
+
+    /** Standing at (-0.5, 0), facing x+: the ball on the centre spot at its feet, two flags and the goal ahead. */
+    private static final String AT_THE_BALL = "((f c) 0.5 0) ((f p r t) 41.7 -29) ((f p r b) 41.7 29) ((g r) 53 0) ((b) 0.5 0)";
+
+    /**
+     * What player 10 sends at its first see after the referee called {@code mode}, at the ball on
+     * the centre spot: its first scene kicks in play (the nearest of every query: the metric is 0),
+     * then it waited 20 cycles at a kick-off of its own and passed back.
+     */
+    private List<String> firstAnswerAtTheBall(String mode) throws IOException {
+        Observer ten = new Observer("Teal", Side.LEFT, 10);
+        List<Scene> scenes = new ArrayList<>();
+        for (int t = 0; t <= 21; t++) {
+            Action action = t == 0 ? Action.kick(100, 0) : t == 21 ? Action.kick(50, 180) : Action.turn(30);
+            scenes.add(new Scene(t, ten, List.of(), List.of(action), null, 0, new org.scenes.api.World(-0.5, 0, 0, 0,
+                    0, 0, 8000, 1, 0, 0, 0, 0, 0, 0, List.of(), t == 0 ? "play_on" : "kick_off_l", 0, 0)));
+        }
+        Path file = directory.resolve("Teal_10.json");
+        SceneFileWriter.write(file, new SceneFile(SceneFileHeader.of(Grid.DEFAULT, new SceneSource("Teal_10.lsf", ten)),
+                scenes));
+        Brain brain = ImitationTeam.load(List.of(file), List::of,
+                        knowledge -> new Recognizer(knowledge, () -> (query, stored) -> 0, 1),
+                        ImitationTeam.Knowledge.COUNTERPART).brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF)
+                .create("Teal", new Random(1));
+        List<String> sent = new ArrayList<>();
+        brain.receive("(init l 10 before_kick_off)", command -> { });
+        brain.receive("(hear 0 referee " + mode + ")", command -> { });
+        brain.receive("(see 1 " + AT_THE_BALL + ")", sent::add);
+        return sent;
+    }
+
+    @Test
+    void aKickMatchedAtTheBallOfItsOwnSetPlayIsTheRecordedOneEvenBeforeTheWait() throws IOException {
+        assertEquals(List.of("(kick 50 180)"), firstAnswerAtTheBall("kick_off_l"), "the recorded kick-off, not the kick in play");
+        assertEquals(List.of("(kick 100 0)"), firstAnswerAtTheBall("play_on"), "in play the matched kick");
+        assertEquals(List.of("(kick 100 0)"), firstAnswerAtTheBall("kick_off_r"), "the other team's kick-off is not its own");
     }
 }

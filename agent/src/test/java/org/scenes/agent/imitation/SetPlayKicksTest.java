@@ -47,12 +47,12 @@ class SetPlayKicksTest {
         scenes.addAll(kickOff(200, 40, kicks));
         SetPlayKicks recorded = SetPlayKicks.of(scenes);
         assertEquals(3, recorded.size());
-        assertNull(recorded.due("kick_off_l", Side.LEFT, 29));
-        assertSame(kicks.get(0), recorded.due("kick_off_l", Side.LEFT, 30));
+        assertNull(recorded.due("kick_off_l", Side.LEFT, 29, 0, 0));
+        assertSame(kicks.get(0), recorded.due("kick_off_l", Side.LEFT, 30, 0, 0));
         // the other team's kick-off, another kind, play on: none
-        assertNull(recorded.due("kick_off_r", Side.LEFT, 100));
-        assertNull(recorded.due("free_kick_l", Side.LEFT, 100));
-        assertNull(recorded.due("play_on", Side.LEFT, 100));
+        assertNull(recorded.due("kick_off_r", Side.LEFT, 100, 0, 0));
+        assertNull(recorded.due("free_kick_l", Side.LEFT, 100, 0, 0));
+        assertNull(recorded.due("play_on", Side.LEFT, 100, 0, 0));
         // a right player reads kick_off_r as its own
         assertEquals("kick_off", SetPlayKicks.ownKind("kick_off_r", Side.RIGHT));
         assertNull(SetPlayKicks.ownKind("goal_l", Side.LEFT));
@@ -70,8 +70,8 @@ class SetPlayKicksTest {
         scenes.add(at(26, "play_on", Action.kick(100, 0)));
         SetPlayKicks recorded = SetPlayKicks.of(scenes);
         assertEquals(1, recorded.size());
-        assertSame(kick, recorded.due("kick_off_l", Side.LEFT, 25));
-        assertNull(recorded.due("kick_off_l", Side.LEFT, 24));
+        assertSame(kick, recorded.due("kick_off_l", Side.LEFT, 25, 0, 0));
+        assertNull(recorded.due("kick_off_l", Side.LEFT, 24, 0, 0));
     }
 
     @Test
@@ -83,10 +83,10 @@ class SetPlayKicksTest {
         team.addAll(setPlay("free_kick_l", 100, 15, Action.kick(80, 10), others));
         SetPlayKicks withTeam = player.orTeams(SetPlayKicks.of(team));
         // its own kick-off, after its own wait; the team's free kick, after the team's wait
-        assertSame(own.get(0), withTeam.due("kick_off_l", Side.LEFT, 20));
-        assertNull(withTeam.due("free_kick_l", Side.LEFT, 14));
-        assertSame(others.get(1), withTeam.due("free_kick_l", Side.LEFT, 15));
-        assertNull(player.due("free_kick_l", Side.LEFT, 1000), "alone it never takes a free kick");
+        assertSame(own.get(0), withTeam.due("kick_off_l", Side.LEFT, 20, 0, 0));
+        assertNull(withTeam.due("free_kick_l", Side.LEFT, 14, 0, 0));
+        assertSame(others.get(1), withTeam.due("free_kick_l", Side.LEFT, 15, 0, 0));
+        assertNull(player.due("free_kick_l", Side.LEFT, 1000, 0, 0), "alone it never takes a free kick");
         assertSame(player, player.orTeams(SetPlayKicks.of(kickOff(0, 5, new ArrayList<>()))),
                 "nothing the team took that it did not");
     }
@@ -101,6 +101,36 @@ class SetPlayKicksTest {
             waiting.add(at(t, "kick_off_l", Action.turn(30)));
         }
         assertSame(SetPlayKicks.NONE, SetPlayKicks.of(waiting));
-        assertNull(SetPlayKicks.NONE.due("kick_off_l", Side.LEFT, 1000));
+        assertNull(SetPlayKicks.NONE.due("kick_off_l", Side.LEFT, 1000, 0, 0));
+    }
+
+    /** A kick-in of the left team with the ball at ({@code x}, {@code y}), taken after 5 cycles. */
+    private static List<Scene> kickIn(int start, double x, double y, Action kick, List<Scene> kicks) {
+        List<Scene> scenes = new ArrayList<>();
+        for (int t = 0; t <= 5; t++) {
+            World world = new World(x - 0.5, y, 0, 0, 0, 0, 8000, 1, 0, x, y, 0, 0, 0, List.of(), "kick_in_l", 0, 0);
+            Scene scene = new Scene(start + t, LEFT_TEN, List.of(), List.of(t < 5 ? Action.turn(30) : kick), null, 0, world);
+            scenes.add(scene);
+            if (t == 5) {
+                kicks.add(scene);
+            }
+        }
+        scenes.add(at(start + 6, "play_on", Action.dash(100)));
+        return scenes;
+    }
+
+    @Test
+    void theKickTakenNearestWhereTheBallLiesIsTheOneTaken() {
+        List<Scene> kicks = new ArrayList<>();
+        List<Scene> scenes = new ArrayList<>(kickIn(0, 10, -34, Action.kick(60, 90), kicks));
+        scenes.addAll(kickIn(100, 20, 34, Action.kick(60, -90), kicks));
+        SetPlayKicks recorded = SetPlayKicks.of(scenes);
+        // from the far touchline the kick towards the field is the one taken there
+        assertSame(kicks.get(1), recorded.taken("kick_in_l", Side.LEFT, -5, 34));
+        assertSame(kicks.get(0), recorded.taken("kick_in_l", Side.LEFT, 30, -34));
+        assertSame(kicks.get(1), recorded.due("kick_in_l", Side.LEFT, 5, 25, 34));
+        assertNull(recorded.due("kick_in_l", Side.LEFT, 4, 25, 34));
+        assertSame(kicks.get(0), recorded.taken("kick_in_l", Side.LEFT, Double.NaN, Double.NaN), "no ball: the first");
+        assertNull(recorded.taken("kick_in_r", Side.LEFT, 10, -34), "the other team's kick-in");
     }
 }
