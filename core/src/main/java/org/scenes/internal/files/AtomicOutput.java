@@ -49,6 +49,8 @@ public final class AtomicOutput implements AutoCloseable {
 
     /** Temporary files not yet committed or abandoned: what the shutdown hook deletes. */
     private static final Set<Path> OPEN = ConcurrentHashMap.newKeySet();
+    /** Set by {@link #abandonAll()}, under {@code OPEN}'s lock: the process is stopping, no output opens. */
+    private static boolean stopping;
     private static final long PID = ProcessHandle.current().pid();
     /** {@code .<target>.<pid>-<random>.tmp}: this class's temporary files and nobody else's. */
     private static final Pattern TEMPORARY = Pattern.compile("\\..+\\.([0-9]{1,19})-[0-9a-z]{1,13}\\.tmp");
@@ -93,13 +95,20 @@ public final class AtomicOutput implements AutoCloseable {
             // The name carries the writer's PID, so a later writer can tell a dead writer's leftover.
             this.temporary = directory.resolve("." + this.target.getFileName() + "." + PID + "-" + Long.toUnsignedString(
                     ThreadLocalRandom.current().nextLong(), 36) + ".tmp");
-            OPEN.add(temporary);
-            try {
-                out = new BufferedOutputStream(Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW), 1 << 16);
-            } catch (IOException e) {
-                OPEN.remove(temporary);
-                // the temporary file's name means nothing to the user: name the target and the reason
-                throw new IOException(requested + ": cannot write in " + directory + ": " + IoErrors.reason(e), e);
+            // created and registered at once, and not after abandonAll: the command's own threads run on
+            // while the shutdown hooks do, and a file opened behind the hook's back would stay
+            synchronized (OPEN) {
+                if (stopping) {
+                    throw new IOException(requested + ": not written: the command is stopping");
+                }
+                try {
+                    out = new BufferedOutputStream(Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW),
+                            1 << 16);
+                } catch (IOException e) {
+                    // the temporary file's name means nothing to the user: name the target and the reason
+                    throw new IOException(requested + ": cannot write in " + directory + ": " + IoErrors.reason(e), e);
+                }
+                OPEN.add(temporary);
             }
         }
         OutputStream named = new NamedErrors(out, requested);
@@ -216,9 +225,13 @@ public final class AtomicOutput implements AutoCloseable {
     /**
      * Deletes the temporary files of every output neither committed nor closed, for a shutdown hook
      * of a command whose interrupted work is abandoned; returns the targets that were not written.
+     * From then on no output of this process opens (it fails, naming its target).
      */
     public static List<Path> abandonAll() {
         List<Path> abandoned = new ArrayList<>();
+        synchronized (OPEN) {
+            stopping = true;
+        }
         for (Path temporary : List.copyOf(OPEN)) {
             try {
                 Files.deleteIfExists(temporary);
@@ -232,6 +245,13 @@ public final class AtomicOutput implements AutoCloseable {
             }
         }
         return abandoned;
+    }
+
+    /** Lets outputs open again after {@link #abandonAll()}: for tests, which go on in the same JVM. */
+    static void resumeAfterAbandon() {
+        synchronized (OPEN) {
+            stopping = false;
+        }
     }
 
     public static AtomicOutput create(Path target) throws IOException {

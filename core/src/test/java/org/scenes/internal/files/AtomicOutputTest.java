@@ -139,6 +139,24 @@ class AtomicOutputTest {
     }
 
     @Test
+    void onceTheOutputsAreAbandonedNoneOpensSoNoTemporaryFileOutlivesTheStop() throws Exception {
+        // a command's threads run on while its shutdown hook abandons the outputs: one opening then would stay
+        Path earlier = dir.resolve("earlier.txt");
+        Path later = dir.resolve("later.txt");
+        try (AtomicOutput open = AtomicOutput.create(earlier)) {
+            open.stream().write("half".getBytes(StandardCharsets.US_ASCII));
+            assertEquals(List.of(earlier.toAbsolutePath()), AtomicOutput.abandonAll());
+            IOException refused = assertThrows(IOException.class, () -> AtomicOutput.create(later));
+            assertEquals(later + ": not written: the command is stopping", refused.getMessage());
+            assertEquals(List.of(), names(), "neither target nor temporary file");
+        } finally {
+            AtomicOutput.resumeAfterAbandon();
+        }
+        write(later, "whole");
+        assertEquals(List.of("later.txt"), names());
+    }
+
+    @Test
     void aDirectoryIsRefused() throws Exception {
         Path sub = Files.createDirectory(dir.resolve("sub"));
         IOException error = assertThrows(IOException.class, () -> AtomicOutput.create(sub));
