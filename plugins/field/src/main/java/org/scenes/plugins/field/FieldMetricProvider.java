@@ -257,7 +257,8 @@ public final class FieldMetricProvider implements MetricProvider {
             double sum = 0;
             if (!query.mode().equals(stored.mode())) {
                 sum = penalties.playMode() * penalties.playMode();
-                if (PLACEMENT_MODES.contains(query.mode()) != PLACEMENT_MODES.contains(stored.mode())) {
+                if (penalties.placement() > 0
+                        && PLACEMENT_MODES.contains(query.mode()) != PLACEMENT_MODES.contains(stored.mode())) {
                     sum += penalties.placement() * penalties.placement();
                 }
             }
