@@ -100,13 +100,12 @@ final class SetPlayKicks {
      * player never took one of that kind.
      */
     Scene due(String mode, Side side, int waited, double ballX, double ballY) {
-        String kind = ownKind(mode, side);
-        List<Kick> kicks = kind == null ? null : byKind.get(kind);
+        List<Kick> kicks = kicks(mode, side);
         if (kicks == null) {
             return null;
         }
         int[] waits = kicks.stream().mapToInt(Kick::waited).sorted().toArray();
-        return waited >= waits[waits.length / 2] ? taken(mode, side, ballX, ballY) : null;
+        return waited >= waits[waits.length / 2] ? nearest(kicks, ballX, ballY) : null;
     }
 
     /**
@@ -116,11 +115,17 @@ final class SetPlayKicks {
      * send the ball out of the field. Null in other play modes or for a kind never taken.
      */
     Scene taken(String mode, Side side, double ballX, double ballY) {
+        List<Kick> kicks = kicks(mode, side);
+        return kicks == null ? null : nearest(kicks, ballX, ballY);
+    }
+
+    /** The recorded kicks of this set play's kind when the player's own side restarts it, else null. */
+    private List<Kick> kicks(String mode, Side side) {
         String kind = ownKind(mode, side);
-        List<Kick> kicks = kind == null ? null : byKind.get(kind);
-        if (kicks == null) {
-            return null;
-        }
+        return kind == null ? null : byKind.get(kind);
+    }
+
+    private static Scene nearest(List<Kick> kicks, double ballX, double ballY) {
         Scene nearest = kicks.get(0).scene();
         double least = Double.POSITIVE_INFINITY;
         for (Kick kick : kicks) {
