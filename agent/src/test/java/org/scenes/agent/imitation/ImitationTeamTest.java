@@ -26,6 +26,8 @@ import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileWriter;
 import org.scenes.internal.scene.SceneSource;
+import org.scenes.internal.target.Destinations;
+import org.scenes.internal.target.Replay;
 import org.scenes.simulator.Brain;
 import org.scenes.simulator.BrainFactory;
 
@@ -82,6 +84,19 @@ class ImitationTeamTest {
         List<String> stranger = play(brains, 7);
         assertTrue(stranger.get(0).startsWith("(move -"), "no counterpart: a random spot, as before");
         assertEquals("(kick 100 0)", stranger.get(1), "no counterpart: the team's scenes, nearest first");
+    }
+
+    @Test
+    void targetBrainsHaveEveryRolesDestinationsMadeBeforeAnyInitArrives() throws IOException {
+        ImitationTeam raw = team(ImitationTeam.Knowledge.COUNTERPART);
+        raw.brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF, Replay.RAW);
+        assertFalse(Destinations.made(raw.recognizer(1).knowledge()), "raw replay needs no destinations");
+        ImitationTeam target = team(ImitationTeam.Knowledge.COUNTERPART);
+        target.brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF, Replay.TARGET);
+        for (int unum : List.of(1, 2)) {
+            assertTrue(Destinations.made(target.recognizer(unum).knowledge()), "counterpart " + unum);
+        }
+        assertTrue(Destinations.made(target.knowledge()), "the team's, for players without a counterpart");
     }
 
     @Test

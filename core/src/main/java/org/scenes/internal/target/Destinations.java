@@ -96,6 +96,13 @@ public final class Destinations {
         }
     }
 
+    /** Whether the destinations of this knowledge base are already made (and {@link #of} returns at once). */
+    public static boolean made(KnowledgeBase knowledge) {
+        synchronized (CACHE) {
+            return CACHE.containsKey(knowledge);
+        }
+    }
+
     /** The destinations of scenes all played in stored order. */
     static Destinations of(List<Scene> scenes) {
         return of(scenes, scenes.size());
