@@ -3,11 +3,17 @@ package org.scenes.internal.convert;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
 import org.scenes.api.Observer;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.PlayerState;
 import org.scenes.internal.protocol.MessageParser;
+import org.scenes.internal.protocol.See;
+import org.scenes.internal.protocol.SenseBody;
+import org.scenes.internal.protocol.VisualObject;
 import org.scenes.internal.vision.SeeWriter;
 import org.scenes.internal.vision.VisionNumbers;
 
@@ -21,7 +27,6 @@ final class PerceptWriter {
     private final Path gameLog;
     private final GameParameters parameters;
     private final SceneConverter converter;
-    private final StringBuilder text = new StringBuilder(4096);
     /** This writer's own: a parser serves one thread. */
     private final MessageParser parser = new MessageParser();
 
@@ -71,9 +76,10 @@ final class PerceptWriter {
             player.writer = new SeeWriter(parameters.vision(self.type(), player.version), player.fading);
         }
         SeeWriter writer = player.writer;
-        text.setLength(0);
+        // the see as the parser would read it, not as text to read back: that round trip was half a conversion's time
+        List<VisualObject> objects = new ArrayList<>(48);
         double head = VisionNumbers.normalize(self.body() + self.neck());
-        writer.begin(text, frame.time(), self.x(), self.y(), self.vx(), self.vy(), head, self.viewWidth(),
+        writer.begin(objects, self.x(), self.y(), self.vx(), self.vy(), head, self.viewWidth(),
                 self.viewQuality() == 'h');
         writer.landmarks();
         GameFrame.BallState ball = frame.ball();
@@ -89,7 +95,7 @@ final class PerceptWriter {
         }
         writer.lines();
         writer.end();
-        line(player, text);
+        player.feed.line(new See(frame.time(), objects, List.of()));
     }
 
     /** The bare {@code sense_body} of a cycle, when no world model reads its fields. */
@@ -99,30 +105,37 @@ final class PerceptWriter {
 
     /**
      * The player's {@code sense_body} as the server writes it (version 7's fields, which the
-     * world model reads): stamina, speed relative to the head, neck angle, command counts.
+     * world model reads): stamina, speed relative to the head, neck angle, command counts; given
+     * as the parser reads the server's text (numbers rounded as it writes them), not as text to read back.
      */
     void senseBody(RebuiltPlayer player, PlayerState self, int time) throws IOException {
-        double speed = Math.hypot(self.vx(), self.vy());
-        double head = self.body() + self.neck();
-        double direction = speed < 1e-9 ? 0
-                : Math.rint(VisionNumbers.normalize(Math.toDegrees(Math.atan2(self.vy(), self.vx())) - head));
+        player.feed.line(senseBodyOf(self, time));
+    }
+
+    /** The {@code sense_body} of {@link #senseBody}: each number as the parser reads the server's text of it. */
+    static SenseBody senseBodyOf(PlayerState self, int time) {
         PlayerState.Counts c = self.counts();
-        text.setLength(0);
-        text.append("(sense_body ").append(time).append(" (view_mode ")
-                .append(self.viewQuality() == 'h' ? "high " : "low ")
-                .append(self.viewWidth() <= 60 ? "narrow" : self.viewWidth() >= 180 ? "wide" : "normal")
-                .append(") (stamina ");
-        VisionNumbers.append(text, Math.rint(self.stamina()), 0).append(' ');
-        VisionNumbers.append(text, self.effort(), 6).append(' ');
-        VisionNumbers.append(text, self.capacity(), 0).append(") (speed ");
-        VisionNumbers.append(text, VisionNumbers.quantize(speed, 0.01), 2).append(' ');
-        VisionNumbers.append(text, direction, 0).append(") (head_angle ");
-        VisionNumbers.append(text, Math.rint(self.neck()), 0).append(") (kick ").append(c.kick())
-                .append(") (dash ").append(c.dash()).append(") (turn ").append(c.turn())
-                .append(") (say ").append(c.say()).append(") (turn_neck ").append(c.turnNeck())
-                .append(") (catch ").append(c.catches()).append(") (move ").append(c.move())
-                .append(") (change_view ").append(c.changeView()).append("))");
-        line(player, text);
+        return new SenseBody(time, self.viewQuality() == 'h' ? "high" : "low", viewWidth(self),
+                VisionNumbers.asRead(Math.rint(self.stamina()), 0), VisionNumbers.asRead(self.effort(), 6),
+                VisionNumbers.asRead(self.capacity(), 0), VisionNumbers.asRead(VisionNumbers.quantize(speed(self), 0.01), 2),
+                VisionNumbers.asRead(speedDirection(self), 0), VisionNumbers.asRead(Math.rint(self.neck()), 0),
+                new SenseBody.Counts(c.kick(), c.dash(), c.turn(), c.say(), c.turnNeck(), c.catches(), c.move(),
+                        c.changeView(), -1), Map.of(), List.of());
+    }
+
+    private static String viewWidth(PlayerState self) {
+        return self.viewWidth() <= 60 ? "narrow" : self.viewWidth() >= 180 ? "wide" : "normal";
+    }
+
+    private static double speed(PlayerState self) {
+        return Math.hypot(self.vx(), self.vy());
+    }
+
+    /** The direction of the player's velocity relative to its head, whole degrees (0 when still). */
+    private static double speedDirection(PlayerState self) {
+        double head = self.body() + self.neck();
+        return speed(self) < 1e-9 ? 0
+                : Math.rint(VisionNumbers.normalize(Math.toDegrees(Math.atan2(self.vy(), self.vx())) - head));
     }
 
     /** The referee's call when the play mode changed since the player last heard ({@code goal_l_2} for goals). */

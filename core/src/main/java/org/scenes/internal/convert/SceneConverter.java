@@ -226,6 +226,21 @@ public final class SceneConverter {
             }
         }
 
+        /**
+         * The next line of the log, one {@code see} given as the parser would read its text (a see
+         * rebuilt from a game log): converted as that line would be.
+         */
+        public void line(See see) throws IOException {
+            line++;
+            run.built(see);
+        }
+
+        /** The next line of the log, one {@code sense_body} given as the parser would read its text. */
+        public void line(SenseBody senseBody) throws IOException {
+            line++;
+            run.handle(senseBody);
+        }
+
         /** Ends the log: closes the open scene; the report of the whole log. */
         public ConversionReport finish(long bytes) throws IOException {
             run.finish();
@@ -407,6 +422,19 @@ public final class SceneConverter {
             }
         }
 
+        /** A see given as read: a repeat is an equal see, as a read one is a line of equal bytes. */
+        void built(See see) throws IOException {
+            if (pending != null && pendingLength < 0 && see.equals(pending)) {
+                report.message();
+                report.see();
+                report.repeatedSee();
+                return;
+            }
+            lineBytes = null;
+            lineLength = -1;
+            handle(see);
+        }
+
         boolean isRepeat(byte[] bytes, int offset, int length) {
             return pending != null && length == pendingLength
                     && Arrays.equals(pendingBytes, 0, length, bytes, offset, offset + length);
@@ -467,6 +495,10 @@ public final class SceneConverter {
             pendingWorld = worldModel != null && !perCycle ? worldModel.snapshot(see.time()) : null;
             // the whole line: a server sends one message per datagram, and repeats are whole lines
             int length = lineLength;
+            if (lineBytes == null) {
+                pendingLength = -1; // a see given as read: its repeats are equal sees (built)
+                return;
+            }
             if (pendingBytes.length < length) {
                 pendingBytes = new byte[Math.max(length, pendingBytes.length * 2)];
             }

@@ -1,6 +1,9 @@
 package org.scenes.internal.vision;
 
+import java.util.List;
 import java.util.Objects;
+import org.scenes.api.ObjectKind;
+import org.scenes.internal.protocol.VisualObject;
 
 /**
  * Writes the {@code see} a player gets, as version 7-17 text, from where everything is: the
@@ -19,7 +22,9 @@ public final class SeeWriter {
     /** Squared visible distance plus a metre. */
     private final double clearlyFar2;
 
+    /** Where the see goes: its text, or (when text is null) its objects. */
     private StringBuilder text;
+    private List<VisualObject> objects;
     private double selfX;
     private double selfY;
     private double selfVx;
@@ -48,6 +53,23 @@ public final class SeeWriter {
     public void begin(StringBuilder out, int time, double x, double y, double vx, double vy, double head,
                       double cone, boolean highQuality) {
         this.text = out;
+        this.objects = null;
+        start(x, y, vx, vy, head, cone, highQuality);
+        out.append("(see ").append(time);
+    }
+
+    /**
+     * The same see as objects into {@code out}, each as a reader of {@link #begin}'s text gets it
+     * (for the converter, which then need not read the text it wrote).
+     */
+    public void begin(List<VisualObject> out, double x, double y, double vx, double vy, double head, double cone,
+                      boolean highQuality) {
+        this.text = null;
+        this.objects = out;
+        start(x, y, vx, vy, head, cone, highQuality);
+    }
+
+    private void start(double x, double y, double vx, double vy, double head, double cone, boolean highQuality) {
         this.selfX = x;
         this.selfY = y;
         this.selfVx = vx;
@@ -61,7 +83,6 @@ public final class SeeWriter {
         narrowView = halfAngle + 1 < 90;
         headX = Math.cos(Math.toRadians(head));
         headY = Math.sin(Math.toRadians(head));
-        out.append("(see ").append(time);
     }
 
     /** The flags and goals, in {@link Landmarks#ALL}'s order. */
@@ -86,8 +107,11 @@ public final class SeeWriter {
 
     /** Ends the see. */
     public void end() {
-        text.append(')');
+        if (text != null) {
+            text.append(')');
+        }
         text = null;
+        objects = null;
     }
 
     /**
@@ -110,81 +134,114 @@ public final class SeeWriter {
         }
         double seenDirection = Math.rint(direction);
         if (!highQuality) {
-            lowQuality(name, behindName, behind, distance, seenDirection, team);
+            // low quality: only the direction, players by team alone
+            if (behind) {
+                seen(behindName, "", 0, false, Double.NaN, seenDirection);
+            } else if (team == null) {
+                seen(name, "", 0, false, Double.NaN, seenDirection);
+            } else {
+                seen("p", fading.shown(distance, p.teamFarLength(), p.teamTooFarLength()) ? team : "", 0, false,
+                        Double.NaN, seenDirection);
+            }
             return;
         }
         double seenDistance = VisionNumbers.seenDistance(distance, quantizeStep);
         if (behind) {
-            text.append(" ((").append(behindName).append(") ");
-            VisionNumbers.append(text, seenDistance, 1).append(' ');
-            VisionNumbers.append(text, seenDirection, 0).append(')');
+            seen(behindName, "", 0, false, seenDistance, seenDirection);
             return;
         }
-        text.append(" ((");
         boolean changes;
+        String seenName = name;
+        String seenTeam = "";
+        int seenUnum = 0;
         if (team == null) {
-            text.append(name);
             changes = fading.shown(seenDistance, changesFar, changesTooFar);
         } else if (fading.shown(seenDistance, p.teamFarLength(), p.teamTooFarLength())) {
-            text.append("p \"").append(team).append('"');
+            seenName = "p";
+            seenTeam = team;
             // a player's changes and facing come with its number
             changes = fading.shown(seenDistance, changesFar, changesTooFar);
-            if (changes) {
+            seenUnum = changes ? unum : 0;
+        } else {
+            seenName = "p";
+            changes = false;
+        }
+        boolean seenGoalie = seenUnum > 0 && goalie;
+        if (!changes || distance <= 0) {
+            seen(seenName, seenTeam, seenUnum, seenGoalie, seenDistance, seenDirection);
+            return;
+        }
+        // Relative velocity split along and across the line of sight; the radial part is
+        // quantised relative to the distance and scaled by the seen distance, as the server does.
+        double rvx = vx - selfVx;
+        double rvy = vy - selfVy;
+        double ex = dx / distance;
+        double ey = dy / distance;
+        double distanceChange = seenDistance * VisionNumbers.quantize((rvx * ex + rvy * ey) / distance, 0.02);
+        double directionChange = Math.toDegrees((rvy * ex - rvx * ey) / distance);
+        // An exactly zero direction change stays 0; a tiny negative one quantises to -0.
+        directionChange = directionChange == 0 ? 0 : VisionNumbers.quantize(directionChange, 0.1);
+        double seenBody = team == null ? Double.NaN : Math.rint(VisionNumbers.normalize(body - head));
+        double seenHead = team == null ? Double.NaN : Math.rint(VisionNumbers.normalize(playerHead - head));
+        if (objects != null) {
+            objects.add(new VisualObject(kindOf(seenName), seenName, seenTeam, seenUnum, seenGoalie,
+                    VisionNumbers.asRead(seenDistance, 1), VisionNumbers.asRead(seenDirection, 0),
+                    VisionNumbers.asReadChange(distanceChange, 4), VisionNumbers.asReadChange(directionChange, 1),
+                    team == null ? Double.NaN : VisionNumbers.asRead(seenBody, 0),
+                    team == null ? Double.NaN : VisionNumbers.asRead(seenHead, 0), Double.NaN, ' '));
+            return;
+        }
+        name(seenName, seenTeam, seenUnum, seenGoalie);
+        VisionNumbers.append(text, seenDistance, 1).append(' ');
+        VisionNumbers.append(text, seenDirection, 0);
+        VisionNumbers.appendChange(text.append(' '), distanceChange, 4);
+        VisionNumbers.appendChange(text.append(' '), directionChange, 1);
+        if (team != null) {
+            VisionNumbers.append(text.append(' '), seenBody, 0);
+            VisionNumbers.append(text.append(' '), seenHead, 0);
+        }
+        text.append(')');
+    }
+
+    /** An object seen without changes: its distance (NaN: none, low quality) and direction. */
+    private void seen(String name, String team, int unum, boolean goalie, double distance, double direction) {
+        if (objects != null) {
+            objects.add(new VisualObject(kindOf(name), name, team, unum, goalie,
+                    Double.isNaN(distance) ? Double.NaN : VisionNumbers.asRead(distance, 1),
+                    VisionNumbers.asRead(direction, 0), Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
+                    ' '));
+            return;
+        }
+        name(name, team, unum, goalie);
+        if (!Double.isNaN(distance)) {
+            VisionNumbers.append(text, distance, 1).append(' ');
+        }
+        VisionNumbers.append(text, direction, 0).append(')');
+    }
+
+    /** {@code " ((NAME) "}, a player's as {@code p "TEAM" UNUM goalie} as far as it is readable. */
+    private void name(String name, String team, int unum, boolean goalie) {
+        text.append(" ((").append(name);
+        if (!team.isEmpty()) {
+            text.append(" \"").append(team).append('"');
+            if (unum > 0) {
                 text.append(' ').append(unum);
                 if (goalie) {
                     text.append(" goalie");
                 }
             }
-        } else {
-            text.append('p');
-            changes = false;
         }
         text.append(") ");
-        VisionNumbers.append(text, seenDistance, 1).append(' ');
-        VisionNumbers.append(text, seenDirection, 0);
-        if (changes && distance > 0) {
-            // Relative velocity split along and across the line of sight; the radial part is
-            // quantised relative to the distance and scaled by the seen distance, as the server does.
-            double rvx = vx - selfVx;
-            double rvy = vy - selfVy;
-            double ex = dx / distance;
-            double ey = dy / distance;
-            double distanceChange = seenDistance * VisionNumbers.quantize((rvx * ex + rvy * ey) / distance, 0.02);
-            double directionChange = Math.toDegrees((rvy * ex - rvx * ey) / distance);
-            // An exactly zero direction change stays 0; a tiny negative one quantises to -0.
-            directionChange = directionChange == 0 ? 0 : VisionNumbers.quantize(directionChange, 0.1);
-            VisionNumbers.appendChange(text.append(' '), distanceChange, 4);
-            VisionNumbers.appendChange(text.append(' '), directionChange, 1);
-            if (team != null) {
-                VisionNumbers.append(text.append(' '), Math.rint(VisionNumbers.normalize(body - head)), 0);
-                VisionNumbers.append(text.append(' '), Math.rint(VisionNumbers.normalize(playerHead - head)), 0);
-            }
-        }
-        text.append(')');
     }
 
-    /**
-     * Low view quality: the server sends only the direction of what is in the cone (and of what
-     * is behind within visible_distance), without distance or changes; players by team alone.
-     */
-    private void lowQuality(String name, String behindName, boolean behind, double distance, double seenDirection,
-                            String team) {
-        if (behind) {
-            // within visible_distance: the caller left out what is farther
-            text.append(" ((").append(behindName).append(") ");
-            VisionNumbers.append(text, seenDirection, 0).append(')');
-            return;
-        }
-        text.append(" ((");
-        if (team == null) {
-            text.append(name);
-        } else if (fading.shown(distance, p.teamFarLength(), p.teamTooFarLength())) {
-            text.append("p \"").append(team).append('"');
-        } else {
-            text.append('p');
-        }
-        text.append(") ");
-        VisionNumbers.append(text, seenDirection, 0).append(')');
+    private static ObjectKind kindOf(String name) {
+        return switch (Character.toLowerCase(name.charAt(0))) {
+            case 'b' -> ObjectKind.BALL;
+            case 'g' -> ObjectKind.GOAL;
+            case 'f' -> ObjectKind.FLAG;
+            case 'p' -> ObjectKind.PLAYER;
+            default -> ObjectKind.LINE;
+        };
     }
 
     /**
@@ -232,9 +289,8 @@ public final class SeeWriter {
                 continue;
             }
             double direction = sight > 0 ? sight - 90 : sight + 90;
-            text.append(" ((").append(line.name()).append(") ");
-            VisionNumbers.append(text, VisionNumbers.seenDistance(Math.abs(distance), p.quantizeStepL()), 1).append(' ');
-            VisionNumbers.append(text, Math.rint(direction), 0).append(')');
+            seen(line.name(), "", 0, false, VisionNumbers.seenDistance(Math.abs(distance), p.quantizeStepL()),
+                    Math.rint(direction));
             wanted--;
         }
     }

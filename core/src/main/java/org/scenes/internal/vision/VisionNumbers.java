@@ -47,6 +47,24 @@ public final class VisionNumbers {
         return append(text, value, decimals);
     }
 
+    /**
+     * The number a reader gets from {@link #append}'s text: the value rounded to {@code decimals}
+     * places, 0 for what rounds to zero. A quotient of two whole numbers is the double nearest the
+     * decimal, as a decimal read back is, however many trailing zeros the text leaves out.
+     */
+    public static double asRead(double value, int decimals) {
+        long scaled = Math.round(value * SCALE[decimals]);
+        return scaled == 0 ? 0 : scaled / SCALE[decimals];
+    }
+
+    /** The number a reader gets from {@link #appendChange}'s text: {@link #asRead}, but -0 where it writes {@code -0}. */
+    public static double asReadChange(double value, int decimals) {
+        if (Math.round(value * SCALE[decimals]) == 0 && (value < 0 || 1 / value < 0)) {
+            return -0.0;
+        }
+        return asRead(value, decimals);
+    }
+
     /** The value rounded to at most {@code decimals} places, without trailing zeros or {@code -0}. */
     public static String format(double value, int decimals) {
         return append(new StringBuilder(16), value, decimals).toString();
