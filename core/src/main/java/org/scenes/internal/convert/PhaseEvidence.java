@@ -125,11 +125,13 @@ final class PhaseEvidence {
         for (int i = 0; i < situations.size(); i++) {
             double nearest = Double.MAX_VALUE;
             int nearestAt = -1;
-            for (int j = 0; j < situations.size(); j++) {
+            float[] here = situations.get(i);
+            for (int j = 0; j < situations.size() && nearest > 0; j++) {
+                // nothing is nearer than 0, and of equals the first counts: the search can stop there
                 if (j == i) {
                     continue;
                 }
-                double d = distance(situations.get(i), situations.get(j));
+                double d = distance(here, situations.get(j));
                 if (d < nearest) {
                     nearest = d;
                     nearestAt = j;
