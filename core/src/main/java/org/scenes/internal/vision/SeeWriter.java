@@ -11,9 +11,10 @@ import org.scenes.internal.protocol.VisualObject;
  * logs"). Objects in the view cone get their quantised distance and direction (and, near enough,
  * their changes, a player's team, number and facing); objects behind within
  * {@code visible_distance} come in upper case without identity; lines as the server finds them.
- * The simulator and the game-log converter both see through it.
+ * The simulator and the game-log converter both see through it: the simulator's clients get the
+ * text; the converter takes the objects a parser reads from that text, without the text.
  *
- * <p>Use: {@link #begin}, then {@link #landmarks}, {@link #ball}, each {@link #player} and
+ * <p>Use: {@link #begin} (text or objects), then {@link #landmarks}, {@link #ball}, each {@link #player} and
  * {@link #lines} in the server's order, then {@link #end}. Not thread-safe.
  */
 public final class SeeWriter {
