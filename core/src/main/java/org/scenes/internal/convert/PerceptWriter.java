@@ -76,7 +76,7 @@ final class PerceptWriter {
             player.writer = new SeeWriter(parameters.vision(self.type(), player.version), player.fading);
         }
         SeeWriter writer = player.writer;
-        // the see as the parser would read it, not as text to read back: that round trip was half a conversion's time
+        // the see as the parser would read it, not as text to read back: that round trip took a third of a conversion
         List<VisualObject> objects = new ArrayList<>(48);
         double head = VisionNumbers.normalize(self.body() + self.neck());
         writer.begin(objects, self.x(), self.y(), self.vx(), self.vy(), head, self.viewWidth(),
