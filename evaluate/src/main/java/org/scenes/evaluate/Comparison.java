@@ -86,6 +86,8 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
                 LogFigures::runLength));
         figures.add(figure("nearBall", "play on within 1 m of the ball", true, teacherLog, imitatorLog,
                 LogFigures::nearBall));
+        figures.add(figure("looseBallsPlayed", "loose balls played within 10 cycles", true, teacherLog, imitatorLog,
+                LogFigures::looseBallsPlayed));
         figures.add(figure("onPitch", "play on inside the field lines", true, teacherLog, imitatorLog,
                 LogFigures::onPitch));
         figures.add(figure("goalieInArea", "goalie in its penalty area, play on", true, teacherLog, imitatorLog,

@@ -77,6 +77,8 @@ public final class HtmlReport {
                 List.of("bodyPerStep", "repeatShare"), 100, "0.0"));
         html.append(bars(comparison, "Where the players are (game log)", "% of play-on frames",
                 List.of("nearBall", "onPitch", "goalieInArea", "logStuckShare", "kickOffsTaken"), 100, "0.0"));
+        html.append(bars(comparison, "Loose balls played (game log)", "% of loose balls nearest to the team",
+                List.of("looseBallsPlayed"), 100, "0.0"));
         html.append(bars(comparison, "Per 1000 cycles", "per 1000 cycles",
                 List.of("kicksPer1000", "goalsPer1000", "goalsAgainstPer1000"), 1, "0.00"));
         html.append(bars(comparison, "Distance to ball", "m", List.of("ballDistance"), 1, "0.0"));
