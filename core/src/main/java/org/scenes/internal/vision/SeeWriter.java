@@ -184,40 +184,50 @@ public final class SeeWriter {
         directionChange = directionChange == 0 ? 0 : VisionNumbers.quantize(directionChange, 0.1);
         double seenBody = team == null ? Double.NaN : Math.rint(VisionNumbers.normalize(body - head));
         double seenHead = team == null ? Double.NaN : Math.rint(VisionNumbers.normalize(playerHead - head));
-        if (objects != null) {
-            objects.add(new VisualObject(kindOf(seenName), seenName, seenTeam, seenUnum, seenGoalie,
-                    VisionNumbers.asRead(seenDistance, 1), VisionNumbers.asRead(seenDirection, 0),
-                    VisionNumbers.asReadChange(distanceChange, 4), VisionNumbers.asReadChange(directionChange, 1),
-                    team == null ? Double.NaN : VisionNumbers.asRead(seenBody, 0),
-                    team == null ? Double.NaN : VisionNumbers.asRead(seenHead, 0), Double.NaN, ' '));
-            return;
-        }
-        name(seenName, seenTeam, seenUnum, seenGoalie);
-        VisionNumbers.append(text, seenDistance, 1).append(' ');
-        VisionNumbers.append(text, seenDirection, 0);
-        VisionNumbers.appendChange(text.append(' '), distanceChange, 4);
-        VisionNumbers.appendChange(text.append(' '), directionChange, 1);
-        if (team != null) {
-            VisionNumbers.append(text.append(' '), seenBody, 0);
-            VisionNumbers.append(text.append(' '), seenHead, 0);
-        }
-        text.append(')');
+        seen(seenName, seenTeam, seenUnum, seenGoalie, seenDistance, seenDirection, distanceChange, directionChange,
+                seenBody, seenHead);
     }
 
     /** An object seen without changes: its distance (NaN: none, low quality) and direction. */
     private void seen(String name, String team, int unum, boolean goalie, double distance, double direction) {
+        seen(name, team, unum, goalie, distance, direction, Double.NaN, Double.NaN, Double.NaN, Double.NaN);
+    }
+
+    /**
+     * One object into the text or the objects: NaN for a number not sent (the changes of an object
+     * too far, a facing other than a player's).
+     */
+    private void seen(String name, String team, int unum, boolean goalie, double distance, double direction,
+                      double distanceChange, double directionChange, double body, double playerHead) {
         if (objects != null) {
-            objects.add(new VisualObject(kindOf(name), name, team, unum, goalie,
-                    Double.isNaN(distance) ? Double.NaN : VisionNumbers.asRead(distance, 1),
-                    VisionNumbers.asRead(direction, 0), Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
-                    ' '));
+            objects.add(new VisualObject(kindOf(name), name, team, unum, goalie, read(distance, 1),
+                    VisionNumbers.asRead(direction, 0), readChange(distanceChange, 4), readChange(directionChange, 1),
+                    read(body, 0), read(playerHead, 0), Double.NaN, ' '));
             return;
         }
         name(name, team, unum, goalie);
         if (!Double.isNaN(distance)) {
             VisionNumbers.append(text, distance, 1).append(' ');
         }
-        VisionNumbers.append(text, direction, 0).append(')');
+        VisionNumbers.append(text, direction, 0);
+        if (!Double.isNaN(distanceChange)) {
+            VisionNumbers.appendChange(text.append(' '), distanceChange, 4);
+            VisionNumbers.appendChange(text.append(' '), directionChange, 1);
+        }
+        if (!Double.isNaN(body)) {
+            VisionNumbers.append(text.append(' '), body, 0);
+            VisionNumbers.append(text.append(' '), playerHead, 0);
+        }
+        text.append(')');
+    }
+
+    /** What a reader gets from the number's text; NaN for a number not sent. */
+    private static double read(double value, int decimals) {
+        return Double.isNaN(value) ? Double.NaN : VisionNumbers.asRead(value, decimals);
+    }
+
+    private static double readChange(double value, int decimals) {
+        return Double.isNaN(value) ? Double.NaN : VisionNumbers.asReadChange(value, decimals);
     }
 
     /** {@code " ((NAME) "}, a player's as {@code p "TEAM" UNUM goalie} as far as it is readable. */
