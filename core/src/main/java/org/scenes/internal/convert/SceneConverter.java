@@ -336,9 +336,7 @@ public final class SceneConverter {
             }
             if (isRepeat(bytes, offset, length)) {
                 // byte-for-byte the see that opened the scene: parsed once already
-                report.message();
-                report.see();
-                report.repeatedSee();
+                repeatedSee();
                 return;
             }
             lineBytes = bytes;
@@ -425,14 +423,19 @@ public final class SceneConverter {
         /** A see given as read: a repeat is an equal see, as a read one is a line of equal bytes. */
         void built(See see) throws IOException {
             if (pending != null && pendingLength < 0 && see.equals(pending)) {
-                report.message();
-                report.see();
-                report.repeatedSee();
+                repeatedSee();
                 return;
             }
             lineBytes = null;
             lineLength = -1;
             handle(see);
+        }
+
+        /** Counts a see that repeats the pending one: the open scene goes on. */
+        void repeatedSee() {
+            report.message();
+            report.see();
+            report.repeatedSee();
         }
 
         boolean isRepeat(byte[] bytes, int offset, int length) {
