@@ -19,6 +19,7 @@ import org.scenes.api.SeenObject;
 import org.scenes.internal.convert.SceneConverter;
 import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
+import org.scenes.simulator.Brain;
 import org.scenes.simulator.GameResult;
 import org.scenes.simulator.GameSetup;
 import org.scenes.simulator.Simulator;
@@ -43,6 +44,15 @@ class ImitationBrainTest {
     };
 
     static final ActionSelector FIRST = (nearest, random) -> nearest.get(0).scene().primaryAction();
+
+    /** What player {@code unum} of the left team sends at its first see (time 1) after the referee called {@code mode}. */
+    static List<String> firstAnswerAfter(Brain brain, int unum, String mode, String seen) {
+        List<String> sent = new ArrayList<>();
+        brain.receive("(init l " + unum + " before_kick_off)", command -> { });
+        brain.receive("(hear 0 referee " + mode + ")", command -> { });
+        brain.receive("(see 1 " + seen + ")", sent::add);
+        return sent;
+    }
 
     private static SeenObject ball(Scene scene) {
         for (SeenObject object : scene.objects()) {

@@ -269,11 +269,7 @@ class ImitationTeamTest {
                         knowledge -> new Recognizer(knowledge, () -> (query, stored) -> 0, 1),
                         ImitationTeam.Knowledge.COUNTERPART).brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF)
                 .create("Teal", new Random(1));
-        List<String> sent = new ArrayList<>();
-        brain.receive("(init l 10 before_kick_off)", command -> { });
-        brain.receive("(hear 0 referee " + mode + ")", command -> { });
-        brain.receive("(see 1 " + AT_THE_BALL + ")", sent::add);
-        return sent;
+        return ImitationBrainTest.firstAnswerAfter(brain, 10, mode, AT_THE_BALL);
     }
 
     @Test

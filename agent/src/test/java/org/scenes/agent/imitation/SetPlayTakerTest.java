@@ -36,12 +36,7 @@ class SetPlayTakerTest {
 
     /** What the player sends at its first see after the referee called {@code mode}. */
     private static List<String> answer(String mode, String seen) {
-        ImitationBrain brain = brain();
-        List<String> sent = new ArrayList<>();
-        brain.receive("(init l 9 before_kick_off)", s -> { });
-        brain.receive("(hear 0 referee " + mode + ")", s -> { });
-        brain.receive("(see 1 " + seen + ")", sent::add);
-        return sent;
+        return ImitationBrainTest.firstAnswerAfter(brain(), 9, mode, seen);
     }
 
     @Test
