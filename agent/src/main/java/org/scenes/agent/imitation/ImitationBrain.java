@@ -96,6 +96,8 @@ public final class ImitationBrain implements Brain {
     private final Steering steering = new Steering();
     /** how the counterpart took its team's set plays */
     private SetPlayKicks setPlayKicks = SetPlayKicks.NONE;
+    /** cycles this player leaves its team's kick-offs to the teammate that takes them (ImitationTeam#kickOffWait) */
+    private int kickOffWait;
     /** the play mode of the latest decision, and the cycle it began */
     private String playMode = "";
     private int playModeSince;
@@ -282,6 +284,7 @@ public final class ImitationBrain implements Brain {
         counterpartMovedInPlay = counterpart != null && counterpart.movedInPlay();
         placesOnce = counterpart != null && counterpart.placesOnce();
         setPlayKicks = roles.setPlayKicks(unum);
+        kickOffWait = roles.kickOffWait(unum);
     }
 
     /**
@@ -323,7 +326,12 @@ public final class ImitationBrain implements Brain {
         if (guards.enabled() && action != null) {
             action = guard(action, seen.objects(), nearest);
         }
-        Scene setPlayKick = setPlayKick(seen, action);
+        trackPlayMode(seen);
+        boolean leavesKickOff = leavesKickOff(seen);
+        if (leavesKickOff && action != null && action.type() == ActionType.KICK) {
+            action = nearestOther(nearest, candidate -> candidate.type() != ActionType.KICK);
+        }
+        Scene setPlayKick = leavesKickOff ? null : setPlayKick(seen, action);
         if (setPlayKick != null) {
             // the counterpart's own set-play kick, carried out from here like a neighbour's
             nearest = List.of(new Neighbour(setPlayKick, -1, 0));
@@ -350,11 +358,14 @@ public final class ImitationBrain implements Brain {
             }
             nearest = choice.nearest();
             action = choice.action();
+            if (leavesKickOff && action != null && action.type() == ActionType.KICK) {
+                action = null; // holds its place, as the teacher's other players did
+            }
         }
         if (history.size() == HISTORY) {
             history.removeFirst();
         }
-        double[] takerRun = setPlayKick == null ? setPlayTakerRun(seen) : null;
+        double[] takerRun = setPlayKick == null && !leavesKickOff ? setPlayTakerRun(seen) : null;
         List<Action> actions = takerRun != null ? List.of(Targets.runTo(takerRun, seen.world(), ServerDefaults.MAX_POWER))
                 : Validator.prediction(action, nearest, seen, replay, destinations, steering);
         Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age, seen.world());
@@ -378,17 +389,31 @@ public final class ImitationBrain implements Brain {
         if (own == null) {
             return null;
         }
-        if (!own.playMode().equals(playMode)) {
-            playMode = own.playMode();
-            playModeSince = seen.cycle();
-            playModes++;
-        }
         if (!(own.ballDistance() <= kickable) || observer == null) { // NaN: the ball unknown
             return null;
         }
         Scene due = setPlayKicks.due(playMode, observer.side(), seen.cycle() - playModeSince, own.ballX(), own.ballY());
         return due != null || chosen == null || chosen.type() != ActionType.KICK ? due
                 : setPlayKicks.taken(playMode, observer.side(), own.ballX(), own.ballY());
+    }
+
+    /** Whether this player, not its team's kick-off taker, holds back at a kick-off of its team. */
+    private boolean leavesKickOff(Scene seen) {
+        World own = seen.world();
+        if (own == null || observer == null || !"kick_off".equals(SetPlayKicks.ownKind(own.playMode(), observer.side()))) {
+            return false;
+        }
+        return seen.cycle() - playModeSince < kickOffWait;
+    }
+
+    /** Notes when the world model's play mode changed: set plays are timed from it. */
+    private void trackPlayMode(Scene seen) {
+        World own = seen.world();
+        if (own != null && !own.playMode().equals(playMode)) {
+            playMode = own.playMode();
+            playModeSince = seen.cycle();
+            playModes++;
+        }
     }
 
     /**

@@ -239,6 +239,28 @@ public final class ImitationTeam {
                 : counterpart.setPlayKicks().orTeams(teamSetPlayKicks);
     }
 
+    /**
+     * How many cycles player {@code unum} leaves its team's kick-offs to a teammate, 0 when it may
+     * take them at once. The kick-off ball lies on the centre spot, and a team such as HELIOS base
+     * has one player take every kick-off (its number 11) while the others hold their places;
+     * imitators that each took their world model's word for being the nearest ran to the ball
+     * together, and two kicking in one step sent it 40 m back to their own goal. So a player whose
+     * counterpart took none, in a team whose recorded players took some, waits twice as long as
+     * the team waited before its kick-offs: long enough for the taker, not for ever when the
+     * taker is not on the pitch.
+     */
+    int kickOffWait(int unum) {
+        Counterpart counterpart = counterparts.get(unum);
+        int teamWait = teamSetPlayKicks.medianWait(KICK_OFF);
+        if (teamWait < 0 || counterpart != null && counterpart.setPlayKicks() != null
+                && counterpart.setPlayKicks().took(KICK_OFF)) {
+            return 0;
+        }
+        return 2 * teamWait;
+    }
+
+    private static final String KICK_OFF = "kick_off";
+
     /** The recorded player with this uniform number, or null. */
     Counterpart counterpart(int unum) {
         return counterparts.get(unum);

@@ -104,8 +104,7 @@ final class SetPlayKicks {
         if (kicks == null) {
             return null;
         }
-        int[] waits = kicks.stream().mapToInt(Kick::waited).sorted().toArray();
-        return waited >= waits[waits.length / 2] ? nearest(kicks, ballX, ballY) : null;
+        return waited >= medianWait(ownKind(mode, side)) ? nearest(kicks, ballX, ballY) : null;
     }
 
     /**
@@ -137,6 +136,20 @@ final class SetPlayKicks {
             }
         }
         return nearest;
+    }
+
+    /** Whether the recorded player took at least one set play of this kind ({@code kick_off}, ...). */
+    boolean took(String kind) {
+        return byKind.containsKey(kind);
+    }
+
+    /** The median of the recorded waits before kicks of this kind, or -1 when none was taken. */
+    int medianWait(String kind) {
+        List<Kick> kicks = byKind.get(kind);
+        if (kicks == null) {
+            return -1;
+        }
+        return kicks.stream().mapToInt(Kick::waited).sorted().toArray()[kicks.size() / 2];
     }
 
     /** Total recorded set-play kicks, for tests and reports. */

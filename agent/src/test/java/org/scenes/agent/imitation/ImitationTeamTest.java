@@ -272,6 +272,52 @@ class ImitationTeamTest {
         return ImitationBrainTest.firstAnswerAfter(brain, 10, mode, AT_THE_BALL);
     }
 
+    /**
+     * Player 10 kicks in play, then waited 20 cycles at a kick-off of its own and passed back;
+     * player 7 only ever kicked in play. Both stand at the ball on the centre spot at a kick-off
+     * of their own; what each sends at the sees of {@code cycles}, one list per see.
+     */
+    private List<List<String>> atTheKickOff(int unum, int... cycles) throws IOException {
+        List<Path> files = new ArrayList<>();
+        for (int recorded : new int[] {7, 10}) {
+            Observer player = new Observer("Teal", Side.LEFT, recorded);
+            List<Scene> scenes = new ArrayList<>();
+            for (int t = 0; t <= 21; t++) {
+                boolean kickOff = recorded == 10 && t > 0;
+                Action action = !kickOff ? Action.kick(100, 0) : t == 21 ? Action.kick(50, 180) : Action.turn(30);
+                scenes.add(new Scene(t, player, List.of(), List.of(action), null, 0, new org.scenes.api.World(-0.5, 0, 0,
+                        0, 0, 0, 8000, 1, 0, 0, 0, 0, 0, 0, List.of(), kickOff ? "kick_off_l" : "play_on", 0, 0)));
+            }
+            Path file = directory.resolve("Teal_" + recorded + ".json");
+            SceneFileWriter.write(file, new SceneFile(SceneFileHeader.of(Grid.DEFAULT,
+                    new SceneSource("Teal_" + recorded + ".lsf", player)), scenes));
+            files.add(file);
+        }
+        Brain brain = ImitationTeam.load(files, List::of, knowledge -> new Recognizer(knowledge, () -> (query, stored) -> 0, 1),
+                ImitationTeam.Knowledge.COUNTERPART).brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF)
+                .create("Teal", new Random(1));
+        brain.receive("(init l " + unum + " before_kick_off)", command -> { });
+        brain.receive("(hear 0 referee kick_off_l)", command -> { });
+        List<List<String>> answers = new ArrayList<>();
+        for (int cycle : cycles) {
+            List<String> sent = new ArrayList<>();
+            brain.receive("(see " + cycle + " " + AT_THE_BALL + ")", sent::add);
+            answers.add(sent);
+        }
+        return answers;
+    }
+
+    @Test
+    void aPlayerWhoseCounterpartNeverTookAKickOffLeavesItToTheTakerForTwiceTheTeamsWait() throws IOException {
+        assertEquals(List.of(List.of("(kick 50 180)")), atTheKickOff(10, 1), "the taker: the recorded kick-off");
+        List<List<String>> seven = atTheKickOff(7, 1, 30, 45);
+        assertTrue(seven.get(0).stream().noneMatch(command -> command.startsWith("(kick")),
+                "not the kick it matched: " + seven.get(0));
+        assertTrue(seven.get(1).stream().noneMatch(command -> command.startsWith("(kick")),
+                "still the taker's after 29 cycles: " + seven.get(1));
+        assertEquals(List.of("(kick 50 180)"), seven.get(2), "after twice the team's wait of 20: as the team kicked off");
+    }
+
     @Test
     void aKickMatchedAtTheBallOfItsOwnSetPlayIsTheRecordedOneEvenBeforeTheWait() throws IOException {
         assertEquals(List.of("(kick 50 180)"), firstAnswerAtTheBall("kick_off_l"), "the recorded kick-off, not the kick in play");
