@@ -400,7 +400,8 @@ public final class ImitationBrain implements Brain {
     /** Whether this player, not its team's kick-off taker, holds back at a kick-off of its team. */
     private boolean leavesKickOff(Scene seen) {
         World own = seen.world();
-        if (own == null || observer == null || !"kick_off".equals(SetPlayKicks.ownKind(own.playMode(), observer.side()))) {
+        if (own == null || observer == null
+                || !SetPlayKicks.KICK_OFF.equals(SetPlayKicks.ownKind(own.playMode(), observer.side()))) {
             return false;
         }
         return seen.cycle() - playModeSince < kickOffWait;

@@ -251,15 +251,13 @@ public final class ImitationTeam {
      */
     int kickOffWait(int unum) {
         Counterpart counterpart = counterparts.get(unum);
-        int teamWait = teamSetPlayKicks.medianWait(KICK_OFF);
+        int teamWait = teamSetPlayKicks.medianWait(SetPlayKicks.KICK_OFF);
         if (teamWait < 0 || counterpart != null && counterpart.setPlayKicks() != null
-                && counterpart.setPlayKicks().took(KICK_OFF)) {
+                && counterpart.setPlayKicks().took(SetPlayKicks.KICK_OFF)) {
             return 0;
         }
         return 2 * teamWait;
     }
-
-    private static final String KICK_OFF = "kick_off";
 
     /** The recorded player with this uniform number, or null. */
     Counterpart counterpart(int unum) {

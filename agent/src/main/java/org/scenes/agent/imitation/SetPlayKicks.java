@@ -21,8 +21,10 @@ import org.scenes.api.World;
  * aim them.
  */
 final class SetPlayKicks {
+    /** The kick-off's kind: its play mode without the side letter. */
+    static final String KICK_OFF = "kick_off";
     /** Play modes, without their side letter, that the side named in them restarts with a kick. */
-    private static final List<String> KINDS = List.of("kick_off", "free_kick", "indirect_free_kick", "kick_in",
+    private static final List<String> KINDS = List.of(KICK_OFF, "free_kick", "indirect_free_kick", "kick_in",
             "corner_kick", "goal_kick");
 
     /** One recorded set-play kick: the scene that holds it, and its wait. */
