@@ -88,6 +88,10 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
                 LogFigures::nearBall));
         figures.add(figure("looseBallsPlayed", "loose balls played within 10 cycles", true, teacherLog, imitatorLog,
                 LogFigures::looseBallsPlayed));
+        figures.add(figure("possessionCycles", "possession length (cycles)", false, teacherLog, imitatorLog,
+                LogFigures::possessionCycles));
+        figures.add(figure("possessionKicks", "kicks per possession", false, teacherLog, imitatorLog,
+                LogFigures::possessionKicks));
         figures.add(figure("onPitch", "play on inside the field lines", true, teacherLog, imitatorLog,
                 LogFigures::onPitch));
         figures.add(figure("goalieInArea", "goalie in its penalty area, play on", true, teacherLog, imitatorLog,

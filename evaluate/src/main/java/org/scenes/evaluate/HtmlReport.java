@@ -83,6 +83,8 @@ public final class HtmlReport {
                 List.of("kicksPer1000", "goalsPer1000", "goalsAgainstPer1000"), 1, "0.00"));
         html.append(bars(comparison, "Distance to ball", "m", List.of("ballDistance"), 1, "0.0"));
         html.append(bars(comparison, "Kick-off to first touch", "cycles", List.of("firstTouch"), 1, "0.0"));
+        html.append(bars(comparison, "Possession length (game log)", "cycles", List.of("possessionCycles"), 1, "0.0"));
+        html.append(bars(comparison, "Kicks per possession (game log)", "kicks", List.of("possessionKicks"), 1, "0.0"));
         html.append(bars(comparison, "Kicks off the goal direction", "degrees", List.of("kickAngle"), 1, "0.0"));
         html.append(bars(comparison, "Stamina", "stamina", List.of("stamina"), 1, "0"));
         html.append("<div>").append(ReportCharts.svg(ReportCharts.turing(comparison.turing()), 420, 360))

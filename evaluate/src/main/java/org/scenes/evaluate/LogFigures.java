@@ -35,13 +35,15 @@ import org.scenes.internal.protocol.CommandType;
  *                   of them (acting without effect, not waiting)
  * @param looseBalls loose balls nearest to one of the team's players ({@link LooseBalls})
  * @param looseBallsPlayed share of those the team kicked next within {@link LooseBalls#WITHIN} cycles; NaN without any
+ * @param possessionCycles mean length in cycles of the team's possessions ({@link Possessions}); NaN without any
+ * @param possessionKicks mean number of steps of a possession in which the team kicked; NaN without any
  * @param positions per uniform number (index 1 on), the mean x and y in play on; NaN where none
  * @param cycles the game's length in cycles (the last frame's time)
  */
 public record LogFigures(long[] executed, double bodyPerStep, double repeatShare, double runLength, double nearBall,
                          double onPitch, double goalieInArea, double stamina, double lowestEffort, int kicks, double kickAngle,
                          int kickOffs, int kickOffsTaken, double stuckShare, int looseBalls, double looseBallsPlayed,
-                         double[][] positions, int cycles) {
+                         double possessionCycles, double possessionKicks, double[][] positions, int cycles) {
     /** Within this of the ball, metres, a player is near it. */
     public static final double NEAR = 1.0;
     /** Moved less than this, metres, in a step: the player stood still. */
@@ -190,10 +192,12 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
         }
         int cycles = frames.isEmpty() ? 0 : frames.get(frames.size() - 1).time();
         LooseBalls loose = LooseBalls.of(frames, side);
+        Possessions possessions = Possessions.of(frames, side);
         return new LogFigures(executed, share(total, playerSteps), share(repeats, total), share(total, runs),
                 share(near, playOnFrames), share(inside, playOnFrames), share(goalieInside, goalieFrames), playOnFrames == 0 ? Double.NaN
                         : staminaSum / playOnFrames, lowestEffort, kicks, aimed == 0 ? Double.NaN : angleSum / aimed,
-                kickOffs, kickOffsTaken, share(stuck, playOnSteps), loose.moments(), loose.share(), means, cycles);
+                kickOffs, kickOffsTaken, share(stuck, playOnSteps), loose.moments(), loose.share(),
+                possessions.meanCycles(), possessions.meanKicks(), means, cycles);
     }
 
     /** Whether a play mode follows only the end of a half: the pause, the game's end or the next half's kick-off. */

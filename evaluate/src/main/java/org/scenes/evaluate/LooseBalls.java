@@ -1,6 +1,7 @@
 package org.scenes.evaluate;
 
 import java.util.List;
+import java.util.Set;
 import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.PlayerState;
@@ -82,14 +83,7 @@ record LooseBalls(int moments, int played) {
 
     /** The side of a player whose kick counter rose from one frame to the next (the left's first), or null. */
     private static Side kicker(GameFrame before, GameFrame after) {
-        for (PlayerState player : after.players()) {
-            for (PlayerState earlier : before.players()) {
-                if (earlier.side() == player.side() && earlier.unum() == player.unum()
-                        && player.counts().kick() > earlier.counts().kick()) {
-                    return player.side();
-                }
-            }
-        }
-        return null;
+        Set<Side> kicked = Possessions.kickers(before, after);
+        return kicked.isEmpty() ? null : kicked.contains(Side.LEFT) ? Side.LEFT : Side.RIGHT;
     }
 }
