@@ -106,7 +106,7 @@ final class SetPlayKicks {
         if (kicks == null) {
             return null;
         }
-        return waited >= medianWait(ownKind(mode, side)) ? nearest(kicks, ballX, ballY) : null;
+        return waited >= medianWait(kicks) ? nearest(kicks, ballX, ballY) : null;
     }
 
     /**
@@ -148,9 +148,10 @@ final class SetPlayKicks {
     /** The median of the recorded waits before kicks of this kind, or -1 when none was taken. */
     int medianWait(String kind) {
         List<Kick> kicks = byKind.get(kind);
-        if (kicks == null) {
-            return -1;
-        }
+        return kicks == null ? -1 : medianWait(kicks);
+    }
+
+    private static int medianWait(List<Kick> kicks) {
         return kicks.stream().mapToInt(Kick::waited).sorted().toArray()[kicks.size() / 2];
     }
 

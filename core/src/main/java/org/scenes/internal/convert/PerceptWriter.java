@@ -21,7 +21,7 @@ import org.scenes.internal.vision.VisionNumbers;
  * Rebuilds what a player got and sent, message by message, from the game log's shows: its
  * {@code init} answers, the {@code see} the server would have sent (by {@link SeeWriter}, with the
  * vision model), its {@code sense_body}, the referee's calls it heard, and its own commands; each
- * line goes to the player's {@link SceneConverter.Feed}. One per worker: it holds buffers and a parser.
+ * line goes to the player's {@link SceneConverter.Feed}. One per worker: it holds a parser.
  */
 final class PerceptWriter {
     private final Path gameLog;
