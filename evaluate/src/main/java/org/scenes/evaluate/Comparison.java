@@ -86,6 +86,8 @@ public record Comparison(List<Figure> figures, double[] teacherMix, double[] imi
                 LogFigures::runLength));
         figures.add(figure("nearBall", "play on within 1 m of the ball", true, teacherLog, imitatorLog,
                 LogFigures::nearBall));
+        figures.add(figure("ballInView", "play on with the ball in view", true, teacherLog, imitatorLog,
+                LogFigures::ballInView));
         figures.add(figure("looseBallsPlayed", "loose balls played within 10 cycles", true, teacherLog, imitatorLog,
                 LogFigures::looseBallsPlayed));
         figures.add(figure("possessionCycles", "possession length (cycles)", false, teacherLog, imitatorLog,

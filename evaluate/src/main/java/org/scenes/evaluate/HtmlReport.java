@@ -76,7 +76,7 @@ public final class HtmlReport {
         html.append(bars(comparison, "Tempo and repeats (game log)", "%",
                 List.of("bodyPerStep", "repeatShare"), 100, "0.0"));
         html.append(bars(comparison, "Where the players are (game log)", "% of play-on frames",
-                List.of("nearBall", "onPitch", "goalieInArea", "logStuckShare", "kickOffsTaken"), 100, "0.0"));
+                List.of("nearBall", "ballInView", "onPitch", "goalieInArea", "logStuckShare", "kickOffsTaken"), 100, "0.0"));
         html.append(bars(comparison, "Loose balls played (game log)", "% of loose balls nearest to the team",
                 List.of("looseBallsPlayed"), 100, "0.0"));
         html.append(bars(comparison, "Per 1000 cycles", "per 1000 cycles",

@@ -19,6 +19,8 @@ import org.scenes.internal.protocol.CommandType;
  * @param repeatShare share of the executed body commands of the same type as the player's previous one
  * @param runLength mean length of a player's runs of executed body commands of one type
  * @param nearBall share of the players' play-on frames within {@link #NEAR} of the ball
+ * @param ballInView share of the players' play-on frames with the ball in their view ({@link #inView}); NaN
+ *                   where the log records no view widths
  * @param onPitch share of the players' play-on frames inside the field lines
  * @param goalieInArea share of the goalie's play-on frames inside its own penalty area; NaN without a goalie
  * @param stamina mean stamina over the players' play-on frames
@@ -41,9 +43,12 @@ import org.scenes.internal.protocol.CommandType;
  * @param cycles the game's length in cycles (the last frame's time)
  */
 public record LogFigures(long[] executed, double bodyPerStep, double repeatShare, double runLength, double nearBall,
+                         double ballInView,
                          double onPitch, double goalieInArea, double stamina, double lowestEffort, int kicks, double kickAngle,
                          int kickOffs, int kickOffsTaken, double stuckShare, int looseBalls, double looseBallsPlayed,
                          double possessionCycles, double possessionKicks, double[][] positions, int cycles) {
+    /** rcssserver's {@code visible_distance}: a player is shown the ball this near whichever way it looks. */
+    static final double VISIBLE_DISTANCE = 3.0;
     /** Within this of the ball, metres, a player is near it. */
     public static final double NEAR = 1.0;
     /** Moved less than this, metres, in a step: the player stood still. */
@@ -70,6 +75,8 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
         long runs = 0;
         long playOnFrames = 0;
         long near = 0;
+        long viewFrames = 0;
+        long inView = 0;
         long inside = 0;
         long goalieFrames = 0;
         long goalieInside = 0;
@@ -106,6 +113,10 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
                     playOnFrames++;
                     double distance = Math.hypot(player.x() - frame.ball().x(), player.y() - frame.ball().y());
                     near += distance <= NEAR ? 1 : 0;
+                    if (!Double.isNaN(player.viewWidth())) {
+                        viewFrames++;
+                        inView += inView(player, frame.ball(), distance) ? 1 : 0;
+                    }
                     inside += Math.abs(player.x()) <= HALF_LENGTH && Math.abs(player.y()) <= HALF_WIDTH ? 1 : 0;
                     if ((player.state() & PlayerState.GOALIE) != 0) {
                         goalieFrames++;
@@ -193,11 +204,23 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
         int cycles = frames.isEmpty() ? 0 : frames.get(frames.size() - 1).time();
         LooseBalls loose = LooseBalls.of(frames, side);
         Possessions possessions = Possessions.of(frames, side);
+        double meanStamina = playOnFrames == 0 ? Double.NaN : staminaSum / playOnFrames;
         return new LogFigures(executed, share(total, playerSteps), share(repeats, total), share(total, runs),
-                share(near, playOnFrames), share(inside, playOnFrames), share(goalieInside, goalieFrames), playOnFrames == 0 ? Double.NaN
-                        : staminaSum / playOnFrames, lowestEffort, kicks, aimed == 0 ? Double.NaN : angleSum / aimed,
-                kickOffs, kickOffsTaken, share(stuck, playOnSteps), loose.moments(), loose.share(),
-                possessions.meanCycles(), possessions.meanKicks(), means, cycles);
+                share(near, playOnFrames), share(inView, viewFrames), share(inside, playOnFrames),
+                share(goalieInside, goalieFrames), meanStamina, lowestEffort, kicks,
+                aimed == 0 ? Double.NaN : angleSum / aimed, kickOffs, kickOffsTaken, share(stuck, playOnSteps),
+                loose.moments(), loose.share(), possessions.meanCycles(), possessions.meanKicks(), means, cycles);
+    }
+
+    /**
+     * Whether the player's see shows the ball: within half its view width of where its head faces,
+     * or within {@link #VISIBLE_DISTANCE} (rcssserver's vision; a see comes every step or every few,
+     * by the view, and the frame tells where it would look).
+     */
+    static boolean inView(PlayerState player, GameFrame.BallState ball, double distance) {
+        double bearing = Math.toDegrees(Math.atan2(ball.y() - player.y(), ball.x() - player.x()));
+        return distance <= VISIBLE_DISTANCE
+                || Math.abs(angle(bearing - player.body() - player.neck())) <= player.viewWidth() / 2;
     }
 
     /** Whether a play mode follows only the end of a half: the pause, the game's end or the next half's kick-off. */

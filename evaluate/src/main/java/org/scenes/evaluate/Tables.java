@@ -18,7 +18,7 @@ public final class Tables {
             Map.entry("executedTurn", "turn"), Map.entry("executedKick", "kick"), Map.entry("executedCatch", "catch"),
             Map.entry("executedTackle", "tackle"), Map.entry("executedMove", "move"),
             Map.entry("bodyPerStep", "per step"), Map.entry("repeatShare", "repeats"), Map.entry("runLength", "run"),
-            Map.entry("nearBall", "within 1 m"), Map.entry("looseBallsPlayed", "loose balls"),
+            Map.entry("nearBall", "within 1 m"), Map.entry("ballInView", "ball in view"), Map.entry("looseBallsPlayed", "loose balls"),
             Map.entry("possessionCycles", "possession"), Map.entry("possessionKicks", "kicks kept"),
             Map.entry("onPitch", "on pitch"),
             Map.entry("goalieInArea", "goalie in area"), Map.entry("stamina", "stamina"),

@@ -1,6 +1,7 @@
 package org.scenes.evaluate;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -225,6 +226,40 @@ class LogFiguresTest {
         LogFigures figures = LogFigures.of(game);
         assertEquals(1.0, figures.onPitch(), 1e-12);
         return figures.goalieInArea();
+    }
+
+    @Test
+    void theBallIsInViewWithinHalfTheViewWidthOfTheHeadOrWithinTheVisibleDistance() {
+        GameFrame.BallState ball = new GameFrame.BallState(10, 0, 0, 0);
+        // at the origin: the ball 10 m along x
+        assertTrue(LogFigures.inView(looking(0, 0, 0, 0, 60), ball, 10), "straight ahead");
+        assertFalse(LogFigures.inView(looking(0, 0, 40, 0, 60), ball, 10), "40 degrees off a narrow view");
+        assertTrue(LogFigures.inView(looking(0, 0, 40, 0, 120), ball, 10), "within a normal view");
+        assertTrue(LogFigures.inView(looking(0, 0, 90, -80, 60), ball, 10), "the head turned back to it");
+        assertFalse(LogFigures.inView(looking(0, 0, 180, 0, 180), ball, 10), "behind a wide view");
+        assertTrue(LogFigures.inView(looking(12, 0, 0, 0, 60), ball, 2), "behind, but within 3 m");
+        // frames without view widths (old logs) leave the figure unknown
+        assertTrue(Double.isNaN(viewShare(Double.NaN)));
+        assertEquals(1.0, viewShare(60), 1e-12);
+    }
+
+    private static org.scenes.internal.gamelog.PlayerState looking(double x, double y, double body, double neck,
+                                                                  double viewWidth) {
+        return new org.scenes.internal.gamelog.PlayerState(Side.LEFT, 2, 0,
+                org.scenes.internal.gamelog.PlayerState.STANDING, x, y, 0, 0, body, neck, 'h', viewWidth, 8000, 1, 1,
+                Double.NaN, new org.scenes.internal.gamelog.PlayerState.Counts(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0));
+    }
+
+    /** The ball-in-view figure of two play-on frames of one player looking at the ball with this view width. */
+    private static double viewShare(double viewWidth) {
+        List<GameFrame> frames = new ArrayList<>();
+        for (int time = 1; time <= 2; time++) {
+            frames.add(new GameFrame(time, "play_on", "Teal", "Amber", 0, 0, new GameFrame.BallState(10, 0, 0, 0),
+                    List.of(looking(0, 0, 0, 0, viewWidth))));
+        }
+        PlayedGame game = new PlayedGame(PlayedGame.Role.TEACHER, Side.LEFT, 1,
+                new GameResult(0, 0, 0, 0, 2, 2, List.of()), frames, List.of());
+        return LogFigures.of(game).ballInView();
     }
 
     /** The kick angle of one kick from (10, 5) that sends the ball along (vx, vy), by a player of {@code side}. */

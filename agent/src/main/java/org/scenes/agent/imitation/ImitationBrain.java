@@ -29,6 +29,8 @@ import org.scenes.internal.protocol.Parameters;
 import org.scenes.internal.protocol.See;
 import org.scenes.internal.protocol.SenseBody;
 import org.scenes.internal.protocol.ServerNotice;
+import org.scenes.internal.protocol.ViewWidth;
+import org.scenes.internal.target.BallWatch;
 import org.scenes.internal.target.Destinations;
 import org.scenes.internal.target.Replay;
 import org.scenes.internal.target.Steering;
@@ -70,6 +72,10 @@ import org.scenes.simulator.BrainFactory;
  * {@link #LOOK_FURTHER} neighbours that sends one ({@link #lookFurther}): at k 1, a player that
  * stood still saw the same again and stood there for the rest of the game.
  *
+ * <p>Under target replay the player also keeps its ball as fresh as its teacher did
+ * ({@link BallWatch}): a ball older than the teacher's usual turns the head to it, and one behind
+ * the head's reach widens the view until it is seen again.
+ *
  * <p>A knowledge base of a player that acted every cycle (scenes of several see ages, e.g. a
  * librcsc team on synchronous vision) is played per cycle in synchronous mode: at each
  * {@code (think)} the latest view, with its age, is matched, and the chosen scene's body action
@@ -92,6 +98,12 @@ public final class ImitationBrain implements Brain {
     private Recognizer recognizer;
     /** where the recognizer's scenes' players ran; taken once per role, null unless replaying targets */
     private Destinations destinations;
+    /** how old the teacher let its ball grow before looking at it; taken once per role, null unless replaying targets */
+    private BallWatch ballWatch;
+    /** the view the server last reported; the one to return to once a ball looked for behind is seen; a change to send */
+    private ViewWidth view;
+    private ViewWidth widenedFrom;
+    private ViewWidth viewChange;
     /** what this player's previous decisions chose: a chase, a turn (not undone at once) */
     private final Steering steering = new Steering();
     /** how the counterpart took its team's set plays */
@@ -207,6 +219,7 @@ public final class ImitationBrain implements Brain {
         this.recognizer = roles.team();
         // with roles, the role's own recognizer arrives with the init reply (takeRole)
         this.destinations = withRoles ? null : destinationsOf(recognizer);
+        this.ballWatch = withRoles ? null : ballWatchOf(recognizer);
         this.selector = Objects.requireNonNull(selector, "selector");
         this.transforms = Objects.requireNonNull(transforms, "transforms");
         this.random = Objects.requireNonNull(random, "random");
@@ -253,19 +266,22 @@ public final class ImitationBrain implements Brain {
                 kickable = reach;
             }
             synchronous |= parameters.number("synch_mode") == 1;
-        } else if (message instanceof SenseBody) {
+        } else if (message instanceof SenseBody body) {
             stepsSinceSee++;
+            view = ViewWidth.fromKey(body.viewWidth());
         } else if (message instanceof See see) {
             latestSee = see;
             stepsSinceSee = 0;
             if (!(perCycle && synchronous)) {
                 decide(see, 0).forEach(action -> send.accept(action.command()));
+                sendViewChange(send);
             }
         } else if (message instanceof ServerNotice notice && notice.head().equals("think")) {
             // Synchronous mode: act every cycle, as the recorded player did, on the latest view.
             synchronous = true;
             if (perCycle && latestSee != null) {
                 decide(latestSee, stepsSinceSee).forEach(action -> send.accept(action.command()));
+                sendViewChange(send);
             }
         }
     }
@@ -274,10 +290,15 @@ public final class ImitationBrain implements Brain {
         return replay == Replay.TARGET ? Destinations.of(from.knowledge()) : null;
     }
 
+    private BallWatch ballWatchOf(Recognizer from) {
+        return replay == Replay.TARGET ? BallWatch.of(from.knowledge()) : null;
+    }
+
     /** Plays as the recorded player with this number: its knowledge (when asked) and its moves. */
     private void takeRole(int unum) {
         recognizer = roles.recognizer(unum);
         destinations = destinationsOf(recognizer);
+        ballWatch = ballWatchOf(recognizer);
         perCycle = recognizer.splitsBySeeAge();
         ImitationTeam.Counterpart counterpart = roles.counterpart(unum);
         counterpartMoves = counterpart == null ? List.of() : counterpart.moves();
@@ -368,6 +389,10 @@ public final class ImitationBrain implements Brain {
         double[] takerRun = setPlayKick == null && !leavesKickOff ? setPlayTakerRun(seen) : null;
         List<Action> actions = takerRun != null ? List.of(Targets.runTo(takerRun, seen.world(), ServerDefaults.MAX_POWER))
                 : Validator.prediction(action, nearest, seen, replay, destinations, steering);
+        if (ballWatch != null) {
+            actions = ballWatch.watch(actions, seen.world());
+            lookBehind(actions, seen.world());
+        }
         Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age, seen.world());
         actions.forEach(world::sent);
         history.addLast(made);
@@ -405,6 +430,34 @@ public final class ImitationBrain implements Brain {
             return false;
         }
         return seen.cycle() - playModeSince < kickOffWait;
+    }
+
+    /**
+     * Widens the view while the ball, unseen for longer than the teacher let it be, lies behind
+     * where the neck can turn the head ({@link BallWatch#beyondView}), and narrows it back to the
+     * width it had once the ball is seen: the teacher changed its view about every 15 cycles a
+     * player, its scenes do not say when. Only on synchronous vision, where the player acts every
+     * step on its latest see: in real time it acts on each see, and a wide view sees every third
+     * cycle.
+     */
+    private void lookBehind(List<Action> actions, World own) {
+        if (view == null || !synchronous) {
+            return;
+        }
+        if (widenedFrom == null && view != ViewWidth.WIDE && ballWatch.beyondView(actions, own, view.degrees())) {
+            widenedFrom = view;
+            viewChange = ViewWidth.WIDE;
+        } else if (widenedFrom != null && own != null && own.ballAge() == 0) {
+            viewChange = widenedFrom;
+            widenedFrom = null;
+        }
+    }
+
+    private void sendViewChange(Consumer<String> send) {
+        if (viewChange != null) {
+            send.accept(viewChange.command());
+            viewChange = null;
+        }
     }
 
     /** Notes when the world model's play mode changed: set plays are timed from it. */

@@ -20,6 +20,7 @@ import org.scenes.internal.match.KnowledgeBase;
 import org.scenes.internal.match.Recognizer;
 import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.internal.scene.SceneSource;
+import org.scenes.internal.target.BallWatch;
 import org.scenes.internal.target.Destinations;
 import org.scenes.internal.target.Replay;
 import org.scenes.simulator.Brain;
@@ -199,15 +200,20 @@ public final class ImitationTeam {
         return brains(selectors, transforms, guards, Replay.RAW);
     }
 
+    private static void prepare(KnowledgeBase knowledge) {
+        Destinations.of(knowledge);
+        BallWatch.of(knowledge);
+    }
+
     /** The same, each brain carrying out its chosen actions as {@code replay} says. */
     public BrainFactory brains(Supplier<ActionSelector> selectors, Supplier<List<SceneTransform>> transforms,
                                ImitationBrain.Guards guards, Replay replay) {
         if (replay == Replay.TARGET) {
-            // every role's destinations now: made when a player's init arrives, they held up the
-            // init answers of a real-time team for up to a third of a second (three missed cycles)
-            Destinations.of(team.knowledge());
+            // every role's destinations and ball watch now: made when a player's init arrives, they
+            // held up the init answers of a real-time team (three missed cycles, then two a game)
+            prepare(team.knowledge());
             counterparts.values().stream().filter(counterpart -> counterpart.recognizer() != null)
-                    .forEach(counterpart -> Destinations.of(counterpart.recognizer().knowledge()));
+                    .forEach(counterpart -> prepare(counterpart.recognizer().knowledge()));
         }
         return new BrainFactory() {
             @Override

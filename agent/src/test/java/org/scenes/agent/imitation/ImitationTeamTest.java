@@ -26,6 +26,7 @@ import org.scenes.internal.scene.SceneFile;
 import org.scenes.internal.scene.SceneFileHeader;
 import org.scenes.internal.scene.SceneFileWriter;
 import org.scenes.internal.scene.SceneSource;
+import org.scenes.internal.target.BallWatch;
 import org.scenes.internal.target.Destinations;
 import org.scenes.internal.target.Replay;
 import org.scenes.simulator.Brain;
@@ -87,16 +88,19 @@ class ImitationTeamTest {
     }
 
     @Test
-    void targetBrainsHaveEveryRolesDestinationsMadeBeforeAnyInitArrives() throws IOException {
+    void targetBrainsHaveEveryRolesDestinationsAndBallWatchMadeBeforeAnyInitArrives() throws IOException {
         ImitationTeam raw = team(ImitationTeam.Knowledge.COUNTERPART);
         raw.brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF, Replay.RAW);
         assertFalse(Destinations.made(raw.recognizer(1).knowledge()), "raw replay needs no destinations");
+        assertFalse(BallWatch.made(raw.recognizer(1).knowledge()), "nor a ball watch");
         ImitationTeam target = team(ImitationTeam.Knowledge.COUNTERPART);
         target.brains(() -> FIRST, List::of, ImitationBrain.Guards.OFF, Replay.TARGET);
         for (int unum : List.of(1, 2)) {
             assertTrue(Destinations.made(target.recognizer(unum).knowledge()), "counterpart " + unum);
+            assertTrue(BallWatch.made(target.recognizer(unum).knowledge()), "counterpart " + unum);
         }
         assertTrue(Destinations.made(target.knowledge()), "the team's, for players without a counterpart");
+        assertTrue(BallWatch.made(target.knowledge()), "the team's ball watch");
     }
 
     @Test

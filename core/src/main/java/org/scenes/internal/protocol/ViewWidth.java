@@ -10,7 +10,28 @@ import java.util.stream.Collectors;
  * and a wide one every third.
  */
 public enum ViewWidth {
-    NARROW, NORMAL, WIDE;
+    NARROW(60), NORMAL(120), WIDE(180);
+
+    private final double degrees;
+
+    ViewWidth(double degrees) {
+        this.degrees = degrees;
+    }
+
+    /** The view's angle in degrees, centred on the head. */
+    public double degrees() {
+        return degrees;
+    }
+
+    /** The width of this name (as {@code sense_body} reports it), or null. */
+    public static ViewWidth fromKey(String key) {
+        for (ViewWidth width : values()) {
+            if (width.key().equals(key)) {
+                return width;
+            }
+        }
+        return null;
+    }
 
     /** The protocol's name, also the one in configuration files. */
     public String key() {
@@ -26,10 +47,9 @@ public enum ViewWidth {
      * @throws IllegalArgumentException naming the accepted values
      */
     public static ViewWidth parse(String text) {
-        for (ViewWidth width : values()) {
-            if (width.key().equals(text)) {
-                return width;
-            }
+        ViewWidth width = fromKey(text);
+        if (width != null) {
+            return width;
         }
         throw new IllegalArgumentException("unknown view '" + text + "': use one of "
                 + Arrays.stream(values()).map(ViewWidth::key).collect(Collectors.joining(", ")));
