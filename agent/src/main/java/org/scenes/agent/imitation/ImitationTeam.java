@@ -209,8 +209,8 @@ public final class ImitationTeam {
     public BrainFactory brains(Supplier<ActionSelector> selectors, Supplier<List<SceneTransform>> transforms,
                                ImitationBrain.Guards guards, Replay replay) {
         if (replay == Replay.TARGET) {
-            // every role's destinations and ball watch now: made when a player's init arrives, they
-            // held up the init answers of a real-time team (three missed cycles, then two a game)
+            // every role's destinations and ball watch now: made when a player's init arrived, they
+            // held up a real-time team's init answers, and its first cycles' commands left late
             prepare(team.knowledge());
             counterparts.values().stream().filter(counterpart -> counterpart.recognizer() != null)
                     .forEach(counterpart -> prepare(counterpart.recognizer().knowledge()));
