@@ -5,6 +5,7 @@ import org.scenes.api.Side;
 import org.scenes.internal.gamelog.GameFrame;
 import org.scenes.internal.gamelog.PlayerState;
 import org.scenes.internal.protocol.CommandType;
+import org.scenes.internal.world.ServerDefaults;
 
 /**
  * The figures of one team in one game that the server's logs give for any team, ours or not:
@@ -47,8 +48,6 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
                          double onPitch, double goalieInArea, double stamina, double lowestEffort, int kicks, double kickAngle,
                          int kickOffs, int kickOffsTaken, double stuckShare, int looseBalls, double looseBallsPlayed,
                          double possessionCycles, double possessionKicks, double[][] positions, int cycles) {
-    /** rcssserver's {@code visible_distance}: a player is shown the ball this near whichever way it looks. */
-    static final double VISIBLE_DISTANCE = 3.0;
     /** Within this of the ball, metres, a player is near it. */
     public static final double NEAR = 1.0;
     /** Moved less than this, metres, in a step: the player stood still. */
@@ -214,12 +213,13 @@ public record LogFigures(long[] executed, double bodyPerStep, double repeatShare
 
     /**
      * Whether the player's see shows the ball: within half its view width of where its head faces,
-     * or within {@link #VISIBLE_DISTANCE} (rcssserver's vision; a see comes every step or every few,
-     * by the view, and the frame tells where it would look).
+     * or within {@link ServerDefaults#VISIBLE_DISTANCE}, where rcssserver shows it whichever way the
+     * player looks (a see comes every step or every few, by the view, and the frame tells where it
+     * would look).
      */
     static boolean inView(PlayerState player, GameFrame.BallState ball, double distance) {
         double bearing = Math.toDegrees(Math.atan2(ball.y() - player.y(), ball.x() - player.x()));
-        return distance <= VISIBLE_DISTANCE
+        return distance <= ServerDefaults.VISIBLE_DISTANCE
                 || Math.abs(angle(bearing - player.body() - player.neck())) <= player.viewWidth() / 2;
     }
 

@@ -92,8 +92,8 @@ public final class BallWatch {
                 watched.add(action);
             }
         }
-        double head = Math.max(-MAX_NECK_ANGLE, Math.min(MAX_NECK_ANGLE, ballBearing(own, body)));
-        watched.add(Action.turnNeck(head - orZero(own.neck())));
+        double head = Targets.clamp(ballBearing(own, body), MAX_NECK_ANGLE);
+        watched.add(Action.turnNeck(head - (Double.isNaN(own.neck()) ? 0 : own.neck())));
         return List.copyOf(watched);
     }
 
@@ -124,12 +124,8 @@ public final class BallWatch {
 
     /** The ball's direction after its next step, relative to {@code body}. */
     private static double ballBearing(World own, double body) {
-        double dx = own.ballX() + orZero(own.ballVx()) - orZero(own.vx()) - own.x();
-        double dy = own.ballY() + orZero(own.ballVy()) - orZero(own.vy()) - own.y();
-        return normalize(Math.toDegrees(Math.atan2(dy, dx)) - body);
-    }
-
-    private static double orZero(double value) {
-        return Double.isNaN(value) ? 0 : value;
+        double dx = own.ballX() + Targets.velocity(own.ballVx()) - Targets.velocity(own.vx()) - own.x();
+        double dy = own.ballY() + Targets.velocity(own.ballVy()) - Targets.velocity(own.vy()) - own.y();
+        return normalize(Targets.bearing(dx, dy) - body);
     }
 }

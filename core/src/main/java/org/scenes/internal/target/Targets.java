@@ -393,11 +393,13 @@ public final class Targets {
         return Double.isNaN(speed) ? 0 : speed;
     }
 
-    private static double velocity(double component) {
+    /** A velocity component, 0 where unknown. */
+    static double velocity(double component) {
         return Double.isNaN(component) ? 0 : component;
     }
 
-    private static double bearing(double dx, double dy) {
+    /** The field direction of (dx, dy), degrees. */
+    static double bearing(double dx, double dy) {
         return Math.toDegrees(Math.atan2(dy, dx));
     }
 
