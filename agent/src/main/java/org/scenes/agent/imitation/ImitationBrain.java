@@ -76,6 +76,9 @@ import org.scenes.simulator.BrainFactory;
  * ({@link BallWatch}): a ball older than the teacher's usual turns the head to it, and one behind
  * the head's reach widens the view until it is seen again.
  *
+ * <p>Under target replay a kick in play on that would hand the ball to an opponent the player
+ * knows of gives way to a further neighbour's kick that keeps it ({@link KeptKicks}).
+ *
  * <p>A knowledge base of a player that acted every cycle (scenes of several see ages, e.g. a
  * librcsc team on synchronous vision) is played per cycle in synchronous mode: at each
  * {@code (think)} the latest view, with its age, is matched, and the chosen scene's body action
@@ -106,6 +109,8 @@ public final class ImitationBrain implements Brain {
     private ViewWidth viewChange;
     /** what this player's previous decisions chose: a chase, a turn (not undone at once) */
     private final Steering steering = new Steering();
+    /** kicks of the team's own in play on: one that hands the ball over gives way to one that keeps it */
+    private final KeptKicks keptKicks = new KeptKicks();
     /** how the counterpart took its team's set plays */
     private SetPlayKicks setPlayKicks = SetPlayKicks.NONE;
     /** cycles this player leaves its team's kick-offs to the teammate that takes them (ImitationTeam#kickOffWait) */
@@ -389,6 +394,9 @@ public final class ImitationBrain implements Brain {
         double[] takerRun = setPlayKick == null && !leavesKickOff ? setPlayTakerRun(seen) : null;
         List<Action> actions = takerRun != null ? List.of(Targets.runTo(takerRun, seen.world(), ServerDefaults.MAX_POWER))
                 : Validator.prediction(action, nearest, seen, replay, destinations, steering);
+        if (replay == Replay.TARGET) {
+            actions = keptKicks.choose(actions, seen, query, recognizer);
+        }
         if (ballWatch != null) {
             actions = ballWatch.watch(actions, seen.world());
             lookBehind(actions, seen.world());
@@ -588,6 +596,9 @@ public final class ImitationBrain implements Brain {
         counters.put("decisions", decisions);
         counters.put("silent", silent);
         counters.put("looked_further", lookedFurther);
+        counters.put("kicks_kept_instead", keptKicks.kept());
+        counters.put("kicks_shot_instead", keptKicks.shots());
+        counters.put("kicks_handed_over", keptKicks.handedOver());
         if (guards.enabled()) {
             counters.put("guard.kick_out_of_reach", kickGuarded);
             counters.put("guard.stuck", stuckGuarded);
