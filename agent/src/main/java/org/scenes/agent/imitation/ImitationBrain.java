@@ -76,8 +76,9 @@ import org.scenes.simulator.BrainFactory;
  * ({@link BallWatch}): a ball older than the teacher's usual turns the head to it, and one behind
  * the head's reach widens the view until it is seen again.
  *
- * <p>Under target replay a kick in play on that would hand the ball to an opponent the player
- * knows of gives way to a further neighbour's kick that keeps it ({@link KeptKicks}).
+ * <p>Under target replay a kick in play on that would lose the ball (to an opponent the player
+ * knows of, or over the line), or near the opponent goal one that would not score, gives way to a
+ * further neighbour's kick that scores or keeps it ({@link KeptKicks}).
  *
  * <p>A knowledge base of a player that acted every cycle (scenes of several see ages, e.g. a
  * librcsc team on synchronous vision) is played per cycle in synchronous mode: at each
@@ -109,7 +110,7 @@ public final class ImitationBrain implements Brain {
     private ViewWidth viewChange;
     /** what this player's previous decisions chose: a chase, a turn (not undone at once) */
     private final Steering steering = new Steering();
-    /** kicks of the team's own in play on: one that hands the ball over gives way to one that keeps it */
+    /** the player's kicks in play on: one that would lose the ball gives way to one that keeps it or scores */
     private final KeptKicks keptKicks = new KeptKicks();
     /** how the counterpart took its team's set plays */
     private SetPlayKicks setPlayKicks = SetPlayKicks.NONE;
