@@ -16,7 +16,8 @@ import org.scenes.api.World;
  * server's kick and decay models, each player it knows of runs at the default player's top
  * speed after one turn (as in {@link BallRace}). A recorded kick carried out from another place
  * sends the ball where the recorded player's teammates stood, not necessarily where the kicker's
- * stand; this tells the kicks that keep the ball from those that hand it to an opponent.
+ * stand; this tells the kicks that score or keep the ball from those that lose it to an opponent
+ * or over the line.
  */
 public final class KickCourse {
     /** Cycles of the ball's course followed: a kick at full speed has rolled about 40 m by then. */
