@@ -2,9 +2,7 @@ package org.scenes.internal.target;
 
 import static org.scenes.internal.vision.Landmarks.PITCH_HALF_LENGTH;
 import static org.scenes.internal.vision.Landmarks.PITCH_HALF_WIDTH;
-import static org.scenes.internal.world.ServerDefaults.BALL_ACCEL_MAX;
 import static org.scenes.internal.world.ServerDefaults.BALL_DECAY;
-import static org.scenes.internal.world.ServerDefaults.KICKABLE_AREA;
 
 import org.scenes.api.Action;
 import org.scenes.api.ActionType;
@@ -44,11 +42,6 @@ public final class KickCourse {
         UNKNOWN
     }
 
-    /** Whether {@code kick} does not lose the ball ({@link #outcome} is not {@link Outcome#LOST}). */
-    public static boolean keeps(Action kick, World own) {
-        return outcome(kick, own) != Outcome.LOST;
-    }
-
     /**
      * What becomes of the ball of {@code kick} sent by the player of {@code own}: followed for
      * {@link #HORIZON} cycles, it scores when it crosses the goal line between the posts before any
@@ -65,10 +58,9 @@ public final class KickCourse {
         if (!(rate > 0)) {
             return Outcome.UNKNOWN;
         }
-        double accel = Math.min(Math.max(kick.first(), 0) * rate, BALL_ACCEL_MAX);
-        double direction = Math.toRadians(own.body() + kick.second());
-        double vx = Targets.velocity(own.ballVx()) + accel * Math.cos(direction);
-        double vy = Targets.velocity(own.ballVy()) + accel * Math.sin(direction);
+        double[] kicked = Targets.kickedBall(kick, own, rate);
+        double vx = kicked[0];
+        double vy = kicked[1];
         double speed = Math.hypot(vx, vy);
         if (speed > BALL_SPEED_MAX) {
             vx *= BALL_SPEED_MAX / speed;
@@ -89,7 +81,7 @@ public final class KickCourse {
                 return bx > PITCH_HALF_LENGTH && Math.abs(by) < GOAL_HALF_WIDTH && opponentFirst == Integer.MAX_VALUE
                         ? Outcome.SCORES : Outcome.LOST;
             }
-            double reach = (t - 1) * Targets.RUN_SPEED + KICKABLE_AREA;
+            double reach = Targets.reach(t);
             if (teamFirst == Integer.MAX_VALUE && Math.hypot(bx - own.x(), by - own.y()) <= reach) {
                 teamFirst = t;
             }

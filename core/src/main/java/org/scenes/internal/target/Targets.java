@@ -242,8 +242,7 @@ public final class Targets {
         double bx = world.ballX();
         double by = world.ballY();
         for (int t = 0; t < limit; t++) {
-            double reach = Math.max(0, t - 1) * RUN_SPEED + KICKABLE_AREA;
-            if (Math.hypot(bx - x, by - y) <= reach) {
+            if (Math.hypot(bx - x, by - y) <= reach(t)) {
                 return t;
             }
             bx += vx;
@@ -252,6 +251,11 @@ public final class Targets {
             vy *= BALL_DECAY;
         }
         return limit;
+    }
+
+    /** How far from where it stands a player reaches a ball in {@code cycles}: one turn, then {@link #RUN_SPEED} a cycle. */
+    static double reach(int cycles) {
+        return Math.max(0, cycles - 1) * RUN_SPEED + KICKABLE_AREA;
     }
 
     private static double runPower(Action action, double power) {
@@ -317,9 +321,9 @@ public final class Targets {
         if (Double.isNaN(donorRate) || Double.isNaN(ownRate) || ownRate <= 0) {
             return Action.kick(action.first(), normalize(donor.body() + action.second() - own.body()));
         }
-        double accel = Math.min(Math.max(action.first(), 0) * donorRate, BALL_ACCEL_MAX);
-        double wantedX = velocity(donor.ballVx()) + accel * Math.cos(Math.toRadians(donor.body() + action.second()));
-        double wantedY = velocity(donor.ballVy()) + accel * Math.sin(Math.toRadians(donor.body() + action.second()));
+        double[] wanted = kickedBall(action, donor, donorRate);
+        double wantedX = wanted[0];
+        double wantedY = wanted[1];
         // the ball's new course, aimed again at the goal when the recorded one was
         double course = anchoredToGoal(bearing(wantedX, wantedY), donor.ballX(), donor.ballY(), own.ballX(), own.ballY());
         double speed = Math.hypot(wantedX, wantedY);
@@ -329,6 +333,18 @@ public final class Targets {
         double neededY = wantedY - velocity(own.ballVy());
         double power = Math.min(Math.hypot(neededX, neededY) / ownRate, MAX_POWER);
         return Action.kick(power, normalize(bearing(neededX, neededY) - own.body()));
+    }
+
+    /**
+     * The ball's velocity right after {@code kick} by the player of {@code kicker} (the server's kick
+     * model: the power times {@code rate}, at most {@code BALL_ACCEL_MAX}, along the
+     * body plus the kick's direction, added to the ball's velocity), before the ball's decay.
+     */
+    static double[] kickedBall(Action kick, World kicker, double rate) {
+        double accel = Math.min(Math.max(kick.first(), 0) * rate, BALL_ACCEL_MAX);
+        double direction = Math.toRadians(kicker.body() + kick.second());
+        return new double[] {velocity(kicker.ballVx()) + accel * Math.cos(direction),
+            velocity(kicker.ballVy()) + accel * Math.sin(direction)};
     }
 
     /** The turn_neck that looks where the recorded head looked, within the neck's range. */
