@@ -74,7 +74,8 @@ import org.scenes.simulator.BrainFactory;
  *
  * <p>Under target replay the player also keeps its ball as fresh as its teacher did
  * ({@link BallWatch}): a ball older than the teacher's usual turns the head to it, and one behind
- * the head's reach widens the view until it is seen again.
+ * the head's reach widens the view until it is seen again; with no ball known the body turns to
+ * look for one ({@link BallWatch#search}).
  *
  * <p>Under target replay a kick in play on that would lose the ball (to an opponent the player
  * knows of, or over the line), or near the opponent goal one that would not score, gives way to a
@@ -155,6 +156,8 @@ public final class ImitationBrain implements Brain {
     /** decisions whose k nearest held no body command, taken from the {@link #LOOK_FURTHER} nearest instead */
     private long lookedFurther;
     private long kickGuarded;
+    /** decisions that looked for a ball the world model did not know ({@link BallWatch#search}) */
+    private long ballSearches;
     private long stuckGuarded;
     private Action lastAction;
     private List<SeenObject> lastSeen;
@@ -400,6 +403,11 @@ public final class ImitationBrain implements Brain {
         }
         if (ballWatch != null) {
             actions = ballWatch.watch(actions, seen.world());
+            List<Action> searched = BallWatch.search(actions, seen.world());
+            if (searched != actions) {
+                ballSearches++;
+                actions = searched;
+            }
             lookBehind(actions, seen.world());
         }
         Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age, seen.world());
@@ -600,6 +608,7 @@ public final class ImitationBrain implements Brain {
         counters.put("kicks_kept_instead", keptKicks.kept());
         counters.put("kicks_shot_instead", keptKicks.shots());
         counters.put("kicks_handed_over", keptKicks.handedOver());
+        counters.put("ball_searches", ballSearches);
         if (guards.enabled()) {
             counters.put("guard.kick_out_of_reach", kickGuarded);
             counters.put("guard.stuck", stuckGuarded);

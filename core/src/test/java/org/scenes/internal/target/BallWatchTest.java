@@ -95,6 +95,45 @@ class BallWatchTest {
         assertFalse(watch.beyondView(List.of(Action.turn(180)), world(-10, -1, 5), 60), "the body turns to it");
     }
 
+    @Test
+    void aPlayerWithoutABallTurnsItsBodyWithTheHeadStraightToLookForIt() {
+        World lost = new World(-40, -20, -141, 30, 0, 0, 8000, 1, 0, Double.NaN, Double.NaN, 0, 0, -1, List.of(),
+                "play_on", 0, 0);
+        List<Action> chosen = List.of(Action.dash(100), Action.turnNeck(0));
+        List<Action> searched = BallWatch.search(chosen, lost);
+        assertEquals(2, searched.size());
+        assertEquals(ActionType.TURN, searched.get(0).type());
+        assertEquals(BallWatch.SEARCH_TURN, searched.get(0).first(), 1e-9, "at rest a turn's moment is its angle");
+        assertEquals(Action.turnNeck(-30), searched.get(1));
+    }
+
+    @Test
+    void aSearchTurnsFurtherAtSpeedAndLeavesAStraightHeadAlone() {
+        // moving at 0.2 m a cycle: the moment is 60 x (1 + 5 x 0.2)
+        World running = new World(0, 0, 0, 0, 0.2, 0, 8000, 1, 0, Double.NaN, Double.NaN, 0, 0, -1, List.of(),
+                "play_on", 0, 0);
+        assertEquals(List.of(Action.turn(120)), BallWatch.search(List.of(Action.dash(100)), running));
+    }
+
+    @Test
+    void noSearchWithABallKnownNoPositionOrNoBallInPlay() {
+        List<Action> chosen = List.of(Action.dash(100));
+        assertSame(chosen, BallWatch.search(chosen, world(10, 10, 40)), "a ball known, however old");
+        World unlocated = new World(Double.NaN, Double.NaN, 0, 0, 0, 0, 8000, 1, 0, Double.NaN, Double.NaN, 0, 0, -1,
+                List.of(), "play_on", 0, 0);
+        assertSame(chosen, BallWatch.search(chosen, unlocated));
+        for (String mode : List.of("before_kick_off", "goal_l", "goal_r", "time_over")) {
+            World placing = new World(0, 0, 0, 0, 0, 0, 8000, 1, 0, Double.NaN, Double.NaN, 0, 0, -1, List.of(),
+                    mode, 0, 0);
+            assertSame(chosen, BallWatch.search(chosen, placing), mode);
+        }
+        World freeKick = new World(0, 0, 0, 0, 0, 0, 8000, 1, 0, Double.NaN, Double.NaN, 0, 0, -1, List.of(),
+                "free_kick_r", 0, 0);
+        List<Action> move = List.of(Action.move(-10, 0));
+        assertSame(move, BallWatch.search(move, freeKick), "a placement stands");
+        assertEquals(ActionType.TURN, BallWatch.search(chosen, freeKick).get(0).type());
+    }
+
     private static List<Action> roundedNeck(List<Action> actions) {
         return List.of(actions.get(0), Action.turnNeck(Math.round(actions.get(1).first())));
     }
