@@ -32,6 +32,7 @@ import org.scenes.internal.protocol.ServerNotice;
 import org.scenes.internal.protocol.ViewWidth;
 import org.scenes.internal.target.BallWatch;
 import org.scenes.internal.target.Destinations;
+import org.scenes.internal.target.KickFollower;
 import org.scenes.internal.target.Replay;
 import org.scenes.internal.target.Steering;
 import org.scenes.internal.target.Targets;
@@ -79,7 +80,8 @@ import org.scenes.simulator.BrainFactory;
  *
  * <p>Under target replay a kick in play on that would lose the ball (to an opponent the player
  * knows of, or over the line), or near the opponent goal one that would not score, gives way to a
- * further neighbour's kick that scores or keeps it ({@link KeptKicks}).
+ * further neighbour's kick that scores or keeps it ({@link KeptKicks}); after its kick an outfield
+ * player runs after the ball while it can contest it ({@link KickFollower}).
  *
  * <p>A knowledge base of a player that acted every cycle (scenes of several see ages, e.g. a
  * librcsc team on synchronous vision) is played per cycle in synchronous mode: at each
@@ -113,6 +115,10 @@ public final class ImitationBrain implements Brain {
     private final Steering steering = new Steering();
     /** the player's kicks in play on: one that would lose the ball gives way to one that keeps it or scores */
     private final KeptKicks keptKicks = new KeptKicks();
+    /** the player's own kicks in play on: it goes after the ball while it can contest it */
+    private final KickFollower kickFollower = new KickFollower();
+    /** whether the counterpart was the goalie (it does not leave its area after its kicks) */
+    private boolean goalie;
     /** how the counterpart took its team's set plays */
     private SetPlayKicks setPlayKicks = SetPlayKicks.NONE;
     /** cycles this player leaves its team's kick-offs to the teammate that takes them (ImitationTeam#kickOffWait) */
@@ -312,6 +318,7 @@ public final class ImitationBrain implements Brain {
         ImitationTeam.Counterpart counterpart = roles.counterpart(unum);
         counterpartMoves = counterpart == null ? List.of() : counterpart.moves();
         counterpartMovedInPlay = counterpart != null && counterpart.movedInPlay();
+        goalie = counterpart != null && counterpart.goalie();
         placesOnce = counterpart != null && counterpart.placesOnce();
         setPlayKicks = roles.setPlayKicks(unum);
         kickOffWait = roles.kickOffWait(unum);
@@ -400,6 +407,10 @@ public final class ImitationBrain implements Brain {
                 : Validator.prediction(action, nearest, seen, replay, destinations, steering);
         if (replay == Replay.TARGET) {
             actions = keptKicks.choose(actions, seen, query, recognizer);
+            if (!goalie) {
+                actions = kickFollower.follow(actions, seen.world(), seen.cycle(),
+                        Validator.staminaSafe(ServerDefaults.MAX_POWER, seen.world()));
+            }
         }
         if (ballWatch != null) {
             actions = ballWatch.watch(actions, seen.world());
@@ -412,6 +423,7 @@ public final class ImitationBrain implements Brain {
         }
         Scene made = new Scene(seen.cycle(), seen.observer(), seen.objects(), actions, null, age, seen.world());
         actions.forEach(world::sent);
+        kickFollower.sent(actions, seen.world(), seen.cycle());
         history.addLast(made);
         decided.accept(made);
         if (action == null) {
@@ -609,6 +621,7 @@ public final class ImitationBrain implements Brain {
         counters.put("kicks_shot_instead", keptKicks.shots());
         counters.put("kicks_handed_over", keptKicks.handedOver());
         counters.put("ball_searches", ballSearches);
+        counters.put("kicks_followed", kickFollower.follows());
         if (guards.enabled()) {
             counters.put("guard.kick_out_of_reach", kickGuarded);
             counters.put("guard.stuck", stuckGuarded);

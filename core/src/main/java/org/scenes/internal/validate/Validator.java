@@ -184,7 +184,7 @@ public final class Validator {
      * 8000): target replay runs every cycle where its teacher paced itself, and its players ended
      * games exhausted. NaN stays NaN unless the stamina asks for less.
      */
-    static double staminaSafe(double power, World world) {
+    public static double staminaSafe(double power, World world) {
         if (world == null || Double.isNaN(world.stamina())) {
             return power;
         }
