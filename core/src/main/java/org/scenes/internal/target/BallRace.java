@@ -27,6 +27,14 @@ record BallRace(int cycles, Standing standing) {
 
     /** The race of the player of {@code world}; null when its world model knows no position or no ball. */
     static BallRace of(World world) {
+        return of(world, 1);
+    }
+
+    /**
+     * The same, where an opponent beats the player only when it needs {@code opponentLead} cycles
+     * fewer or more (1: any opponent faster; a teammate faster always beats it).
+     */
+    static BallRace of(World world, int opponentLead) {
         if (world == null || !world.located() || !world.ballKnown()) {
             return null;
         }
@@ -37,8 +45,9 @@ record BallRace(int cycles, Standing standing) {
             if (!teammate && (player.relation() != Relation.OPPONENT || standing == Standing.OPPONENT_FIRST)) {
                 continue;
             }
-            // only a player faster than this one matters: its search stops at the player's own cycles
-            if (Targets.reachCycles(player.x(), player.y(), world, own) < own) {
+            // only a player enough faster than this one matters: its search stops there
+            int faster = teammate ? own : own - opponentLead + 1;
+            if (faster > 0 && Targets.reachCycles(player.x(), player.y(), world, faster) < faster) {
                 if (teammate) {
                     return new BallRace(own, Standing.TEAMMATE_FIRST);
                 }

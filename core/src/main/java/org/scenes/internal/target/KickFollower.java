@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.List;
 import org.scenes.api.Action;
 import org.scenes.api.ActionType;
-import org.scenes.api.Relation;
 import org.scenes.api.World;
 import org.scenes.internal.world.ServerDefaults;
 
@@ -55,18 +54,8 @@ public final class KickFollower {
      * opponent it knows of {@link #OPPONENT_LEAD} cycles or more sooner (a near race is contested).
      */
     static boolean contests(World own) {
-        int cycles = Targets.reachCycles(own.x(), own.y(), own, FOLLOW + 1);
-        if (cycles > FOLLOW) {
-            return false;
-        }
-        for (World.Player player : own.players()) {
-            int faster = player.relation() == Relation.TEAMMATE ? cycles
-                    : player.relation() == Relation.OPPONENT ? cycles - OPPONENT_LEAD + 1 : 0;
-            if (faster > 0 && Targets.reachCycles(player.x(), player.y(), own, faster) < faster) {
-                return false;
-            }
-        }
-        return true;
+        BallRace race = BallRace.of(own, OPPONENT_LEAD);
+        return race != null && race.standing() == BallRace.Standing.FIRST && race.cycles() <= FOLLOW;
     }
 
     /** Notes the actions sent in {@code cycle}: a kick in play on starts a follow. */
