@@ -67,11 +67,23 @@ class SceneSchemaTest {
 
     @Test
     void theSchemaRejectsAFutureFormatAndAMissingCell() throws IOException {
-        JsonNode future = mapper.readTree("{\"format\":3,\"grid\":{\"columns\":5,\"bounds\":[1,5]},\"scenes\":[]}");
+        JsonNode future = mapper.readTree("{\"format\":4,\"grid\":{\"columns\":5,\"bounds\":[1,5]},\"scenes\":[]}");
         assertFalse(schema().validate(future).isEmpty());
         ObjectNode noCell = (ObjectNode) mapper.readTree("{\"format\":1,\"grid\":{\"columns\":5,\"bounds\":[1,5]},"
                 + "\"scenes\":[{\"cycle\":1,\"objects\":[{\"kind\":\"ball\",\"name\":\"b\"}],\"actions\":[]}]}");
         assertFalse(schema().validate(noCell).isEmpty());
+    }
+
+    @Test
+    void theSchemaChecksFormatThreeObjectArrays() throws IOException {
+        String file = "{\"format\":3,\"grid\":{\"columns\":5,\"bounds\":[1,5]},\"scenes\":[{\"cycle\":1,\"objects\":[%s],"
+                + "\"actions\":[]}]}";
+        assertEquals(Set.of(), schema().validate(mapper.readTree(String.format(file,
+                "[\"g l\",20,1,{\"relation\":\"own\"}],[\"f r t\",null,-31],[\"p\",3,4,0,0,10,20,30,{\"team\":\"A\"}]"))));
+        for (String wrong : List.of("[\"x\",1,2]", "[\"b\",-1,2]", "[\"b\",1,2,{\"unum\":1},{\"unum\":2}]",
+                "[\"p\",1,2,{\"side\":\"l\"}]", "[\"b\",1,2,3,4,5,6,7,8]")) {
+            assertFalse(schema().validate(mapper.readTree(String.format(file, wrong))).isEmpty(), wrong);
+        }
     }
 
     private JsonSchema schema() throws IOException {

@@ -11,7 +11,6 @@ import java.util.function.Consumer;
 import java.util.function.LongConsumer;
 import org.scenes.api.Action;
 import org.scenes.api.Grid;
-import org.scenes.api.ObjectKind;
 import org.scenes.api.Observer;
 import org.scenes.api.Relation;
 import org.scenes.api.Scene;
@@ -29,6 +28,7 @@ import org.scenes.internal.protocol.SenseBody;
 import org.scenes.internal.protocol.ServerNotice;
 import org.scenes.internal.protocol.Unknown;
 import org.scenes.internal.protocol.VisualObject;
+import org.scenes.internal.scene.Relations;
 import org.scenes.internal.world.WorldModel;
 
 /**
@@ -262,27 +262,9 @@ public final class SceneConverter {
         return seen;
     }
 
-    /**
-     * Goals are own or opponent by the observer's side ({@code g r} is own for the right side);
-     * players are teammates when their team is the observer's, opponents when another team is
-     * readable, unknown otherwise; objects sensed behind (upper case) carry no identity.
-     */
+    /** The relation of a parsed object to its observer ({@link Relations#of}). */
     public static Relation relation(VisualObject object, Observer observer) {
-        ObjectKind kind = object.kind();
-        if (kind == ObjectKind.GOAL) {
-            String name = object.name();
-            if (object.behind() || name.length() < 3 || observer.side() == null) {
-                return Relation.UNKNOWN;
-            }
-            return name.charAt(2) == observer.side().letter() ? Relation.OWN : Relation.OPPONENT;
-        }
-        if (kind == ObjectKind.PLAYER) {
-            if (object.team().isEmpty() || observer.team().isEmpty()) {
-                return Relation.UNKNOWN;
-            }
-            return object.team().equals(observer.team()) ? Relation.TEAMMATE : Relation.OPPONENT;
-        }
-        return Relation.NONE;
+        return Relations.of(object.kind(), object.name(), object.team(), observer);
     }
 
     /** The state of converting one log. */

@@ -22,29 +22,20 @@ import org.scenes.api.World;
 import org.scenes.internal.files.AtomicOutput;
 
 /**
- * Streams scenes into a scene file (see {@code docs/scene-format.md}), one scene per line.
+ * Streams scenes into a scene file of the current format (see {@code docs/scene-format.md}), one
+ * scene per line.
  * Nothing appears at the target path until {@link #commit()}; closing without commit
  * discards what was written.
  */
 public final class SceneFileWriter implements AutoCloseable {
     static final JsonFactory JSON = new JsonFactory();
     /** The fields and kinds of every object, encoded once (writing scenes is much of a conversion's time). */
-    private static final SerializableString KIND = new SerializedString("kind");
-    private static final SerializableString NAME = new SerializedString("name");
-    private static final SerializableString CELL = new SerializedString("cell");
     private static final SerializableString TEAM = new SerializedString("team");
     private static final SerializableString UNUM = new SerializedString("unum");
     private static final SerializableString RELATION = new SerializedString("relation");
     private static final SerializableString AGE = new SerializedString("age");
     private static final SerializableString TYPE = new SerializedString("type");
     private static final SerializableString CYCLE = new SerializedString("cycle");
-    private static final SerializableString DIST = new SerializedString("dist");
-    private static final SerializableString DIR = new SerializedString("dir");
-    private static final SerializableString DIST_CHANGE = new SerializedString("distChange");
-    private static final SerializableString DIR_CHANGE = new SerializedString("dirChange");
-    private static final SerializableString BODY_FACING = new SerializedString("bodyFacing");
-    private static final SerializableString HEAD_FACING = new SerializedString("headFacing");
-    private static final SerializableString POINT_DIR = new SerializedString("pointDir");
     private static final SerializableString X = new SerializedString("x");
     private static final SerializableString Y = new SerializedString("y");
     private static final SerializableString VX = new SerializedString("vx");
@@ -53,7 +44,6 @@ public final class SceneFileWriter implements AutoCloseable {
     private static final SerializableString NECK = new SerializedString("neck");
     private static final SerializableString STAMINA = new SerializedString("stamina");
     private static final SerializableString EFFORT = new SerializedString("effort");
-    private static final SerializableString[] KINDS = new SerializableString[ObjectKind.values().length];
     private static final SerializableString[] RELATIONS = new SerializableString[Relation.values().length];
     private static final SerializableString[] ACTION_TYPES = new SerializableString[ActionType.values().length];
     /** Each action type's parameter names, by type and parameter. */
@@ -62,9 +52,6 @@ public final class SceneFileWriter implements AutoCloseable {
     private static final int NAMES_KEPT = 512;
 
     static {
-        for (ObjectKind kind : ObjectKind.values()) {
-            KINDS[kind.ordinal()] = new SerializedString(kind.key());
-        }
         for (Relation relation : Relation.values()) {
             RELATIONS[relation.ordinal()] = new SerializedString(relation.key());
         }
@@ -85,6 +72,8 @@ public final class SceneFileWriter implements AutoCloseable {
     /** Team names kept encoded, as object names (a game has two). */
     private final Map<String, SerializableString> teams = new HashMap<>();
     private final char[] number = new char[24];
+    /** One object's numbers at a time. */
+    private final double[] numbers = new double[CompactObject.NUMBERS.length];
 
     private SceneFileWriter(Path target, SceneFileHeader header) throws IOException {
         this.output = AtomicOutput.create(target);
@@ -160,7 +149,7 @@ public final class SceneFileWriter implements AutoCloseable {
         }
         json.writeArrayFieldStart("objects");
         for (SeenObject object : scene.objects()) {
-            writeObject(object);
+            writeObject(object, scene.observer());
         }
         json.writeEndArray();
         json.writeArrayFieldStart("actions");
@@ -176,12 +165,41 @@ public final class SceneFileWriter implements AutoCloseable {
         written++;
     }
 
-    private void writeObject(SeenObject object) throws IOException {
-        json.writeStartObject();
-        json.writeFieldName(KIND);
-        json.writeString(KINDS[object.kind().ordinal()]);
-        json.writeFieldName(NAME);
+    /**
+     * Format 3's array {@code [name, numbers..., {identity}]} ({@link CompactObject}): unknown numbers
+     * inside as null, at the end left out; the identity object only when there is one, its relation
+     * only when the observer and the object's name and team do not imply it ({@link Relations#of}).
+     */
+    private void writeObject(SeenObject object, Observer observer) throws IOException {
+        ObjectKind named = CompactObject.kindOf(object.name());
+        if (named != object.kind()) {
+            throw new IllegalArgumentException("cannot write object '" + object.name() + "' of kind "
+                    + object.kind().key() + ": scene files tell an object's kind by its name's first letter");
+        }
+        if (!object.cell().equals(header.grid().cell(object.distance(), object.direction()))) {
+            throw new IllegalArgumentException("cannot write object '" + object.name() + "' in cell "
+                    + object.cell() + ": scene files hold the cell of its distance and direction in the file's grid");
+        }
+        json.writeStartArray();
         writeKept(names, object.name());
+        CompactObject.numbers(object, numbers);
+        int last = numbers.length - 1;
+        while (last >= 0 && Double.isNaN(numbers[last])) {
+            last--;
+        }
+        for (int i = 0; i <= last; i++) {
+            writeNumberOrNull(CompactObject.NUMBERS[i], numbers[i]);
+        }
+        boolean relation = object.relation() != Relations.of(object.kind(), object.name(), object.team(), observer);
+        if (relation || !object.team().isEmpty() || object.uniformNumber() > 0 || object.goalie()
+                || object.mark() != SeenObject.NO_MARK) {
+            writeIdentity(object, relation);
+        }
+        json.writeEndArray();
+    }
+
+    private void writeIdentity(SeenObject object, boolean relation) throws IOException {
+        json.writeStartObject();
         if (!object.team().isEmpty()) {
             json.writeFieldName(TEAM);
             writeKept(teams, object.team());
@@ -193,25 +211,13 @@ public final class SceneFileWriter implements AutoCloseable {
         if (object.goalie()) {
             json.writeBooleanField("goalie", true);
         }
-        if (object.relation() != Relation.NONE) {
+        if (relation) {
             json.writeFieldName(RELATION);
             json.writeString(RELATIONS[object.relation().ordinal()]);
         }
-        writeOptional(DIST, object.distance());
-        writeOptional(DIR, object.direction());
-        writeOptional(DIST_CHANGE, object.distanceChange());
-        writeOptional(DIR_CHANGE, object.directionChange());
-        writeOptional(BODY_FACING, object.bodyFacing());
-        writeOptional(HEAD_FACING, object.headFacing());
-        writeOptional(POINT_DIR, object.pointingDirection());
         if (object.mark() != SeenObject.NO_MARK) {
             json.writeStringField("mark", String.valueOf(object.mark()));
         }
-        json.writeFieldName(CELL);
-        json.writeStartArray();
-        json.writeNumber(object.cell().column());
-        json.writeNumber(object.cell().row());
-        json.writeEndArray();
         json.writeEndObject();
     }
 
@@ -256,18 +262,17 @@ public final class SceneFileWriter implements AutoCloseable {
         }
         json.writeArrayFieldStart("players");
         for (World.Player player : world.players()) {
-            json.writeStartObject();
-            json.writeFieldName(RELATION);
+            json.writeStartArray();
             json.writeString(RELATIONS[player.relation().ordinal()]);
             if (player.unum() > 0) {
-                json.writeFieldName(UNUM);
                 json.writeNumber(player.unum());
+            } else {
+                json.writeNull();
             }
-            writeOptional(X, player.x());
-            writeOptional(Y, player.y());
-            json.writeFieldName(AGE);
+            writeNumberOrNull("x", player.x());
+            writeNumberOrNull("y", player.y());
             json.writeNumber(player.age());
-            json.writeEndObject();
+            json.writeEndArray();
         }
         json.writeEndArray();
         if (!world.playMode().isEmpty()) {
@@ -294,17 +299,31 @@ public final class SceneFileWriter implements AutoCloseable {
         json.writeEndObject();
     }
 
+    /** A named field for a known value, nothing for NaN. */
     private void writeOptional(SerializableString field, double value) throws IOException {
         if (Double.isNaN(value)) {
             return;
         }
+        json.writeFieldName(field);
+        writeNumber(field.getValue(), value);
+    }
+
+    /** A value in an array: null for NaN. */
+    private void writeNumberOrNull(String what, double value) throws IOException {
+        if (Double.isNaN(value)) {
+            json.writeNull();
+        } else {
+            writeNumber(what, value);
+        }
+    }
+
+    /** A finite value, {@code what} naming it should it not be. */
+    private void writeNumber(String what, double value) throws IOException {
         if (Double.isInfinite(value)) {
             // JSON has no infinity: written as a string, the file would be one its reader refuses
-            throw new IllegalArgumentException("cannot write '" + field.getValue() + "' = " + value
-                    + ": scene values are finite");
+            throw new IllegalArgumentException("cannot write '" + what + "' = " + value + ": scene values are finite");
         }
         // whole numbers without ".0"; -0 keeps its sign, which the server's "-0" carries, as "-0.0"
-        json.writeFieldName(field);
         if (value == Math.rint(value) && Math.abs(value) < 1e15
                 && Double.doubleToRawLongBits(value) != Double.doubleToRawLongBits(-0.0)) {
             json.writeNumber((long) value);

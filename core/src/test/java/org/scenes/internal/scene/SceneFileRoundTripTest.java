@@ -91,13 +91,13 @@ class SceneFileRoundTripTest {
         Path file = dir.resolve("world.json");
         SceneFileWriter.write(file, new SceneFile(header, List.of(with, lost, without)));
         String text = Files.readString(file);
-        assertTrue(text.startsWith("{\"format\":2"), text);
+        assertTrue(text.startsWith("{\"format\":3"), text);
         assertEquals(2, text.split("\"world\"", -1).length - 1, text);
 
         SceneFile read = SceneFileReader.read(file);
 
         assertEquals(List.of(with, lost, without), read.scenes());
-        assertEquals(2, read.header().format());
+        assertEquals(3, read.header().format());
     }
 
     @Test
@@ -113,13 +113,13 @@ class SceneFileRoundTripTest {
     }
 
     @Test
-    void formatThreeIsRefusedNamingIt() throws IOException {
+    void formatFourIsRefusedNamingIt() throws IOException {
         Path file = dir.resolve("future.json");
-        Files.writeString(file, "{\"format\":3,\"grid\":{\"columns\":5,\"bounds\":[1,5]},\"scenes\":[]}\n");
+        Files.writeString(file, "{\"format\":4,\"grid\":{\"columns\":5,\"bounds\":[1,5]},\"scenes\":[]}\n");
 
         SceneFileException error = assertThrows(SceneFileException.class, () -> SceneFileReader.read(file));
 
-        assertTrue(error.getMessage().contains("scene format 3 is newer than this version of scenes reads (up to 2)"),
+        assertTrue(error.getMessage().contains("scene format 4 is newer than this version of scenes reads (up to 3)"),
                 error.getMessage());
     }
 
@@ -137,7 +137,7 @@ class SceneFileRoundTripTest {
         List<SeenObject> objects = new java.util.ArrayList<>();
         for (double value : values) {
             objects.add(new SeenObject(ObjectKind.BALL, "b", "", 0, false, Relation.NONE, distance(value), 1, value,
-                    Double.NaN, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(3, 1)));
+                    Double.NaN, Double.NaN, Double.NaN, Double.NaN, SeenObject.NO_MARK, grid.cell(distance(value), 1)));
         }
         List<Scene> scenes = new java.util.ArrayList<>();
         for (int from = 0; from < objects.size(); from += 200) { // a scene holds at most 256 objects
@@ -148,7 +148,7 @@ class SceneFileRoundTripTest {
         SceneFileWriter.write(file, new SceneFile(header, scenes));
         String text = Files.readString(file);
         for (double value : values) {
-            assertTrue(text.contains("\"dist\":" + written(distance(value)) + ",\"dir\":1,\"distChange\":" + written(value) + ","),
+            assertTrue(text.contains("[\"b\"," + written(distance(value)) + ",1," + written(value) + "]"),
                     value + " written as " + written(value));
         }
         assertEquals(scenes, SceneFileReader.read(file).scenes());
