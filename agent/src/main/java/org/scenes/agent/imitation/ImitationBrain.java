@@ -32,6 +32,7 @@ import org.scenes.internal.protocol.ServerNotice;
 import org.scenes.internal.protocol.ViewWidth;
 import org.scenes.internal.target.BallWatch;
 import org.scenes.internal.target.Destinations;
+import org.scenes.internal.target.Formation;
 import org.scenes.internal.target.KickFollower;
 import org.scenes.internal.target.Replay;
 import org.scenes.internal.target.Steering;
@@ -81,7 +82,9 @@ import org.scenes.simulator.BrainFactory;
  * <p>Under target replay a kick in play on that would lose the ball (to an opponent the player
  * knows of, or over the line), or near the opponent goal one that would not score, gives way to a
  * further neighbour's kick that scores or keeps it ({@link KeptKicks}); after its kick an outfield
- * player runs after the ball while it can contest it ({@link KickFollower}).
+ * player runs after the ball while it can contest it ({@link KickFollower}); and an outfield player
+ * that does not go for the ball and stands far from where its counterpart stood for that place of
+ * the ball runs there ({@link Formation}).
  *
  * <p>A knowledge base of a player that acted every cycle (scenes of several see ages, e.g. a
  * librcsc team on synchronous vision) is played per cycle in synchronous mode: at each
@@ -117,6 +120,8 @@ public final class ImitationBrain implements Brain {
     private final KeptKicks keptKicks = new KeptKicks();
     /** the player's own kicks in play on: it goes after the ball while it can contest it */
     private final KickFollower kickFollower = new KickFollower();
+    /** where the counterpart stood for each place of the ball; taken once per role, null unless replaying targets */
+    private Formation formation;
     /** whether the counterpart was the goalie (it does not leave its area after its kicks) */
     private boolean goalie;
     /** how the counterpart took its team's set plays */
@@ -314,6 +319,7 @@ public final class ImitationBrain implements Brain {
         recognizer = roles.recognizer(unum);
         destinations = destinationsOf(recognizer);
         ballWatch = ballWatchOf(recognizer);
+        formation = replay == Replay.TARGET ? Formation.of(recognizer.knowledge()) : null;
         perCycle = recognizer.splitsBySeeAge();
         ImitationTeam.Counterpart counterpart = roles.counterpart(unum);
         counterpartMoves = counterpart == null ? List.of() : counterpart.moves();
@@ -408,8 +414,11 @@ public final class ImitationBrain implements Brain {
         if (replay == Replay.TARGET) {
             actions = keptKicks.choose(actions, seen, query, recognizer);
             if (!goalie) {
-                actions = kickFollower.follow(actions, seen.world(), seen.cycle(),
-                        Validator.staminaSafe(ServerDefaults.MAX_POWER, seen.world()));
+                double power = Validator.staminaSafe(ServerDefaults.MAX_POWER, seen.world());
+                actions = kickFollower.follow(actions, seen.world(), seen.cycle(), power);
+                if (formation != null) {
+                    actions = formation.keep(actions, seen.world(), power);
+                }
             }
         }
         if (ballWatch != null) {
@@ -622,6 +631,7 @@ public final class ImitationBrain implements Brain {
         counters.put("kicks_handed_over", keptKicks.handedOver());
         counters.put("ball_searches", ballSearches);
         counters.put("kicks_followed", kickFollower.follows());
+        counters.put("formation_runs", formation == null ? 0 : formation.runs());
         if (guards.enabled()) {
             counters.put("guard.kick_out_of_reach", kickGuarded);
             counters.put("guard.stuck", stuckGuarded);

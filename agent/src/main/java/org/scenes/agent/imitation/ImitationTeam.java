@@ -22,6 +22,7 @@ import org.scenes.internal.scene.SceneFileReader;
 import org.scenes.internal.scene.SceneSource;
 import org.scenes.internal.target.BallWatch;
 import org.scenes.internal.target.Destinations;
+import org.scenes.internal.target.Formation;
 import org.scenes.internal.target.Replay;
 import org.scenes.simulator.Brain;
 import org.scenes.simulator.BrainFactory;
@@ -203,13 +204,14 @@ public final class ImitationTeam {
     private static void prepare(KnowledgeBase knowledge) {
         Destinations.of(knowledge);
         BallWatch.of(knowledge);
+        Formation.of(knowledge);
     }
 
     /** The same, each brain carrying out its chosen actions as {@code replay} says. */
     public BrainFactory brains(Supplier<ActionSelector> selectors, Supplier<List<SceneTransform>> transforms,
                                ImitationBrain.Guards guards, Replay replay) {
         if (replay == Replay.TARGET) {
-            // every role's destinations and ball watch now: made when a player's init arrived, they
+            // every role's destinations, ball watch and formation now: made when a player's init arrived, they
             // held up a real-time team's init answers, and its first cycles' commands left late
             prepare(team.knowledge());
             counterparts.values().stream().filter(counterpart -> counterpart.recognizer() != null)
