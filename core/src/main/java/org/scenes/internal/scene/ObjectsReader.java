@@ -21,6 +21,7 @@ final class ObjectsReader {
     private final Grid grid;
     private final boolean compact;
     private final double[] numbers = new double[CompactObject.NUMBERS.length];
+    private final Identity identity = new Identity();
 
     ObjectsReader(SceneJson in, Grid grid, int format) {
         this.in = in;
@@ -53,12 +54,17 @@ final class ObjectsReader {
                     + name + "'");
         }
         Arrays.fill(numbers, Double.NaN);
-        Identity identity = Identity.NONE;
+        identity.clear();
         int index = 0;
         JsonToken token;
         while ((token = in.next()) != JsonToken.END_ARRAY) {
             if (token == JsonToken.START_OBJECT) {
-                identity = readIdentity();
+                while (in.next() == JsonToken.FIELD_NAME) {
+                    String field = in.fieldName();
+                    if (!identityField(field, in.next())) {
+                        in.skipChildren();
+                    }
+                }
                 in.expect(in.next(), JsonToken.END_ARRAY, "the end of the object array after its identity");
                 break;
             }
@@ -80,32 +86,38 @@ final class ObjectsReader {
     }
 
     /**
-     * The fields an object has beside its numbers (format 3 keeps them in one trailing object); a
-     * null relation is the one {@link Relations#of} derives.
+     * The fields an object has beside its name, numbers, kind and cell (format 3 keeps them in one
+     * trailing object), one object at a time; a null relation is the one {@link Relations#of} derives.
      */
-    private record Identity(String team, int unum, boolean goalie, Relation relation, char mark) {
-        static final Identity NONE = new Identity("", 0, false, null, SeenObject.NO_MARK);
+    private static final class Identity {
+        String team;
+        int unum;
+        boolean goalie;
+        Relation relation;
+        char mark;
+
+        void clear() {
+            team = "";
+            unum = 0;
+            goalie = false;
+            relation = null;
+            mark = SeenObject.NO_MARK;
+        }
     }
 
-    private Identity readIdentity() throws IOException {
-        String team = "";
-        int unum = 0;
-        boolean goalie = false;
-        Relation relation = null;
-        char mark = SeenObject.NO_MARK;
-        while (in.next() == JsonToken.FIELD_NAME) {
-            String field = in.fieldName();
-            JsonToken value = in.next();
-            switch (field) {
-                case "team" -> team = in.text(value);
-                case "unum" -> unum = in.intValue(value);
-                case "goalie" -> goalie = in.bool(value);
-                case "relation" -> relation = in.parseEnum(value, Relation::fromKey);
-                case "mark" -> mark = mark(value);
-                default -> in.skipChildren();
+    /** Reads {@code field} into {@link #identity} when it is one of its fields; false when it is not. */
+    private boolean identityField(String field, JsonToken value) throws IOException {
+        switch (field) {
+            case "team" -> identity.team = in.text(value);
+            case "unum" -> identity.unum = in.intValue(value);
+            case "goalie" -> identity.goalie = in.bool(value);
+            case "relation" -> identity.relation = in.parseEnum(value, Relation::fromKey);
+            case "mark" -> identity.mark = mark(value);
+            default -> {
+                return false;
             }
         }
-        return new Identity(team, unum, goalie, relation, mark);
+        return true;
     }
 
     private char mark(JsonToken value) throws IOException {
@@ -121,12 +133,8 @@ final class ObjectsReader {
         in.expect(start, JsonToken.START_OBJECT, "an object");
         ObjectKind kind = null;
         String name = null;
-        String team = "";
-        int unum = 0;
-        boolean goalie = false;
-        Relation relation = Relation.NONE;
         Arrays.fill(numbers, Double.NaN);
-        char mark = SeenObject.NO_MARK;
+        identity.clear();
         Cell cell = null;
         while (in.next() == JsonToken.FIELD_NAME) {
             String field = in.fieldName();
@@ -137,14 +145,12 @@ final class ObjectsReader {
                         CompactObject.HIGHEST[number]);
                 continue;
             }
+            if (identityField(field, value)) {
+                continue;
+            }
             switch (field) {
                 case "kind" -> kind = in.parseEnum(value, ObjectKind::fromKey);
                 case "name" -> name = in.text(value);
-                case "team" -> team = in.text(value);
-                case "unum" -> unum = in.intValue(value);
-                case "goalie" -> goalie = in.bool(value);
-                case "relation" -> relation = in.parseEnum(value, Relation::fromKey);
-                case "mark" -> mark = mark(value);
                 case "cell" -> cell = readCell(value);
                 default -> in.skipChildren();
             }
@@ -152,8 +158,10 @@ final class ObjectsReader {
         if (kind == null || name == null || name.isEmpty() || cell == null) {
             throw in.error("an object needs 'kind', 'name' and 'cell'");
         }
-        return new SeenObject(kind, name, team, unum, goalie, relation, numbers[0], numbers[1], numbers[2],
-                numbers[3], numbers[4], numbers[5], numbers[6], mark, cell);
+        // these formats write every relation but none
+        Relation relation = identity.relation == null ? Relation.NONE : identity.relation;
+        return new SeenObject(kind, name, identity.team, identity.unum, identity.goalie, relation, numbers[0],
+                numbers[1], numbers[2], numbers[3], numbers[4], numbers[5], numbers[6], identity.mark, cell);
     }
 
     private static int numberIndex(String field) {

@@ -33,8 +33,6 @@ import org.scenes.internal.files.JsonErrors;
  * Any problem is a {@link SceneFileException} naming file, line and column.
  */
 public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
-    private final Path file;
-    private final JsonParser json;
     private final SceneJson in;
     private final SceneFileHeader header;
     private final ObjectsReader objectsReader;
@@ -43,9 +41,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
     private boolean finished;
 
     private SceneFileReader(Path file, InputStream stream) throws IOException {
-        this.file = file;
-        this.json = SceneFileWriter.JSON.createParser(stream);
-        this.in = new SceneJson(file, json);
+        this.in = new SceneJson(file, SceneFileWriter.JSON.createParser(stream));
         this.header = readHeader();
         this.objectsReader = new ObjectsReader(in, header.grid(), header.format());
         this.worldReader = new WorldReader(in, header.format());
@@ -88,7 +84,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
             try {
                 next = readScene();
             } catch (IOException | RuntimeException e) {
-                throw asSceneFileException(file, json, e);
+                throw asSceneFileException(in.file, in.json, e);
             }
         }
         return next != null;
@@ -107,7 +103,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
     @Override
     public void close() {
         try {
-            json.close();
+            in.json.close();
         } catch (IOException e) {
             // nothing was written; a failing close of an input cannot lose data
         }
@@ -119,7 +115,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
             throw in.error("expected the field 'format' first (is this a scene file?)");
         }
         in.expect(in.next(), JsonToken.VALUE_NUMBER_INT, "an integer format version");
-        int format = json.getIntValue();
+        int format = in.json.getIntValue();
         if (format > SceneFileHeader.CURRENT_FORMAT) {
             throw in.error("scene format " + format + " is newer than this version of scenes reads (up to "
                     + SceneFileHeader.CURRENT_FORMAT + "); upgrade scenes to read it");
@@ -167,7 +163,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
                     in.expect(value, JsonToken.START_ARRAY, "an array of distance bounds");
                     List<Double> list = new ArrayList<>();
                     while (in.next() != JsonToken.END_ARRAY) {
-                        list.add(in.number(json.currentToken()));
+                        list.add(in.number(in.json.currentToken()));
                     }
                     bounds = list.stream().mapToDouble(Double::doubleValue).toArray();
                 }
@@ -231,7 +227,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
             return null;
         }
         in.expect(token, JsonToken.START_OBJECT, "a scene object or the end of 'scenes'");
-        JsonLocation start = json.currentTokenLocation();
+        JsonLocation start = in.json.currentTokenLocation();
         int cycle = Integer.MIN_VALUE;
         int seeAge = 0;
         Observer observer = header.source().observer();
@@ -262,13 +258,12 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
             }
         }
         if (cycle == Integer.MIN_VALUE || objects == null || actions == null) {
-            throw new SceneFileException(file, start.getLineNr(), start.getColumnNr(),
-                    "a scene needs 'cycle', 'objects' and 'actions'", null);
+            throw in.errorAt(start, "a scene needs 'cycle', 'objects' and 'actions'");
         }
         try {
             return new Scene(cycle, observer, objects, actions, null, seeAge, world);
         } catch (IllegalArgumentException e) {
-            throw new SceneFileException(file, start.getLineNr(), start.getColumnNr(), e.getMessage(), e);
+            throw new SceneFileException(in.file, start.getLineNr(), start.getColumnNr(), e.getMessage(), e);
         }
     }
 
@@ -278,7 +273,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
             in.next();
             in.skipChildren();
         }
-        in.expect(json.currentToken(), JsonToken.END_OBJECT, "the end of the scene file");
+        in.expect(in.json.currentToken(), JsonToken.END_OBJECT, "the end of the scene file");
         if (in.next() != null) {
             throw in.error("unexpected content after the end of the scene file");
         }
@@ -288,7 +283,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
         in.expect(start, JsonToken.START_ARRAY, "an array of actions");
         List<Action> actions = new ArrayList<>(2);
         while (in.next() != JsonToken.END_ARRAY) {
-            in.expect(json.currentToken(), JsonToken.START_OBJECT, "an action object");
+            in.expect(in.json.currentToken(), JsonToken.START_OBJECT, "an action object");
             ActionType type = null;
             double[] parameters = {Double.NaN, Double.NaN};
             List<String> fields = new ArrayList<>();
@@ -303,7 +298,7 @@ public final class SceneFileReader implements Iterator<Scene>, AutoCloseable {
                     in.bool(value);
                 } else if (value.isNumeric()) {
                     fields.add(field);
-                    values.add(in.inRange(field, json.getDoubleValue(), -SceneValues.MAX_PARAMETER, SceneValues.MAX_PARAMETER));
+                    values.add(in.inRange(field, in.json.getDoubleValue(), -SceneValues.MAX_PARAMETER, SceneValues.MAX_PARAMETER));
                 } else {
                     notNumbers.add(field + "' is " + SceneJson.describe(value));
                     in.skipChildren();
