@@ -1,16 +1,13 @@
 package org.scenes.internal.target;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.WeakHashMap;
 import org.scenes.api.Action;
-import org.scenes.api.ActionType;
 import org.scenes.api.Scene;
 import org.scenes.api.World;
 import org.scenes.internal.match.KnowledgeBase;
-import org.scenes.internal.world.ServerDefaults;
 
 /**
  * Where the recorded player stood in play on for each place of the ball, its spot: the mean of its
@@ -18,7 +15,7 @@ import org.scenes.internal.world.ServerDefaults;
  * around it (as HELIOS base places its players by the ball's position). A player far from its spot
  * runs there unless it goes for the ball ({@link #keep}): the matched scenes come from a teacher
  * that is rarely far from its place, so they held no way back, and the imitators of HELIOS base
- * defended 7 to 8 metres higher than their teacher with the ball in their half. One per player
+ * defended 6 to 7 metres higher than their teacher with the ball in their half. One per player
  * (it remembers whether it is on its way); the spots are made once per knowledge base.
  */
 public final class Formation {
@@ -116,20 +113,15 @@ public final class Formation {
      * @param power the dash power to run with
      */
     public List<Action> keep(List<Action> actions, World own, double power) {
-        double[] spot = actions.isEmpty() || actions.get(0).type() == ActionType.KICK || own == null || !own.located()
-                || !own.ballKnown() || !"play_on".equals(own.playMode())
-                || own.ballDistance() <= ServerDefaults.KICKABLE_AREA ? null : spot(own.ballX(), own.ballY());
+        double[] spot = Targets.mayRun(actions, own) ? spot(own.ballX(), own.ballY()) : null;
         running = spot != null
                 && Math.hypot(own.x() - spot[0], own.y() - spot[1]) > (running ? BACK : AWAY)
                 && BallRace.of(own).standing() != BallRace.Standing.FIRST;
         if (!running) {
             return actions;
         }
-        List<Action> kept = new ArrayList<>(actions.size());
-        kept.add(Targets.runTo(spot, own, power));
-        kept.addAll(actions.subList(1, actions.size()));
         runs++;
-        return List.copyOf(kept);
+        return Targets.withBody(Targets.runTo(spot, own, power), actions);
     }
 
     /** Decisions that ran to the spot. */

@@ -1,11 +1,9 @@
 package org.scenes.internal.target;
 
-import java.util.ArrayList;
 import java.util.List;
 import org.scenes.api.Action;
 import org.scenes.api.ActionType;
 import org.scenes.api.World;
-import org.scenes.internal.world.ServerDefaults;
 
 /**
  * A player that kicked the ball in play on goes after it while it can contest it ({@link #contests}).
@@ -33,19 +31,11 @@ public final class KickFollower {
      * @param power the dash power to run with
      */
     public List<Action> follow(List<Action> actions, World own, int cycle, double power) {
-        if (cycle - kickedAt > FOLLOW || cycle <= kickedAt || actions.isEmpty()
-                || actions.get(0).type() == ActionType.KICK || own == null || !"play_on".equals(own.playMode())
-                || !(own.ballDistance() > ServerDefaults.KICKABLE_AREA)) {
+        if (cycle - kickedAt > FOLLOW || cycle <= kickedAt || !Targets.mayRun(actions, own) || !contests(own)) {
             return actions;
         }
-        if (!contests(own)) {
-            return actions;
-        }
-        List<Action> followed = new ArrayList<>(actions.size());
-        followed.add(Targets.runTo(Targets.intercept(own), own, power));
-        followed.addAll(actions.subList(1, actions.size()));
         follows++;
-        return List.copyOf(followed);
+        return Targets.withBody(Targets.runTo(Targets.intercept(own), own, power), actions);
     }
 
     /**

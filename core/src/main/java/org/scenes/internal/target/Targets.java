@@ -265,6 +265,23 @@ public final class Targets {
         return action.type() == ActionType.DASH ? action.first() : MAX_POWER;
     }
 
+    /**
+     * Whether a run may take the place of the body action of {@code actions}: in play on, with no
+     * kick chosen, where {@code own} knows its position and the ball, out of its kicking reach.
+     */
+    static boolean mayRun(List<Action> actions, World own) {
+        return !actions.isEmpty() && actions.get(0).type() != ActionType.KICK && own != null && own.located()
+                && own.ballKnown() && "play_on".equals(own.playMode()) && own.ballDistance() > KICKABLE_AREA;
+    }
+
+    /** {@code actions} (body action first) with {@code body} in place of their body action; the neck's stays. */
+    static List<Action> withBody(Action body, List<Action> actions) {
+        List<Action> replaced = new ArrayList<>(actions.size());
+        replaced.add(body);
+        replaced.addAll(actions.subList(1, actions.size()));
+        return List.copyOf(replaced);
+    }
+
     /** A run to {@code point} at {@code power} ({@link #goTo}); once there, a turn to face it. */
     public static Action runTo(double[] point, World own, double power) {
         return goTo(point, own, power, turnTo(bearing(point[0] - own.x(), point[1] - own.y()), own));
